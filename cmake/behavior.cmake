@@ -1,0 +1,1 @@
+# behavior targets: see CMakeLists.txt

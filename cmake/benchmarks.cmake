@@ -1,0 +1,1 @@
+# benchmarks targets: see CMakeLists.txt

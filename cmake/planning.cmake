@@ -1,0 +1,1 @@
+# planning targets: see CMakeLists.txt

@@ -1,0 +1,1 @@
+# simulation targets: see CMakeLists.txt
