@@ -1,0 +1,60 @@
+// The simulated world: a rectangular room, furniture (circles and axis-aligned rectangles) and the
+// robot's physical parameters, loaded from YAML (config/roomba_world.yaml documents the format).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "roomba_rrt/sim/robot_state.h"
+
+namespace roomba_rrt::sim {
+
+/// A round piece of furniture (a table leg, a bin), centre and radius in metres.
+struct Circle {
+  double x = 0;
+  double y = 0;
+  double radius = 0;
+};
+
+/// An axis-aligned rectangular piece of furniture (a sofa, a cupboard), corners in metres.
+struct Rectangle {
+  double min_x = 0;
+  double min_y = 0;
+  double max_x = 0;
+  double max_y = 0;
+};
+
+/// Everything the simulator needs to know about the room and the robot. Defaults are the lab's
+/// simulation: a 6.4 m × 4.8 m empty room, a 0.17 m Roomba at the centre facing +x, 1.0 m/s and
+/// 2.0 rad/s speed limits, steps of 1/60 s.
+struct World {
+  double width = 6.4;   ///< walls at x = 0 and x = width
+  double height = 4.8;  ///< walls at y = 0 and y = height
+  std::vector<Circle> circles;
+  std::vector<Rectangle> rectangles;
+
+  double robot_radius = 0.17;      ///< m
+  double max_linear_speed = 1.0;   ///< |v| is clamped to this, m/s
+  double max_angular_speed = 2.0;  ///< |w| is clamped to this, rad/s
+  double step = 1.0 / 60.0;        ///< integration step, s
+  Pose2D initial_pose{3.2, 2.4, 0.0};
+
+  double coverage_cell_size = 0.025;  ///< edge of a coverage grid cell, m
+  double command_timeout = 0.5;       ///< node: stop when no command arrived for this long, s
+  double real_time_factor = 1.0;      ///< node: simulated seconds per wall-clock second
+};
+
+/// Throws std::invalid_argument naming the first bad parameter (e.g. "robot.radius must be > 0,
+/// got -1"): non-positive sizes, speeds or step, a room smaller than the robot, furniture with a
+/// non-positive size, an initial pose that is not finite or puts the disc into a wall or furniture.
+void validate(const World& world);
+
+/// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
+/// defaults above. Throws std::invalid_argument naming the file and the bad parameter, for an
+/// unreadable file, a value of the wrong type, an unknown key or a world that fails validate().
+World loadWorld(const std::string& yaml_path);
+
+/// Same as loadWorld, from YAML text (used by tests); `source` names it in error messages.
+World parseWorld(const std::string& yaml_text, const std::string& source = "<string>");
+
+}  // namespace roomba_rrt::sim
