@@ -1,0 +1,30 @@
+// The planning library's entry point: validate, plan, (smooth). Include this one header.
+#pragma once
+
+#include <functional>
+
+#include "roomba_rrt/planning/geometry.h"
+#include "roomba_rrt/planning/matlab_random.h"
+#include "roomba_rrt/planning/plan_result.h"
+#include "roomba_rrt/planning/planner_options.h"
+#include "roomba_rrt/planning/problem.h"
+#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/tree.h"
+#include "roomba_rrt/planning/validate.h"
+
+namespace roomba_rrt::planning {
+
+/// Validates (failure with validate()'s message if invalid, nothing planned), then runs
+/// options.algorithm with a fresh MatlabRandom(options.seed), the index options.nearest and the
+/// collision mode options.collision, and smooths the path when options.smooth is set.
+/// Calls on_progress(tree, iteration) every progress_every iterations (rviz animation).
+PlanResult plan(const Problem& problem, const PlannerOptions& options,
+                const std::function<void(const Tree&, int)>& on_progress = {},
+                int progress_every = 0);
+
+/// The same, drawing from `random` (Monte Carlo: many runs from one stream, as MATLAB does).
+PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRandom& random,
+                const std::function<void(const Tree&, int)>& on_progress = {},
+                int progress_every = 0);
+
+}  // namespace roomba_rrt::planning
