@@ -1,0 +1,67 @@
+#include "roomba_rrt/sim/simulator.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/sim/unicycle.h"
+
+namespace roomba_rrt::sim {
+
+namespace {
+const World& validated(const World& world) {
+  validate(world);
+  return world;
+}
+}  // namespace
+
+Simulator::Simulator(const World& world) : world_(validated(world)), coverage_(world_) { reset(); }
+
+BumperState Simulator::senseContact() {
+  resolvePenetration(world_, pose_.x, pose_.y);
+  bumper_ = senseBumper(world_, pose_);
+  return bumper_;
+}
+
+void Simulator::move(const Velocity& cmd) {
+  last_command_ = clampCommand(cmd, world_.max_linear_speed, world_.max_angular_speed);
+  const Pose2D previous = pose_;
+  pose_ = integrateArc(pose_, last_command_, world_.step);
+  // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
+  if (!resolvePenetration(world_, pose_.x, pose_.y)) {
+    pose_.x = previous.x;
+    pose_.y = previous.y;
+  }
+  if (pose_.x != previous.x || pose_.y != previous.y) {
+    coverage_.markDisc(pose_.x, pose_.y, world_.robot_radius);
+  }
+  ++steps_;
+}
+
+BumperState Simulator::step(const Velocity& cmd) {
+  const BumperState bumper = senseContact();
+  move(cmd);
+  return bumper;
+}
+
+void Simulator::setPose(const Pose2D& pose) {
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
+    throw std::invalid_argument("pose must be finite");
+  }
+  Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  if (!resolvePenetration(world_, placed.x, placed.y)) {
+    throw std::invalid_argument("the robot does not fit at the requested pose");
+  }
+  pose_ = placed;
+  bumper_ = senseBumper(world_, pose_);
+  coverage_.markDisc(pose_.x, pose_.y, world_.robot_radius);
+}
+
+void Simulator::reset() {
+  coverage_.clear();
+  last_command_ = {};
+  steps_ = 0;
+  setPose(world_.initial_pose);
+}
+
+}  // namespace roomba_rrt::sim

@@ -1,0 +1,221 @@
+#include "roomba_rrt/sim/world.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "roomba_rrt/sim/contact.h"
+
+namespace roomba_rrt::sim {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& name, const std::string& problem) {
+  throw std::invalid_argument(name + " " + problem);
+}
+
+std::string show(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void requirePositive(const std::string& name, double value) {
+  if (!(std::isfinite(value) && value > 0))
+    fail(name, "must be a finite number > 0, got " + show(value));
+}
+
+void requireFinite(const std::string& name, double value) {
+  if (!std::isfinite(value)) fail(name, "must be a finite number, got " + show(value));
+}
+
+/// A YAML mapping read key by key, naming every value by its path ("robot/radius",
+/// "furniture/circles[2]/x"); finish() rejects the keys nobody asked for (typos).
+class Section {
+ public:
+  Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
+    if (node_ && !node_.IsNull() && !node_.IsMap()) fail(name(""), "must be a mapping");
+  }
+  void finish() const {
+    if (!node_ || !node_.IsMap()) return;
+    for (const auto& entry : node_) {
+      const std::string key = entry.first.as<std::string>();
+      if (!known_.count(key)) fail(name(key), "is not a known parameter");
+    }
+  }
+  std::string name(const std::string& key) const {
+    return path_.empty() ? key : key.empty() ? path_ : path_ + "/" + key;
+  }
+  YAML::Node child(const std::string& key) {
+    known_.insert(key);
+    const YAML::Node& node = node_;  // const: a lookup must not insert the key
+    return node && node.IsMap() ? node[key] : YAML::Node();
+  }
+  void read(const std::string& key, double& value) {
+    const YAML::Node item = child(key);
+    if (!item || item.IsNull()) return;  // missing or empty: keep the default
+    try {
+      value = item.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(name(key), "must be a number, got '" + YAML::Dump(item) + "'");
+    }
+  }
+
+ private:
+  YAML::Node node_;
+  std::string path_;
+  std::set<std::string> known_;
+};
+
+template <typename Item, typename ReadItem>
+void readList(Section& parent, const std::string& key, std::vector<Item>& items, ReadItem read) {
+  const YAML::Node list = parent.child(key);
+  if (!list || list.IsNull()) return;
+  if (!list.IsSequence()) fail(parent.name(key), "must be a list");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    Section section(list[i], parent.name(key) + "[" + std::to_string(i) + "]");
+    Item item;
+    read(section, item);
+    section.finish();
+    items.push_back(item);
+  }
+}
+
+World readWorld(const YAML::Node& root) {
+  World world;
+  Section top(root, "");
+  {
+    Section room(top.child("room"), "room");
+    room.read("width", world.width);
+    room.read("height", world.height);
+    room.finish();
+  }
+  {
+    Section furniture(top.child("furniture"), "furniture");
+    readList(furniture, "circles", world.circles, [](Section& s, Circle& c) {
+      s.read("x", c.x);
+      s.read("y", c.y);
+      s.read("radius", c.radius);
+    });
+    readList(furniture, "rectangles", world.rectangles, [](Section& s, Rectangle& b) {
+      s.read("min_x", b.min_x);
+      s.read("min_y", b.min_y);
+      s.read("max_x", b.max_x);
+      s.read("max_y", b.max_y);
+    });
+    furniture.finish();
+  }
+  {
+    Section robot(top.child("robot"), "robot");
+    robot.read("radius", world.robot_radius);
+    robot.read("max_linear_speed", world.max_linear_speed);
+    robot.read("max_angular_speed", world.max_angular_speed);
+    robot.finish();
+  }
+  {
+    Section pose(top.child("initial_pose"), "initial_pose");
+    pose.read("x", world.initial_pose.x);
+    pose.read("y", world.initial_pose.y);
+    pose.read("theta", world.initial_pose.theta);
+    pose.finish();
+  }
+  top.read("step", world.step);
+  top.read("coverage_cell_size", world.coverage_cell_size);
+  top.read("command_timeout", world.command_timeout);
+  top.read("real_time_factor", world.real_time_factor);
+  top.finish();
+  return world;
+}
+
+}  // namespace
+
+void validate(const World& world) {
+  requirePositive("room/width", world.width);
+  requirePositive("room/height", world.height);
+  requirePositive("robot/radius", world.robot_radius);
+  requirePositive("robot/max_linear_speed", world.max_linear_speed);
+  requirePositive("robot/max_angular_speed", world.max_angular_speed);
+  requirePositive("step", world.step);
+  requirePositive("coverage_cell_size", world.coverage_cell_size);
+  requirePositive("command_timeout", world.command_timeout);
+  requirePositive("real_time_factor", world.real_time_factor);
+  const double diameter = 2 * world.robot_radius;
+  if (world.width <= diameter) {
+    fail("room/width",
+         "(" + show(world.width) + ") must exceed the robot's diameter " + show(diameter));
+  }
+  if (world.height <= diameter) {
+    fail("room/height",
+         "(" + show(world.height) + ") must exceed the robot's diameter " + show(diameter));
+  }
+  if (world.max_linear_speed * world.step >= world.robot_radius) {
+    fail("step", "is too long: the robot would move more than its radius in one step");
+  }
+  for (std::size_t i = 0; i < world.circles.size(); ++i) {
+    const Circle& c = world.circles[i];
+    const std::string name = "furniture/circles[" + std::to_string(i) + "]";
+    requireFinite(name + "/x", c.x);
+    requireFinite(name + "/y", c.y);
+    requirePositive(name + "/radius", c.radius);
+  }
+  for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
+    const Rectangle& b = world.rectangles[i];
+    const std::string name = "furniture/rectangles[" + std::to_string(i) + "]";
+    requireFinite(name + "/min_x", b.min_x);
+    requireFinite(name + "/min_y", b.min_y);
+    requireFinite(name + "/max_x", b.max_x);
+    requireFinite(name + "/max_y", b.max_y);
+    if (!(b.max_x > b.min_x)) fail(name + "/max_x", "must be greater than min_x");
+    if (!(b.max_y > b.min_y)) fail(name + "/max_y", "must be greater than min_y");
+  }
+  const Pose2D& p = world.initial_pose;
+  requireFinite("initial_pose/x", p.x);
+  requireFinite("initial_pose/y", p.y);
+  requireFinite("initial_pose/theta", p.theta);
+  if (penetrates(world, p.x, p.y)) {
+    fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
+                             ") puts the robot's disc inside a wall or a piece of furniture");
+  }
+}
+
+namespace {
+/// Reads and validates; every message starts with `source` (the file) and names the parameter.
+World buildWorld(const YAML::Node& root, const std::string& source) {
+  try {
+    World world = readWorld(root);
+    validate(world);
+    return world;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  }
+}
+}  // namespace
+
+World parseWorld(const std::string& yaml_text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(source + ": not valid YAML: " + e.what());
+  }
+  return buildWorld(root, source);
+}
+
+World loadWorld(const std::string& yaml_path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(yaml_path);
+  } catch (const YAML::BadFile&) {
+    throw std::invalid_argument(yaml_path + ": cannot read the world file");
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(yaml_path + ": not valid YAML: " + e.what());
+  }
+  return buildWorld(root, yaml_path);
+}
+
+}  // namespace roomba_rrt::sim
