@@ -1,1 +1,88 @@
-# planning targets: see CMakeLists.txt
+# Planning: the ROS-free RRT library, its command-line tools, unit tests and benchmark.
+# (The rrt_planner node and its rostest live in their own section at the end of this file.)
+
+add_library(rrt_planning
+  src/planning/brute_force_nearest_neighbors.cpp
+  src/planning/collision_checker.cpp
+  src/planning/free_space_sampler.cpp
+  src/planning/geometry.cpp
+  src/planning/grid_nearest_neighbors.cpp
+  src/planning/monte_carlo.cpp
+  src/planning/nearest_neighbors.cpp
+  src/planning/path_smoothing.cpp
+  src/planning/planner.cpp
+  src/planning/planner_options.cpp
+  src/planning/rrt.cpp
+  src/planning/rrt_connect.cpp
+  src/planning/rrt_star.cpp
+  src/planning/scenarios.cpp
+  src/planning/tool_arguments.cpp
+  src/planning/tree.cpp
+  src/planning/validate.cpp
+)
+target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_link_libraries(rrt_planning PUBLIC yaml-cpp)
+target_compile_definitions(rrt_planning PRIVATE
+  RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
+
+find_package(Threads REQUIRED)
+
+# rrt_monte_carlo: the lab's monteCarloRRT statistics (no ROS master needed).
+add_executable(rrt_monte_carlo src/tools/rrt_monte_carlo.cpp)
+target_link_libraries(rrt_monte_carlo rrt_planning Threads::Threads)
+
+# rrt_plot: draws a plan (bounds, obstacles, tree, path) into a PNG with Cairo.
+add_executable(rrt_plot src/tools/rrt_plot.cpp)
+target_link_libraries(rrt_plot rrt_planning PkgConfig::CAIRO)
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(test_rrt_planning
+    test/planning/test_geometry.cpp
+    test/planning/test_matlab_random.cpp
+    test/planning/test_nearest_neighbors.cpp
+    test/planning/test_rrt.cpp
+    test/planning/test_algorithms.cpp
+    test/planning/test_validate.cpp
+  )
+  if(TARGET test_rrt_planning)
+    target_link_libraries(test_rrt_planning rrt_planning gtest_main)
+  endif()
+endif()
+
+# planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(planning_bench bench/planning_bench.cpp)
+  target_link_libraries(planning_bench rrt_planning benchmark::benchmark)
+endif()
+
+# --- rrt_planner node (owned by the node helper) ---
+# The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
+# markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
+add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp)
+target_include_directories(rrt_planner PRIVATE include ${catkin_INCLUDE_DIRS})
+target_link_libraries(rrt_planner rrt_planning ${catkin_LIBRARIES})
+add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+
+add_executable(plan_path_bench bench/plan_path_bench.cpp)
+target_include_directories(plan_path_bench PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(plan_path_bench ${catkin_LIBRARIES})
+add_dependencies(plan_path_bench ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+
+if(CATKIN_ENABLE_TESTING)
+  # rostests through a real master; each .test starts the node and one gtest client node.
+  foreach(planner_node_test
+      plan_path_service:rrt_planner_service_test
+      concurrent_clients:rrt_planner_concurrency_test
+      animation:rrt_planner_animation_test)
+    string(REPLACE ":" ";" planner_node_test ${planner_node_test})
+    list(GET planner_node_test 0 launch_name)
+    list(GET planner_node_test 1 test_target)
+    add_rostest_gtest(${test_target} test/planner_node/${launch_name}.test
+      test/planner_node/${launch_name}_test.cpp test/planner_node/test_support.cpp)
+    target_include_directories(${test_target} PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(${test_target} ${catkin_LIBRARIES})
+    add_dependencies(${test_target} rrt_planner
+      ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+  endforeach()
+endif()

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/free_space_sampler.h"
@@ -34,10 +36,24 @@ struct PlannerParts {
   const CollisionChecker& checker;
 };
 
-/// Grows a tree from problem.start. Per iteration: one rand() for the goal bias (goal when
-/// r < p), otherwise a free-space sample; nearest node; steer by at most step; insert if the
-/// motion is free; stop when the new node is closer than goal_tolerance to the goal.
-/// Ignores options.algorithm and options.smooth (see plan()).
+/// Makes `tree` a single root node at `root` and `nearest` an index of it over `bounds`.
+void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const Bounds& bounds);
+
+/// Step 1 of an iteration: one rand() for the goal bias (the goal when r < p), otherwise a
+/// free-space sample (x, then y, per rejection try). std::nullopt when no free point was found.
+std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions& options,
+                                   const PlannerParts& parts);
+
+/// Steps 2-5 (LaValle's EXTEND): nearest node to `target`, steer by at most `step`, check the
+/// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked.
+int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
+               const Point2& target, double step);
+
+/// The message of a run that found no free point to sample.
+std::string noFreeSpaceMessage(const FreeSpaceSampler& sampler);
+
+/// Grows a tree from problem.start: sample, extend, and stop when the new node is closer than
+/// goal_tolerance to the goal. Ignores options.algorithm and options.smooth (see plan()).
 PlanResult solveRrt(const Problem& problem, const PlannerOptions& options, PlannerParts parts,
                     const ProgressCallback& progress = {});
 

@@ -1,0 +1,117 @@
+// planning_bench: how fast is the planner?
+//  - BM_SolveScenario: time per query on the lab's scenarios a-d (lab defaults, points mode),
+//    seeds continuing one MATLAB stream as rrt_monte_carlo does; counter solved_pct.
+//  - BM_IterationOnLargeTree: one RRT iteration (sample, nearest, steer, check, insert) on a
+//    tree of 10^6 nodes grown in scenario d's world, with the grid index vs brute force.
+//  - BM_GrowTree: a whole exploration run of N iterations from the start (index only).
+// Run: scripts/bench, or build-dir/devel/lib/roomba_rrt/planning_bench (or the build dir's bin).
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "roomba_rrt/planning/planner.h"
+#include "roomba_rrt/planning/rrt.h"
+
+namespace rp = roomba_rrt::planning;
+
+namespace {
+
+const std::map<std::string, rp::Problem>& scenarios() {
+  static const auto s = rp::loadScenarios(rp::defaultScenarioFile());
+  return s;
+}
+
+void BM_SolveScenario(benchmark::State& state, const std::string& name, rp::NearestSearch nn) {
+  const rp::Problem& problem = scenarios().at(name);
+  rp::PlannerOptions options;
+  options.nearest = nn;
+  rp::MatlabRandom stream(42);
+  int64_t solved = 0, runs = 0;
+  for (auto _ : state) {
+    const rp::PlanResult r = rp::plan(problem, options, stream);
+    benchmark::DoNotOptimize(r.length);
+    solved += r.success;
+    ++runs;
+  }
+  state.counters["solved_pct"] = 100.0 * solved / runs;
+}
+
+// A tree of `nodes` nodes in scenario d's world (goal_tolerance 0: it never stops early).
+const rp::Tree& largeTree(int nodes) {
+  static std::map<int, rp::Tree> cache;
+  auto found = cache.find(nodes);
+  if (found != cache.end()) return found->second;
+  rp::PlannerOptions options;
+  options.goal_tolerance = 0;
+  options.max_iterations = nodes * 2;  // enough iterations (some are blocked) ...
+  rp::Tree tree;
+  rp::plan(
+      scenarios().at("d"), options,
+      [&](const rp::Tree& t, int) {
+        if (tree.size() == 0 && t.size() >= nodes) tree = t;  // ... stop copying at `nodes`
+      },
+      1000);
+  tree.nodes.resize(nodes);
+  tree.parent.resize(nodes);
+  return cache.emplace(nodes, std::move(tree)).first->second;
+}
+
+void BM_IterationOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
+  const int nodes = static_cast<int>(state.range(0));
+  const rp::Problem& problem = scenarios().at("d");
+  rp::PlannerOptions options;  // lab defaults: p = 0.1, step 0.2
+  rp::Tree tree = largeTree(nodes);
+  const auto nearest = rp::makeNearestNeighbors(nn);
+  nearest->clear(problem.bounds);
+  for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
+  const rp::CollisionChecker checker(problem.obstacles, options.collision);
+  const rp::FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
+  rp::MatlabRandom random(7);
+  const rp::PlannerParts parts{random, sampler, *nearest, checker};
+  for (auto _ : state) {
+    const auto q_rand = rp::sampleTarget(problem, options, parts);
+    benchmark::DoNotOptimize(rp::extendTree(tree, *nearest, checker, *q_rand, options.step));
+  }
+  state.counters["iterations_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_GrowTree(benchmark::State& state) {
+  rp::PlannerOptions options;
+  options.goal_tolerance = 0;
+  options.max_iterations = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(rp::plan(scenarios().at("d"), options).tree.size());
+  }
+  state.counters["iterations_per_s"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * state.range(0)), benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_SolveScenario, a, "a", rp::NearestSearch::kIndex)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SolveScenario, b, "b", rp::NearestSearch::kIndex)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SolveScenario, c, "c", rp::NearestSearch::kIndex)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SolveScenario, d, "d", rp::NearestSearch::kIndex)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SolveScenario, a_brute_force, "a", rp::NearestSearch::kBruteForce)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SolveScenario, d_brute_force, "d", rp::NearestSearch::kBruteForce)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_IterationOnLargeTree, index, rp::NearestSearch::kIndex)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kNanosecond);
+BENCHMARK_CAPTURE(BM_IterationOnLargeTree, brute_force, rp::NearestSearch::kBruteForce)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_GrowTree)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+BENCHMARK_MAIN();

@@ -1,0 +1,35 @@
+// Command-line flags shared by the planning tools (rrt_monte_carlo, rrt_plot).
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "roomba_rrt/planning/planner_options.h"
+
+namespace roomba_rrt::planning {
+
+/// What the tools' common flags set.
+struct ToolArguments {
+  std::string scenario = "a";  ///< --scenario NAME
+  std::string scenario_file;   ///< --scenarios FILE (default: defaultScenarioFile())
+  PlannerOptions options;      ///< --algorithm --collision --nearest --step --goal-bias
+                               ///< --max-iterations --goal-tolerance --seed --smooth
+  std::map<std::string, std::string> tool;  ///< the tool's own flags ("--runs" -> "200")
+};
+
+/// Parses `--flag value` pairs and the switches `--smooth` and the tool's `switches` (stored as
+/// "1"). `tool_flags` are the tool's own flags that take a value. Throws std::invalid_argument
+/// with a message naming the flag on an unknown flag, a missing value or a malformed value.
+ToolArguments parseToolArguments(int argc, const char* const* argv,
+                                 const std::set<std::string>& tool_flags,
+                                 const std::set<std::string>& switches);
+
+/// The flags parseToolArguments() knows, one per line, for a usage message.
+std::string commonFlagsHelp();
+
+/// std::stoi / std::stod that accept only a whole, finite number; throw naming `flag`.
+int parseIntFlag(const std::string& flag, const std::string& value);
+double parseDoubleFlag(const std::string& flag, const std::string& value);
+
+}  // namespace roomba_rrt::planning

@@ -1,0 +1,53 @@
+#include "roomba_rrt/planning/planner.h"
+
+#include <chrono>
+
+#include "roomba_rrt/planning/path_smoothing.h"
+#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/rrt_connect.h"
+#include "roomba_rrt/planning/rrt_star.h"
+
+namespace roomba_rrt::planning {
+
+PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRandom& random,
+                const std::function<void(const Tree&, int)>& on_progress, int progress_every) {
+  const auto started = std::chrono::steady_clock::now();
+  PlanResult result;
+  if (std::string error = validate(problem, options); !error.empty()) {
+    result.message = error;
+    return result;
+  }
+  // The collaborators: collision checker, free-space sampler, nearest-neighbour structure.
+  const CollisionChecker checker(problem.obstacles, options.collision);
+  const FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
+  const auto nearest = makeNearestNeighbors(options.nearest);
+  const PlannerParts parts{random, sampler, *nearest, checker};
+  const ProgressCallback progress{on_progress, progress_every};
+  switch (options.algorithm) {
+    case Algorithm::kRrt:
+      result = solveRrt(problem, options, parts, progress);
+      break;
+    case Algorithm::kRrtConnect:
+      result = solveRrtConnect(problem, options, parts, progress);
+      break;
+    case Algorithm::kRrtStar:
+      result = solveRrtStar(problem, options, parts, progress);
+      break;
+  }
+  if (result.success && options.smooth) {
+    result.path =
+        shortcutPath(std::move(result.path), checker, options.smoothing_tries, options.seed);
+    result.length = pathLength(result.path);
+  }
+  result.planning_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+PlanResult plan(const Problem& problem, const PlannerOptions& options,
+                const std::function<void(const Tree&, int)>& on_progress, int progress_every) {
+  MatlabRandom random(options.seed);
+  return plan(problem, options, random, on_progress, progress_every);
+}
+
+}  // namespace roomba_rrt::planning

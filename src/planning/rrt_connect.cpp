@@ -1,0 +1,99 @@
+#include "roomba_rrt/planning/rrt_connect.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace roomba_rrt::planning {
+namespace {
+
+// One of the two trees with its nearest-neighbour structure.
+struct GrowingTree {
+  Tree tree;
+  NearestNeighbors& nearest;
+
+  void plant(const Point2& root, const Bounds& bounds) { plantTree(tree, nearest, root, bounds); }
+};
+
+// One step of tree `t` towards `target`; the new node's index, or -1 if blocked.
+int extend(GrowingTree& t, const Point2& target, const PlannerOptions& options,
+           const CollisionChecker& checker) {
+  return extendTree(t.tree, t.nearest, checker, target, options.step);
+}
+
+// Steps towards `target` until it is reached (returns that node) or blocked (returns -1).
+int connect(GrowingTree& t, const Point2& target, const PlannerOptions& options,
+            const CollisionChecker& checker) {
+  while (true) {
+    const int added = extend(t, target, options, checker);
+    if (added < 0) return -1;
+    if (distance(t.tree.nodes[added], target) < options.goal_tolerance) return added;
+  }
+}
+
+// Both trees in one: the goal tree's nodes follow the start tree's, parents shifted.
+Tree merge(const Tree& start_tree, const Tree& goal_tree) {
+  Tree merged = start_tree;
+  merged.reserve(start_tree.nodes.size() + goal_tree.nodes.size());
+  const int offset = start_tree.size();
+  for (int i = 0; i < goal_tree.size(); ++i) {
+    const int p = goal_tree.parent[i];
+    merged.add(goal_tree.nodes[i], p < 0 ? -1 : p + offset);
+  }
+  return merged;
+}
+
+}  // namespace
+
+PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options,
+                           PlannerParts parts, const ProgressCallback& progress) {
+  auto goal_index = makeNearestNeighbors(options.nearest);
+  GrowingTree start_tree{{}, parts.nearest};
+  GrowingTree goal_tree{{}, *goal_index};
+  start_tree.plant(problem.start, problem.bounds);
+  goal_tree.plant(problem.goal, problem.bounds);
+  GrowingTree* active = &start_tree;
+  GrowingTree* other = &goal_tree;
+
+  PlanResult result;
+  for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    result.iterations = iteration;
+    // 1. Sample a free point (no goal bias: the goal tree pulls instead).
+    const auto q_rand = parts.sampler.sample(parts.random);
+    if (!q_rand) {
+      result.message = noFreeSpaceMessage(parts.sampler);
+      break;
+    }
+    // 2. Extend the active tree one step towards it.
+    const int added = extend(*active, *q_rand, options, parts.checker);
+    if (added >= 0) {
+      // 3. Connect the other tree to the new node, step by step.
+      const Point2 q_new = active->tree.nodes[added];
+      const int reached = connect(*other, q_new, options, parts.checker);
+      if (reached >= 0) {
+        // 4. A path: start tree root ... junction ... goal tree root.
+        const bool start_active = active == &start_tree;
+        std::vector<Point2> head = pathFromRoot(start_tree.tree, start_active ? added : reached);
+        std::vector<Point2> tail = pathFromRoot(goal_tree.tree, start_active ? reached : added);
+        std::reverse(tail.begin(), tail.end());
+        head.insert(head.end(), tail.begin() + 1, tail.end());  // the junction once
+        result.success = true;
+        result.path = std::move(head);
+        result.length = pathLength(result.path);
+        result.message = "path found";
+        break;
+      }
+    }
+    // 5. Swap the roles of the trees.
+    std::swap(active, other);
+    if (progress.call && progress.every > 0 && iteration % progress.every == 0) {
+      progress(merge(start_tree.tree, goal_tree.tree), iteration);
+    }
+  }
+  if (!result.success && result.message.empty()) {
+    result.message = "no path within " + std::to_string(options.max_iterations) + " iterations";
+  }
+  result.tree = merge(start_tree.tree, goal_tree.tree);
+  return result;
+}
+
+}  // namespace roomba_rrt::planning

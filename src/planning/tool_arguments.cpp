@@ -1,0 +1,115 @@
+#include "roomba_rrt/planning/tool_arguments.h"
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include "roomba_rrt/planning/scenarios.h"
+
+namespace roomba_rrt::planning {
+namespace {
+
+[[noreturn]] void bad(const std::string& flag, const std::string& why) {
+  throw std::invalid_argument(flag + ": " + why);
+}
+
+template <typename Enum>
+Enum parseEnumFlag(const std::string& flag, const std::string& value,
+                   std::optional<Enum> (*parse)(const std::string&)) {
+  const auto parsed = parse(value);
+  if (!parsed) bad(flag, "unknown value '" + value + "'");
+  return *parsed;
+}
+
+}  // namespace
+
+int parseIntFlag(const std::string& flag, const std::string& value) {
+  std::size_t used = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(value, &used);
+  } catch (const std::exception&) {
+    bad(flag, "expected an integer, got '" + value + "'");
+  }
+  if (used != value.size() || v < INT32_MIN || v > INT32_MAX) {
+    bad(flag, "expected an integer, got '" + value + "'");
+  }
+  return static_cast<int>(v);
+}
+
+double parseDoubleFlag(const std::string& flag, const std::string& value) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(value, &used);
+  } catch (const std::exception&) {
+    bad(flag, "expected a number, got '" + value + "'");
+  }
+  if (used != value.size() || !std::isfinite(v)) bad(flag, "expected a finite number");
+  return v;
+}
+
+ToolArguments parseToolArguments(int argc, const char* const* argv,
+                                 const std::set<std::string>& tool_flags,
+                                 const std::set<std::string>& switches) {
+  ToolArguments args;
+  args.scenario_file = defaultScenarioFile();
+  PlannerOptions& o = args.options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--smooth") {
+      o.smooth = true;
+      continue;
+    }
+    if (switches.count(flag)) {
+      args.tool[flag] = "1";
+      continue;
+    }
+    if (i + 1 >= argc) bad(flag, "needs a value (or is unknown)");
+    const std::string value = argv[++i];
+    if (flag == "--scenario") {
+      args.scenario = value;
+    } else if (flag == "--scenarios") {
+      args.scenario_file = value;
+    } else if (flag == "--algorithm") {
+      o.algorithm = parseEnumFlag(flag, value, &parseAlgorithm);
+    } else if (flag == "--collision") {
+      o.collision = parseEnumFlag(flag, value, &parseCollisionCheck);
+    } else if (flag == "--nearest") {
+      o.nearest = parseEnumFlag(flag, value, &parseNearestSearch);
+    } else if (flag == "--step") {
+      o.step = parseDoubleFlag(flag, value);
+    } else if (flag == "--goal-bias") {
+      o.goal_bias = parseDoubleFlag(flag, value);
+    } else if (flag == "--goal-tolerance") {
+      o.goal_tolerance = parseDoubleFlag(flag, value);
+    } else if (flag == "--max-iterations") {
+      o.max_iterations = parseIntFlag(flag, value);
+    } else if (flag == "--seed") {
+      const int seed = parseIntFlag(flag, value);
+      if (seed < 0) bad(flag, "must be >= 0");
+      o.seed = static_cast<std::uint32_t>(seed);
+    } else if (tool_flags.count(flag)) {
+      args.tool[flag] = value;
+    } else {
+      bad(flag, "unknown flag");
+    }
+  }
+  return args;
+}
+
+std::string commonFlagsHelp() {
+  return "  --scenario NAME          a scenario of the scenario file (a, b, c, d)\n"
+         "  --scenarios FILE         scenario file (default: config/rrt_scenarios.yaml)\n"
+         "  --algorithm A            rrt (default), rrt_connect, rrt_star\n"
+         "  --collision C            points (the lab, default) or segments\n"
+         "  --nearest N              index (default) or brute_force\n"
+         "  --step D                 extension step Delta (default 0.2)\n"
+         "  --goal-bias P            goal bias p in [0, 1] (default 0.1)\n"
+         "  --max-iterations N       iterations per run (default 1000)\n"
+         "  --goal-tolerance E       epsilon (default 1e-3)\n"
+         "  --seed S                 MATLAB rng(S) seed (default 42)\n"
+         "  --smooth                 shortcut-smooth each path found\n";
+}
+
+}  // namespace roomba_rrt::planning

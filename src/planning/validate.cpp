@@ -1,0 +1,89 @@
+#include "roomba_rrt/planning/validate.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace roomba_rrt::planning {
+namespace {
+
+std::string show(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// "field: NaN or infinite" for the first non-finite value, "" otherwise.
+std::string checkFinite(const std::string& field, double v) {
+  return std::isfinite(v) ? "" : field + ": must be finite (got " + show(v) + ")";
+}
+
+std::string checkPointFinite(const std::string& field, const Point2& p) {
+  std::string error = checkFinite(field + ".x", p.x);
+  return error.empty() ? checkFinite(field + ".y", p.y) : error;
+}
+
+std::string checkPlaceable(const std::string& field, const Point2& p, const Problem& problem) {
+  if (!contains(problem.bounds, p)) {
+    return field + ": (" + show(p.x) + ", " + show(p.y) + ") is outside the bounds";
+  }
+  for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
+    if (contains(problem.obstacles[i], p)) return field + ": inside obstacle " + std::to_string(i);
+  }
+  return "";
+}
+
+std::string validateProblem(const Problem& problem) {
+  const Bounds& b = problem.bounds;
+  for (const auto& [field, value] : {std::pair<const char*, double>{"bounds.x_min", b.x_min},
+                                     {"bounds.x_max", b.x_max},
+                                     {"bounds.y_min", b.y_min},
+                                     {"bounds.y_max", b.y_max}}) {
+    if (auto error = checkFinite(field, value); !error.empty()) return error;
+  }
+  if (!(b.x_min < b.x_max)) return "bounds: x_min must be < x_max (empty or inverted bounds)";
+  if (!(b.y_min < b.y_max)) return "bounds: y_min must be < y_max (empty or inverted bounds)";
+  for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
+    const std::string field = "obstacles[" + std::to_string(i) + "]";
+    const Circle& c = problem.obstacles[i];
+    if (auto error = checkPointFinite(field + ".center", c.center); !error.empty()) return error;
+    if (auto error = checkFinite(field + ".radius", c.radius); !error.empty()) return error;
+    if (c.radius < 0) return field + ".radius: must be >= 0 (got " + show(c.radius) + ")";
+  }
+  if (auto error = checkPointFinite("start", problem.start); !error.empty()) return error;
+  if (auto error = checkPointFinite("goal", problem.goal); !error.empty()) return error;
+  if (auto error = checkPlaceable("start", problem.start, problem); !error.empty()) return error;
+  return checkPlaceable("goal", problem.goal, problem);
+}
+
+std::string validateOptions(const PlannerOptions& o, int max_iterations_cap) {
+  if (auto error = checkFinite("step", o.step); !error.empty()) return error;
+  if (o.step <= 0) return "step: must be > 0 (got " + show(o.step) + ")";
+  if (auto error = checkFinite("goal_bias", o.goal_bias); !error.empty()) return error;
+  if (o.goal_bias < 0 || o.goal_bias > 1) {
+    return "goal_bias: must be in [0, 1] (got " + show(o.goal_bias) + ")";
+  }
+  if (o.max_iterations < 1) {
+    return "max_iterations: must be >= 1 (got " + std::to_string(o.max_iterations) + ")";
+  }
+  if (o.max_iterations > max_iterations_cap) {
+    return "max_iterations: " + std::to_string(o.max_iterations) + " is above the cap of " +
+           std::to_string(max_iterations_cap);
+  }
+  if (auto error = checkFinite("goal_tolerance", o.goal_tolerance); !error.empty()) return error;
+  if (o.goal_tolerance < 0) {
+    return "goal_tolerance: must be >= 0 (got " + show(o.goal_tolerance) + ")";
+  }
+  if (o.max_rejection_tries < 1) return "max_rejection_tries: must be >= 1";
+  if (o.smoothing_tries < 0) return "smoothing_tries: must be >= 0";
+  return "";
+}
+
+}  // namespace
+
+std::string validate(const Problem& problem, const PlannerOptions& options,
+                     int max_iterations_cap) {
+  if (auto error = validateProblem(problem); !error.empty()) return error;
+  return validateOptions(options, max_iterations_cap);
+}
+
+}  // namespace roomba_rrt::planning

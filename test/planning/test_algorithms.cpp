@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include "planning_test_support.h"
+#include "roomba_rrt/planning/path_smoothing.h"
+
+namespace roomba_rrt::planning {
+namespace {
+
+using testing::expectPathConnectsStartToGoal;
+using testing::firstCollidingEdge;
+using testing::labScenario;
+
+class EveryScenario : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(EveryScenario, rrt_connect_finds_a_collision_free_path_with_short_edges) {
+  const Problem p = labScenario(GetParam());
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtConnect;
+  options.collision = CollisionCheck::kSegments;
+  options.max_iterations = 10000;  // scenario d's narrow gaps (0.15 m) take a while
+  for (std::uint32_t seed = 1; seed <= 10; ++seed) {
+    options.seed = seed;
+    const PlanResult r = plan(p, options);
+    expectPathConnectsStartToGoal(r, p, 1e-9);  // ends exactly at the goal tree's root
+    EXPECT_EQ(firstCollidingEdge(r.path, p.obstacles), -1);
+    for (std::size_t i = 1; i < r.path.size(); ++i) {
+      EXPECT_LE(distance(r.path[i - 1], r.path[i]), options.step + 1e-12);
+    }
+  }
+}
+
+TEST_P(EveryScenario, rrt_star_finds_a_collision_free_path) {
+  const Problem p = labScenario(GetParam());
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtStar;
+  options.collision = CollisionCheck::kSegments;
+  options.max_iterations = 2000;
+  const PlanResult r = plan(p, options);
+  expectPathConnectsStartToGoal(r, p, options.goal_tolerance);
+  EXPECT_EQ(firstCollidingEdge(r.path, p.obstacles), -1);
+  EXPECT_EQ(r.iterations, options.max_iterations);  // RRT* keeps improving
+}
+
+TEST_P(EveryScenario, smoothing_never_lengthens_a_path_and_keeps_it_collision_free) {
+  const Problem p = labScenario(GetParam());
+  PlannerOptions options;
+  options.collision = CollisionCheck::kSegments;
+  for (std::uint32_t seed = 1; seed <= 10; ++seed) {
+    options.seed = seed;
+    options.smooth = false;
+    const PlanResult raw = plan(p, options);
+    if (!raw.success) continue;
+    options.smooth = true;
+    const PlanResult smooth = plan(p, options);
+    expectPathConnectsStartToGoal(smooth, p, options.goal_tolerance);
+    EXPECT_LE(smooth.length, raw.length + 1e-12);
+    EXPECT_EQ(firstCollidingEdge(smooth.path, p.obstacles), -1);
+    EXPECT_EQ(smooth.path.back().x, raw.path.back().x);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(LabScenarios, EveryScenario, ::testing::Values("a", "b", "c", "d"));
+
+TEST(RrtStar, approaches_the_straight_line_in_an_empty_world) {
+  Problem empty;
+  empty.start = {1, 1};
+  empty.goal = {9, 9};
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtStar;
+  options.max_iterations = 3000;
+  const PlanResult star = plan(empty, options);
+  ASSERT_TRUE(star.success);
+  const double straight = distance(empty.start, empty.goal);
+  EXPECT_LT(star.length, 1.03 * straight);
+}
+
+TEST(Smoothing, is_reproducible_and_straightens_a_detour_in_an_empty_world) {
+  const std::vector<Point2> zigzag{{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}};
+  const CollisionChecker nothing({}, CollisionCheck::kSegments);
+  const auto once = shortcutPath(zigzag, nothing, 50, 5);
+  EXPECT_EQ(once.size(), 2u);  // free space: one straight segment remains
+  const auto again = shortcutPath(zigzag, nothing, 50, 5);
+  ASSERT_EQ(once.size(), again.size());
+  EXPECT_EQ(once.back().x, 4);
+}
+
+TEST(RrtConnect, tree_holds_both_trees_each_with_its_root) {
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtConnect;
+  const PlanResult r = plan(labScenario("a"), options);
+  ASSERT_TRUE(r.success);
+  int roots = 0;
+  for (int p : r.tree.parent) roots += p < 0;
+  EXPECT_EQ(roots, 2);
+}
+
+}  // namespace
+}  // namespace roomba_rrt::planning

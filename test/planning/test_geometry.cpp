@@ -1,0 +1,80 @@
+#include <gtest/gtest.h>
+
+#include "roomba_rrt/planning/geometry.h"
+#include "roomba_rrt/planning/planner_options.h"
+#include "roomba_rrt/planning/scenarios.h"
+
+namespace roomba_rrt::planning {
+namespace {
+
+const Circle kUnitAtOrigin{{0, 0}, 1};
+
+TEST(Geometry, segment_passing_through_a_circle_meets_it_even_with_both_ends_outside) {
+  EXPECT_TRUE(segmentMeetsCircle({-2, 0.5}, {2, 0.5}, kUnitAtOrigin));
+}
+
+TEST(Geometry, segment_passing_beside_a_circle_does_not_meet_it) {
+  EXPECT_FALSE(segmentMeetsCircle({-2, 1.01}, {2, 1.01}, kUnitAtOrigin));
+  // The infinite line crosses the circle, the segment stops before it.
+  EXPECT_FALSE(segmentMeetsCircle({-3, 0}, {-1.01, 0}, kUnitAtOrigin));
+}
+
+TEST(Geometry, touching_the_rim_counts_as_a_collision) {
+  EXPECT_TRUE(segmentMeetsCircle({-2, 1}, {2, 1}, kUnitAtOrigin));
+  EXPECT_TRUE(contains(kUnitAtOrigin, Point2{1, 0}));
+}
+
+TEST(Geometry, zero_length_segment_is_a_point_test) {
+  EXPECT_TRUE(segmentMeetsCircle({0.5, 0}, {0.5, 0}, kUnitAtOrigin));
+  EXPECT_FALSE(segmentMeetsCircle({1.5, 0}, {1.5, 0}, kUnitAtOrigin));
+}
+
+TEST(Geometry, path_length_is_the_sum_of_its_segments) {
+  EXPECT_DOUBLE_EQ(pathLength({{0, 0}, {3, 4}, {3, 5}}), 6.0);
+  EXPECT_DOUBLE_EQ(pathLength({{1, 1}}), 0.0);
+}
+
+TEST(PlannerOptions, names_round_trip_and_unknown_names_are_rejected) {
+  for (auto a : {Algorithm::kRrt, Algorithm::kRrtConnect, Algorithm::kRrtStar}) {
+    EXPECT_EQ(parseAlgorithm(toString(a)), a);
+  }
+  for (auto c : {CollisionCheck::kPoints, CollisionCheck::kSegments}) {
+    EXPECT_EQ(parseCollisionCheck(toString(c)), c);
+  }
+  EXPECT_EQ(toString(Algorithm::kRrtConnect), "rrt_connect");
+  EXPECT_EQ(toString(CollisionCheck::kSegments), "segments");
+  EXPECT_FALSE(parseAlgorithm("prm"));
+  EXPECT_FALSE(parseCollisionCheck("edges"));
+  EXPECT_FALSE(parseNearestSearch("kdtree"));
+}
+
+TEST(Scenarios, the_lab_file_holds_the_four_scenarios_of_the_lab) {
+  const auto s = loadScenarios(defaultScenarioFile());
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s.at("a").obstacles.size(), 1u);
+  EXPECT_EQ(s.at("b").obstacles.size(), 3u);
+  EXPECT_EQ(s.at("c").obstacles.size(), 4u);
+  ASSERT_EQ(s.at("d").obstacles.size(), 5u);
+  EXPECT_DOUBLE_EQ(s.at("d").obstacles[0].radius, 0.8);
+  EXPECT_DOUBLE_EQ(s.at("d").start.x, 9);
+  EXPECT_DOUBLE_EQ(s.at("d").goal.y, 1);
+  EXPECT_DOUBLE_EQ(s.at("a").bounds.x_max, 10);
+}
+
+TEST(Scenarios, a_malformed_file_is_an_error_naming_the_field) {
+  const std::string path = ::testing::TempDir() + "bad_scenarios.yaml";
+  FILE* f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("scenarios:\n  x:\n    start: [1]\n    goal: [2, 2]\n", f);
+  std::fclose(f);
+  try {
+    loadScenarios(path);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("scenarios.x.start"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(loadScenarios("/nonexistent/scenarios.yaml"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace roomba_rrt::planning

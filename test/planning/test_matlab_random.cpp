@@ -1,0 +1,37 @@
+#include <gtest/gtest.h>
+
+#include "roomba_rrt/planning/matlab_random.h"
+
+namespace roomba_rrt::planning {
+namespace {
+
+TEST(MatlabRandom, rng0_first_rand_is_matlabs_0_8147236863931789) {
+  MatlabRandom random(5489);  // MATLAB's rng(0) seeds MT19937 with 5489
+  EXPECT_DOUBLE_EQ(random.uniform(), 0.8147236863931789);
+}
+
+TEST(MatlabRandom, seed_zero_means_matlabs_rng0) {
+  MatlabRandom zero(0);
+  MatlabRandom reference(5489);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(zero.uniform(), reference.uniform());
+}
+
+TEST(MatlabRandom, rng0_continues_like_matlab_rand_1_5) {
+  // MATLAB: rng(0); rand(1, 5) -> 0.8147 0.9058 0.1270 0.9134 0.6324
+  MatlabRandom random(0);
+  for (double expected : {0.8147, 0.9058, 0.1270, 0.9134, 0.6324}) {
+    EXPECT_NEAR(random.uniform(), expected, 5e-5);
+  }
+}
+
+TEST(MatlabRandom, values_stay_in_the_unit_interval_and_scale_to_bounds) {
+  MatlabRandom random(42);
+  for (int i = 0; i < 10000; ++i) {
+    const double v = random.uniform(2.0, 3.0);
+    EXPECT_GE(v, 2.0);
+    EXPECT_LT(v, 3.0);
+  }
+}
+
+}  // namespace
+}  // namespace roomba_rrt::planning
