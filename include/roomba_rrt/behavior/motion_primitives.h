@@ -1,0 +1,144 @@
+// The lab's four motions, written once and used by both the FSM states and the BT leaves.
+#pragma once
+
+#include <random>
+
+#include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/sim/robot_state.h"
+
+namespace roomba_rrt::behavior {
+
+/// What a motion wants to happen before it executes in this tick.
+enum class MotionEvent : std::uint8_t {
+  kNone,    ///< keep going: execute() gives this tick's command
+  kBumped,  ///< the bumper is pressed (checked before the timer)
+  kTimeUp,  ///< the motion has executed all its ticks
+};
+
+// Every motion has the same three calls, so an FSM state and a BT leaf are thin adapters:
+//
+//   enter()          start (again): the tick counter k goes back to 0
+//   check(bumper)    kBumped / kTimeUp / kNone, without changing anything
+//   execute()        the command for tick k, then k += 1
+//
+// Time is counted in ticks from entering (the lab counts executions × sample time).
+
+/// Counts a motion's executions against its length in ticks.
+class TickCounter {
+ public:
+  explicit TickCounter(long length) : length_(length) {}
+  void restart() { k_ = 0; }
+  bool done() const { return k_ >= length_; }
+  /// The index of the current execution (0, 1, …), then advances.
+  long next() { return k_++; }
+  long length() const { return length_; }
+  void setLength(long length) { length_ = length; }
+
+ private:
+  long length_;
+  long k_ = 0;
+};
+
+/// MoveForward: v = forward_speed, ω = 0, for round(move_forward_time·rate) ticks (180).
+/// A bump ends it (→ GoBack), then the timer (→ MoveInSpiral).
+class MoveForward {
+ public:
+  explicit MoveForward(const RoombaParams& p)
+      : speed_(p.forward_speed), timer_(p.ticks(p.move_forward_time)) {}
+  void enter() { timer_.restart(); }
+  MotionEvent check(const sim::BumperState& bumper) const {
+    if (bumper.pressed) return MotionEvent::kBumped;
+    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+  }
+  sim::Velocity execute() {
+    timer_.next();
+    return {speed_, 0.0};
+  }
+
+ private:
+  double speed_;
+  TickCounter timer_;
+};
+
+/// MoveInSpiral: v = forward_speed, ω = v / r(t) with r(t) = r0 + b·t and t = k·Δt on its k-th
+/// tick (k = 0, 1, …), for round(move_in_spiral_time·rate) ticks (1200). A bump ends it
+/// (→ GoBack), then the timer (→ MoveForward). At k = 600, ω = 0.5 / 0.7 rad/s.
+class MoveInSpiral {
+ public:
+  explicit MoveInSpiral(const RoombaParams& p)
+      : speed_(p.forward_speed),
+        r0_(p.initial_radius_spiral),
+        growth_per_tick_(p.spiral_factor * p.sampleTime()),
+        timer_(p.ticks(p.move_in_spiral_time)) {}
+  void enter() { timer_.restart(); }
+  MotionEvent check(const sim::BumperState& bumper) const {
+    if (bumper.pressed) return MotionEvent::kBumped;
+    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+  }
+  sim::Velocity execute() {
+    const double radius = r0_ + growth_per_tick_ * static_cast<double>(timer_.next());
+    return {speed_, speed_ / radius};
+  }
+
+ private:
+  double speed_;
+  double r0_;
+  double growth_per_tick_;
+  TickCounter timer_;
+};
+
+/// GoBack: v = backward_speed, ω = 0, for round(go_back_time·rate) ticks (30 ticks at −0.1 m/s:
+/// 5 cm). The bumper is ignored; the timer ends it (→ Rotate).
+class GoBack {
+ public:
+  explicit GoBack(const RoombaParams& p)
+      : speed_(p.backward_speed), timer_(p.ticks(p.go_back_time)) {}
+  void enter() { timer_.restart(); }
+  MotionEvent check(const sim::BumperState&) const {
+    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+  }
+  sim::Velocity execute() {
+    timer_.next();
+    return {speed_, 0.0};
+  }
+
+ private:
+  double speed_;
+  TickCounter timer_;
+};
+
+/// Rotate: on enter, draws dθ ∈ [−π, π) (drawAngle); turns in place at angular_speed with the
+/// sign of dθ for n = ⌈|dθ| / (angular_speed·Δt)⌉ ticks, the last one slowed down so that the
+/// n ticks turn exactly dθ. The bumper is ignored; the timer ends it (→ MoveForward).
+class Rotate {
+ public:
+  Rotate(const RoombaParams& p, std::mt19937& rng)
+      : speed_(p.angular_speed), dt_(p.sampleTime()), rng_(rng), timer_(0) {}
+
+  /// The documented draw, identical in the FSM and the BT: one 32-bit output u of the
+  /// std::mt19937 (fully specified by the C++ standard), dθ = −π + 2π·u / 2³².
+  static double drawAngle(std::mt19937& rng);
+
+  void enter();
+  MotionEvent check(const sim::BumperState&) const {
+    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+  }
+  sim::Velocity execute() {
+    const long k = timer_.next();
+    return {0.0, k + 1 < timer_.length() ? full_ : last_};
+  }
+
+  /// The angle drawn by the last enter().
+  double angle() const { return angle_; }
+
+ private:
+  double speed_;
+  double dt_;
+  std::mt19937& rng_;
+  TickCounter timer_;
+  double angle_ = 0;
+  double full_ = 0;  ///< ω of every tick but the last
+  double last_ = 0;  ///< ω of the last tick
+};
+
+}  // namespace roomba_rrt::behavior

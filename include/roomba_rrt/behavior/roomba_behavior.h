@@ -1,0 +1,37 @@
+// What the nodes and the coverage tool see of a Roomba behaviour, FSM or BT.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/behavior/roomba_state.h"
+#include "roomba_rrt/sim/robot_state.h"
+
+namespace roomba_rrt::behavior {
+
+/// A Roomba behaviour ticked once per sample time: bumper in, (v, ω) out.
+class RoombaBehavior {
+ public:
+  RoombaBehavior(const RoombaParams& params, std::uint32_t seed);
+  virtual ~RoombaBehavior() = default;
+  RoombaBehavior(const RoombaBehavior&) = delete;
+  RoombaBehavior& operator=(const RoombaBehavior&) = delete;
+
+  /// One tick (step 3 of the lab's simulation step): the bumper sensed in this step in, the
+  /// command for this step out.
+  virtual sim::Velocity tick(const sim::BumperState& bumper) = 0;
+
+  /// The motion that produced the last command (the FSM's state, the BT's active leaf).
+  RoombaState state() const { return context_.state; }
+  /// Its name, for ~state: the FSM state's name, or the BT leaf's instance name ("Idle" before
+  /// the first tick of a BT).
+  const std::string& stateName() const { return *context_.state_name; }
+  const RoombaParams& params() const { return params_; }
+
+ protected:
+  RoombaParams params_;
+  RoombaContext context_;
+};
+
+}  // namespace roomba_rrt::behavior

@@ -1,0 +1,33 @@
+// The four motions of the lab's Roomba and what the FSM states and BT leaves share.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "roomba_rrt/sim/robot_state.h"
+
+namespace roomba_rrt::behavior {
+
+/// The lab's four motions: the FSM's states and the BT's leaves.
+enum class RoombaState : std::uint8_t { kMoveForward, kMoveInSpiral, kGoBack, kRotate };
+
+/// "MoveForward", "MoveInSpiral", "GoBack" or "Rotate".
+const char* toString(RoombaState state);
+
+/// The data the states (FSM) or leaves (BT) of one Roomba behaviour share, like the lab's
+/// `agent`: the bumper of this tick in, the command of this tick out, and the random generator
+/// of the rotation angle.
+struct RoombaContext {
+  explicit RoombaContext(std::uint32_t seed) : rng(seed) {}
+
+  sim::BumperState bumper;  ///< input: the bumper sensed in this step
+  sim::Velocity cmd;        ///< output: the command decided in this tick
+  /// The motion that produced `cmd` (the last one that executed).
+  RoombaState state = RoombaState::kMoveForward;
+  /// Its name: the FSM state's, or the BT leaf's instance name.
+  const std::string* state_name = nullptr;
+  std::mt19937 rng;  ///< Rotate's angle generator (see Rotate::drawAngle)
+};
+
+}  // namespace roomba_rrt::behavior

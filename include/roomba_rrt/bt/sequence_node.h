@@ -1,0 +1,32 @@
+// Sequence: run the children one after the other until one fails (the lab's Sequence).
+#pragma once
+
+#include <cstddef>
+
+#include "roomba_rrt/bt/control_node.h"
+
+namespace roomba_rrt::bt {
+
+/// Ticks its children from left to right and *remembers* the running one: the next tick resumes
+/// it without re-checking the children before it (non-reactive, as in the lab).
+///
+/// When the current child returns
+/// - SUCCESS: the next child is entered and ticked in the same tick; after the last child the
+///   Sequence returns SUCCESS and its next tick starts again from the first child.
+/// - FAILURE: the Sequence returns FAILURE at once (later children are not ticked); its next tick
+///   starts again from the first child.
+/// - RUNNING: the Sequence returns RUNNING and ticks the same child next time.
+///
+/// Halting the Sequence halts the running child and rewinds to the first child.
+class SequenceNode final : public ControlNode {
+ public:
+  using ControlNode::ControlNode;
+
+ private:
+  void onEnter() override { current_ = 0; }
+  Status onTick() override;
+
+  std::size_t current_ = 0;  ///< the child ticked next
+};
+
+}  // namespace roomba_rrt::bt

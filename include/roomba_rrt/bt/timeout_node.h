@@ -1,0 +1,29 @@
+// Timeout: give its child a fixed number of ticks to finish.
+#pragma once
+
+#include "roomba_rrt/bt/decorator_node.h"
+
+namespace roomba_rrt::bt {
+
+/// Lets the child run for at most `ticks` ticks (time is counted in ticks, so a tree is
+/// deterministic and needs no clock; at 60 Hz, 60 ticks are one second).
+///
+/// When the child returns
+/// - SUCCESS: Timeout returns SUCCESS.
+/// - FAILURE: Timeout returns FAILURE.
+/// - RUNNING: Timeout returns RUNNING, unless this was the child's `ticks`-th tick in this run:
+///   then the child is halted and Timeout returns FAILURE.
+class TimeoutNode final : public DecoratorNode {
+ public:
+  /// `ticks` ≥ 1 (std::invalid_argument otherwise).
+  TimeoutNode(std::string name, long ticks);
+
+ private:
+  void onEnter() override { elapsed_ = 0; }
+  Status onTick() override;
+
+  long ticks_;
+  long elapsed_ = 0;  ///< child ticks in this run
+};
+
+}  // namespace roomba_rrt::bt

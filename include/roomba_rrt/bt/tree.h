@@ -1,0 +1,32 @@
+// A behavior tree: the root node and everything below it.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+
+#include "roomba_rrt/bt/tree_node.h"
+
+namespace roomba_rrt::bt {
+
+/// Owns a tree of nodes and ticks its root.
+///
+/// When the root returns SUCCESS or FAILURE it is no longer running, so the next tick enters it
+/// anew and the tree starts again from the left (the lab's rule). A tick in which the root
+/// finishes therefore runs no leaf to completion of a new action: callers that need an output on
+/// every tick must decide what that tick means (RoombaBt commands zero velocity).
+class Tree {
+ public:
+  explicit Tree(std::unique_ptr<TreeNode> root) : root_(std::move(root)) {
+    if (!root_) throw std::invalid_argument("bt::Tree: the root node is null");
+  }
+
+  Status tick() { return root_->tick(); }
+  /// Halts every running node (e.g. when the robot is stopped from outside).
+  void halt() { root_->halt(); }
+  TreeNode& root() { return *root_; }
+
+ private:
+  std::unique_ptr<TreeNode> root_;
+};
+
+}  // namespace roomba_rrt::bt

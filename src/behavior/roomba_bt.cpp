@@ -1,0 +1,27 @@
+#include "roomba_rrt/behavior/roomba_bt.h"
+
+#include "roomba_rrt/behavior/roomba_tree.h"
+
+namespace roomba_rrt::behavior {
+namespace {
+
+bt::Tree buildTree(const RoombaParams& params, RoombaContext& context, const std::string& xml,
+                   bool from_file) {
+  bt::TreeFactory factory;
+  registerRoombaLeaves(factory, params, context);
+  return from_file ? factory.buildFromFile(xml) : factory.buildFromText(xml, "kLabTreeXml");
+}
+
+}  // namespace
+
+RoombaBt::RoombaBt(const RoombaParams& params, std::uint32_t seed)
+    : RoombaBt(params, seed, kLabTreeXml, false) {}
+
+RoombaBt::RoombaBt(const RoombaParams& params, std::uint32_t seed, const std::string& tree_file)
+    : RoombaBt(params, seed, tree_file, true) {}
+
+RoombaBt::RoombaBt(const RoombaParams& params, std::uint32_t seed, const std::string& xml,
+                   bool from_file)
+    : RoombaBehavior(params, seed), tree_(buildTree(params_, context_, xml, from_file)) {}
+
+}  // namespace roomba_rrt::behavior

@@ -1,0 +1,93 @@
+#include "roomba_rrt/behavior/roomba_params.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace roomba_rrt::behavior {
+namespace {
+
+std::string show(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void require(bool ok, const char* field, const char* rule, double value) {
+  if (!ok) {
+    throw std::invalid_argument(std::string(field) + " must be " + rule + ", got " + show(value));
+  }
+}
+
+}  // namespace
+
+void validate(const RoombaParams& p) {
+  const std::pair<const char*, double> all[] = {{"move_forward_time", p.move_forward_time},
+                                                {"move_in_spiral_time", p.move_in_spiral_time},
+                                                {"go_back_time", p.go_back_time},
+                                                {"forward_speed", p.forward_speed},
+                                                {"backward_speed", p.backward_speed},
+                                                {"angular_speed", p.angular_speed},
+                                                {"initial_radius_spiral", p.initial_radius_spiral},
+                                                {"spiral_factor", p.spiral_factor},
+                                                {"rate", p.rate}};
+  for (const auto& [field, value] : all) require(std::isfinite(value), field, "finite", value);
+  require(p.move_forward_time >= 0, "move_forward_time", ">= 0", p.move_forward_time);
+  require(p.move_in_spiral_time >= 0, "move_in_spiral_time", ">= 0", p.move_in_spiral_time);
+  require(p.go_back_time >= 0, "go_back_time", ">= 0", p.go_back_time);
+  require(p.forward_speed > 0, "forward_speed", "> 0", p.forward_speed);
+  require(p.backward_speed < 0, "backward_speed", "< 0 (it drives backwards)", p.backward_speed);
+  require(p.angular_speed > 0, "angular_speed", "> 0", p.angular_speed);
+  require(p.initial_radius_spiral > 0, "initial_radius_spiral", "> 0", p.initial_radius_spiral);
+  require(p.spiral_factor >= 0, "spiral_factor", ">= 0", p.spiral_factor);
+  require(p.rate > 0, "rate", "> 0", p.rate);
+}
+
+RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& source) {
+  RoombaParams p;
+  const std::map<std::string, double*> fields = {
+      {"move_forward_time", &p.move_forward_time},
+      {"move_in_spiral_time", &p.move_in_spiral_time},
+      {"go_back_time", &p.go_back_time},
+      {"forward_speed", &p.forward_speed},
+      {"backward_speed", &p.backward_speed},
+      {"angular_speed", &p.angular_speed},
+      {"initial_radius_spiral", &p.initial_radius_spiral},
+      {"spiral_factor", &p.spiral_factor},
+      {"rate", &p.rate}};
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    if (root.IsNull()) return p;  // an empty file keeps every default
+    if (!root.IsMap()) throw std::invalid_argument("the top level must be a map of parameters");
+    for (const auto& entry : root) {
+      const std::string key = entry.first.as<std::string>();
+      const auto field = fields.find(key);
+      if (field == fields.end()) throw std::invalid_argument("unknown parameter '" + key + "'");
+      try {
+        *field->second = entry.second.as<double>();
+      } catch (const YAML::Exception&) {
+        throw std::invalid_argument(key + " must be a number");
+      }
+    }
+    validate(p);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  }
+  return p;
+}
+
+RoombaParams loadRoombaParams(const std::string& yaml_path) {
+  std::ifstream file(yaml_path);
+  if (!file) throw std::invalid_argument(yaml_path + ": cannot read the file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parseRoombaParams(text.str(), yaml_path);
+}
+
+}  // namespace roomba_rrt::behavior

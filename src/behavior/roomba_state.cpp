@@ -1,0 +1,19 @@
+#include "roomba_rrt/behavior/roomba_state.h"
+
+namespace roomba_rrt::behavior {
+
+const char* toString(RoombaState state) {
+  switch (state) {
+    case RoombaState::kMoveForward:
+      return "MoveForward";
+    case RoombaState::kMoveInSpiral:
+      return "MoveInSpiral";
+    case RoombaState::kGoBack:
+      return "GoBack";
+    case RoombaState::kRotate:
+      return "Rotate";
+  }
+  return "Invalid";
+}
+
+}  // namespace roomba_rrt::behavior

@@ -1,0 +1,19 @@
+#include "roomba_rrt/bt/inverter_node.h"
+
+namespace roomba_rrt::bt {
+
+Status InverterNode::onTick() {
+  const Status status = child_->tick();
+  switch (status) {
+    case Status::kSuccess:
+      return Status::kFailure;
+    case Status::kFailure:
+      return Status::kSuccess;
+    case Status::kRunning:
+      return Status::kRunning;
+    default:
+      throwImpossibleStatus("Inverter", status);
+  }
+}
+
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,22 @@
+#include "roomba_rrt/bt/reactive_sequence.h"
+
+namespace roomba_rrt::bt {
+
+Status ReactiveSequence::onTick() {
+  for (std::size_t i = 0; i < children_.size(); ++i) {
+    const Status status = children_[i]->tick();
+    switch (status) {
+      case Status::kSuccess:
+        break;  // tick the next child in this same tick
+      case Status::kFailure:
+      case Status::kRunning:
+        haltChildren(i + 1);  // a later child may have been running
+        return status;
+      default:
+        throwImpossibleStatus("ReactiveSequence", status);
+    }
+  }
+  return Status::kSuccess;
+}
+
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,25 @@
+#include "roomba_rrt/bt/selector_node.h"
+
+namespace roomba_rrt::bt {
+
+Status SelectorNode::onTick() {
+  while (current_ < children_.size()) {
+    const Status status = children_[current_]->tick();
+    switch (status) {
+      case Status::kSuccess:
+        current_ = 0;
+        return Status::kSuccess;
+      case Status::kFailure:
+        ++current_;  // enter and tick the next child in this same tick
+        break;
+      case Status::kRunning:
+        return Status::kRunning;
+      default:
+        throwImpossibleStatus("Selector", status);
+    }
+  }
+  current_ = 0;
+  return Status::kFailure;
+}
+
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,25 @@
+#include "roomba_rrt/bt/sequence_node.h"
+
+namespace roomba_rrt::bt {
+
+Status SequenceNode::onTick() {
+  while (current_ < children_.size()) {
+    const Status status = children_[current_]->tick();
+    switch (status) {
+      case Status::kSuccess:
+        ++current_;  // enter and tick the next child in this same tick
+        break;
+      case Status::kFailure:
+        current_ = 0;
+        return Status::kFailure;
+      case Status::kRunning:
+        return Status::kRunning;
+      default:
+        throwImpossibleStatus("Sequence", status);
+    }
+  }
+  current_ = 0;
+  return Status::kSuccess;
+}
+
+}  // namespace roomba_rrt::bt

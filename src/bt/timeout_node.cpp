@@ -1,0 +1,29 @@
+#include "roomba_rrt/bt/timeout_node.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace roomba_rrt::bt {
+
+TimeoutNode::TimeoutNode(std::string name, long ticks)
+    : DecoratorNode(std::move(name)), ticks_(ticks) {
+  if (ticks < 1) throw std::invalid_argument("ticks must be >= 1, got " + std::to_string(ticks));
+}
+
+Status TimeoutNode::onTick() {
+  const Status status = child_->tick();
+  ++elapsed_;
+  switch (status) {
+    case Status::kSuccess:
+    case Status::kFailure:
+      return status;
+    case Status::kRunning:
+      if (elapsed_ < ticks_) return Status::kRunning;
+      child_->halt();
+      return Status::kFailure;
+    default:
+      throwImpossibleStatus("Timeout", status);
+  }
+}
+
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,61 @@
+// The behaviour parameters: lab defaults, the YAML file, and errors that name the field.
+#include <gtest/gtest.h>
+
+#include "roomba_rrt/behavior/roomba_params.h"
+
+namespace roomba_rrt::behavior {
+namespace {
+
+std::string errorOf(const std::string& yaml) {
+  try {
+    parseRoombaParams(yaml, "test.yaml");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(RoombaParams, the_defaults_are_the_lab_constants_in_ticks) {
+  const RoombaParams p;
+  EXPECT_EQ(p.ticks(p.move_forward_time), 180);
+  EXPECT_EQ(p.ticks(p.move_in_spiral_time), 1200);
+  EXPECT_EQ(p.ticks(p.go_back_time), 30);
+  EXPECT_DOUBLE_EQ(p.sampleTime(), 1.0 / 60.0);
+}
+
+TEST(RoombaParams, the_config_file_holds_the_lab_constants) {
+  const RoombaParams file = loadRoombaParams(ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml");
+  const RoombaParams lab;
+  EXPECT_EQ(file.move_forward_time, lab.move_forward_time);
+  EXPECT_EQ(file.move_in_spiral_time, lab.move_in_spiral_time);
+  EXPECT_EQ(file.go_back_time, lab.go_back_time);
+  EXPECT_EQ(file.forward_speed, lab.forward_speed);
+  EXPECT_EQ(file.backward_speed, lab.backward_speed);
+  EXPECT_EQ(file.angular_speed, lab.angular_speed);
+  EXPECT_EQ(file.initial_radius_spiral, lab.initial_radius_spiral);
+  EXPECT_EQ(file.spiral_factor, lab.spiral_factor);
+  EXPECT_EQ(file.rate, lab.rate);
+}
+
+TEST(RoombaParams, missing_keys_keep_their_defaults) {
+  const RoombaParams p = parseRoombaParams("forward_speed: 0.3\n");
+  EXPECT_EQ(p.forward_speed, 0.3);
+  EXPECT_EQ(p.angular_speed, 0.5);
+}
+
+TEST(RoombaParams, errors_name_the_source_and_the_field) {
+  EXPECT_EQ(errorOf("forward_sped: 0.3"), "test.yaml: unknown parameter 'forward_sped'");
+  EXPECT_EQ(errorOf("angular_speed: fast"), "test.yaml: angular_speed must be a number");
+  EXPECT_EQ(errorOf("angular_speed: 0"), "test.yaml: angular_speed must be > 0, got 0");
+  EXPECT_EQ(errorOf("backward_speed: 0.1"),
+            "test.yaml: backward_speed must be < 0 (it drives backwards), got 0.1");
+  EXPECT_EQ(errorOf("rate: .nan"), "test.yaml: rate must be finite, got nan");
+  EXPECT_EQ(errorOf("[1, 2]"), "test.yaml: the top level must be a map of parameters");
+}
+
+TEST(RoombaParams, an_unreadable_file_is_named) {
+  EXPECT_THROW(loadRoombaParams("/nonexistent.yaml"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace roomba_rrt::behavior
