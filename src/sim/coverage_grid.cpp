@@ -19,6 +19,25 @@ bool insideFurniture(const World& world, double x, double y) {
   return false;
 }
 
+// floor and ceil without a libm call (the baseline x86-64 target has no SSE4.1 rounding), for
+// the values near the grid's range this code needs.
+int floorToInt(double v) {
+  const int i = static_cast<int>(v);
+  return i - (i > v);
+}
+int ceilToInt(double v) {
+  const int i = static_cast<int>(v);
+  return i + (i < v);
+}
+
+/// Number of set bits; a moving disc adds only a few cells per row, so this loop is short (and
+/// needs no popcnt instruction, which the baseline x86-64 target lacks).
+int countBits(std::uint64_t bits) {
+  int count = 0;
+  for (; bits != 0; bits &= bits - 1) ++count;
+  return count;
+}
+
 /// Bits first..last (inclusive) of one 64-bit word.
 std::uint64_t spanMask(int first, int last) {
   const std::uint64_t upto_last = last == kBitsPerWord - 1 ? ~0ULL : (1ULL << (last + 1)) - 1;
@@ -29,6 +48,7 @@ std::uint64_t spanMask(int first, int last) {
 
 CoverageGrid::CoverageGrid(const World& world)
     : cell_(world.coverage_cell_size),
+      inverse_cell_(1.0 / cell_),
       columns_(static_cast<int>(std::ceil(world.width / cell_ - 1e-9))),
       rows_(static_cast<int>(std::ceil(world.height / cell_ - 1e-9))),
       words_per_row_((columns_ + kBitsPerWord - 1) / kBitsPerWord),
@@ -46,25 +66,35 @@ CoverageGrid::CoverageGrid(const World& world)
 }
 
 void CoverageGrid::markDisc(double x, double y, double r) {
-  // Rows whose centre line (row + 0.5)·c is within r of y.
-  const int first_row = std::max(0, static_cast<int>(std::ceil((y - r) / cell_ - 0.5)));
-  const int last_row = std::min(rows_ - 1, static_cast<int>(std::floor((y + r) / cell_ - 0.5)));
-  for (int row = first_row; row <= last_row; ++row) {
-    const double dy = (row + 0.5) * cell_ - y;
-    const double half_chord2 = r * r - dy * dy;
-    if (half_chord2 < 0) continue;
-    const double half_chord = std::sqrt(half_chord2);
-    const int first = std::max(0, static_cast<int>(std::ceil((x - half_chord) / cell_ - 0.5)));
-    const int last =
-        std::min(columns_ - 1, static_cast<int>(std::floor((x + half_chord) / cell_ - 0.5)));
-    std::uint64_t* swept = &swept_[row * words_per_row_];
-    const std::uint64_t* free = &free_[row * words_per_row_];
-    for (int word = first / kBitsPerWord; word <= last / kBitsPerWord && first <= last; ++word) {
-      const int lo = std::max(first, word * kBitsPerWord) - word * kBitsPerWord;
-      const int hi = std::min(last, word * kBitsPerWord + kBitsPerWord - 1) - word * kBitsPerWord;
-      const std::uint64_t fresh = spanMask(lo, hi) & ~swept[word];
-      swept_free_count_ += __builtin_popcountll(fresh & free[word]);
-      swept[word] |= fresh;
+  // In cell units, cell (i, j) has its centre at (i + 0.5, j + 0.5).
+  const double cx = x * inverse_cell_ - 0.5, cy = y * inverse_cell_ - 0.5, cr = r * inverse_cell_;
+  // Rows whose centre line is within r of y.
+  const int last_row = std::min(rows_ - 1, floorToInt(cy + cr));
+  for (int first_row = std::max(0, ceilToInt(cy - cr)); first_row <= last_row;
+       first_row += kRowsPerBatch) {
+    markRows(first_row, std::min(last_row - first_row + 1, kRowsPerBatch), cx, cy, cr);
+  }
+}
+
+void CoverageGrid::markRows(int first_row, int row_count, double cx, double cy, double cr) {
+  // Pass 1, independent per row (the compiler vectorises it): each row's half chord.
+  double half_chord[kRowsPerBatch];
+  for (int k = 0; k < row_count; ++k) {
+    const double dy = first_row + k - cy;
+    half_chord[k] = std::sqrt(std::max(cr * cr - dy * dy, 0.0));
+  }
+  // Pass 2: set the row's span of cells, counting the free ones swept for the first time.
+  for (int k = 0; k < row_count; ++k) {
+    const int first = std::max(0, ceilToInt(cx - half_chord[k]));
+    const int last = std::min(columns_ - 1, floorToInt(cx + half_chord[k]));
+    if (first > last) continue;
+    const std::size_t row_start = static_cast<std::size_t>(first_row + k) * words_per_row_;
+    for (int word = first / kBitsPerWord; word <= last / kBitsPerWord; ++word) {
+      const int lo = std::max(first - word * kBitsPerWord, 0);
+      const int hi = std::min(last - word * kBitsPerWord, kBitsPerWord - 1);
+      const std::uint64_t fresh = spanMask(lo, hi) & ~swept_[row_start + word];
+      swept_[row_start + word] |= fresh;
+      swept_free_count_ += countBits(fresh & free_[row_start + word]);
     }
   }
 }

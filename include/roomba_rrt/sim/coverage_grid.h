@@ -42,8 +42,12 @@ class CoverageGrid {
 
  private:
   bool test(const std::vector<std::uint64_t>& bits, int column, int row) const;
+  /// markDisc for rows first_row … first_row + row_count − 1 (≤ kRowsPerBatch), in cell units.
+  void markRows(int first_row, int row_count, double cx, double cy, double cr);
+  static constexpr int kRowsPerBatch = 32;  ///< the robot's disc spans 14 rows of 2.5 cm
 
   double cell_;
+  double inverse_cell_;
   int columns_;
   int rows_;
   int words_per_row_;
