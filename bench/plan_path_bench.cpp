@@ -1,0 +1,169 @@
+// plan_path_bench: round trip of the rrt_planner's ~plan_path service (client call -> response),
+// compared with the planning time the node reports, over many calls of one lab scenario.
+//
+//   rosrun roomba_rrt rrt_planner &          # with a master running
+//   rosrun roomba_rrt plan_path_bench [--calls 1000] [--warmup 100] [--scenario a]
+//                                     [--service /rrt_planner/plan_path] [--no-markers] [--json]
+//
+// By default the bench subscribes to ~tree, so every plan's markers are serialised and sent as
+// they would be to rviz. It measures two kinds of client: a persistent connection (one TCP
+// connection for all calls, what a planning loop would use) and a fresh connection per call
+// (what `rosservice call` or ros::service::call does). Prints p50/p99 of the round trip, of the
+// planning time and of their difference (the service's overhead).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <roomba_rrt/PlanPath.h>
+
+namespace {
+
+struct Options {
+  int calls = 1000;
+  int warmup = 100;
+  std::string scenario = "a";
+  std::string service = "/rrt_planner/plan_path";
+  bool markers = true;
+  bool json = false;
+};
+
+[[noreturn]] void usage(const std::string& error) {
+  std::cerr << "plan_path_bench: " << error
+            << "\nusage: plan_path_bench [--calls N] [--warmup N] [--scenario NAME] "
+               "[--service NAME] [--no-markers] [--json]\n";
+  std::exit(2);
+}
+
+Options parseOptions(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--calls") {
+      o.calls = std::atoi(value().c_str());
+    } else if (arg == "--warmup") {
+      o.warmup = std::atoi(value().c_str());
+    } else if (arg == "--scenario") {
+      o.scenario = value();
+    } else if (arg == "--service") {
+      o.service = value();
+    } else if (arg == "--no-markers") {
+      o.markers = false;
+    } else if (arg == "--json") {
+      o.json = true;
+    } else {
+      usage("unknown argument " + arg);
+    }
+  }
+  if (o.calls < 1 || o.warmup < 0) usage("--calls must be >= 1 and --warmup >= 0");
+  return o;
+}
+
+// Nearest-rank percentile of microsecond samples.
+double percentile(std::vector<double> samples, double p) {
+  std::sort(samples.begin(), samples.end());
+  const auto rank = static_cast<std::size_t>(p / 100.0 * (samples.size() - 1) + 0.5);
+  return samples[std::min(rank, samples.size() - 1)];
+}
+
+struct Series {
+  std::string client;  // "persistent" or "per_call"
+  std::vector<double> round_trip_us, planning_us, overhead_us;
+};
+
+// Calls the service `warmup + calls` times and records the last `calls`.
+Series measure(const Options& o, bool persistent) {
+  Series s;
+  s.client = persistent ? "persistent" : "per_call";
+  ros::NodeHandle nh;
+  ros::ServiceClient client = nh.serviceClient<roomba_rrt::PlanPath>(o.service, persistent);
+  roomba_rrt::PlanPath srv;
+  srv.request.scenario = o.scenario;
+  for (int i = 0; i < o.warmup + o.calls; ++i) {
+    const auto begin = std::chrono::steady_clock::now();
+    const bool ok = client.call(srv);
+    const auto end = std::chrono::steady_clock::now();
+    if (!ok || !srv.response.success) {
+      std::cerr << "plan_path_bench: call " << i << (ok ? " answered: " : " failed")
+                << (ok ? srv.response.message : "") << "\n";
+      std::exit(1);
+    }
+    if (i < o.warmup) continue;
+    const double round_trip = std::chrono::duration<double, std::micro>(end - begin).count();
+    const double planning = srv.response.planning_time * 1e6;
+    s.round_trip_us.push_back(round_trip);
+    s.planning_us.push_back(planning);
+    s.overhead_us.push_back(round_trip - planning);
+  }
+  return s;
+}
+
+void printTable(const Options& o, const std::vector<Series>& all) {
+  std::printf("~plan_path round trip, scenario %s, %d calls (after %d warm-up), markers %s\n\n",
+              o.scenario.c_str(), o.calls, o.warmup, o.markers ? "subscribed" : "not subscribed");
+  std::printf("| client | round trip p50 | p99 | planning p50 | p99 | overhead p50 | p99 |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const Series& s : all) {
+    std::printf("| %s | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us |\n",
+                s.client.c_str(), percentile(s.round_trip_us, 50), percentile(s.round_trip_us, 99),
+                percentile(s.planning_us, 50), percentile(s.planning_us, 99),
+                percentile(s.overhead_us, 50), percentile(s.overhead_us, 99));
+  }
+}
+
+void printJson(const Options& o, const std::vector<Series>& all) {
+  std::printf("[");
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Series& s = all[i];
+    std::printf(
+        "%s{\"scenario\": \"%s\", \"client\": \"%s\", \"calls\": %d, \"markers\": %s, "
+        "\"round_trip_p50_us\": %.1f, \"round_trip_p99_us\": %.1f, \"planning_p50_us\": %.1f, "
+        "\"planning_p99_us\": %.1f, \"overhead_p50_us\": %.1f, \"overhead_p99_us\": %.1f}",
+        i == 0 ? "" : ", ", o.scenario.c_str(), s.client.c_str(), o.calls,
+        o.markers ? "true" : "false", percentile(s.round_trip_us, 50),
+        percentile(s.round_trip_us, 99), percentile(s.planning_us, 50),
+        percentile(s.planning_us, 99), percentile(s.overhead_us, 50),
+        percentile(s.overhead_us, 99));
+  }
+  std::printf("]\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "plan_path_bench", ros::init_options::AnonymousName);
+  const Options o = parseOptions(argc, argv);
+  ros::NodeHandle nh;
+  if (!ros::service::waitForService(o.service, ros::Duration(30))) {
+    std::cerr << "plan_path_bench: " << o.service << " is not offered (is rrt_planner running?)\n";
+    return 1;
+  }
+  // Receive the markers as rviz would, so the node's publishing is part of what is measured.
+  ros::Subscriber tree;
+  ros::AsyncSpinner spinner(1);
+  if (o.markers) {
+    const std::string topic = o.service.substr(0, o.service.rfind('/')) + "/tree";
+    const boost::function<void(const visualization_msgs::MarkerArrayConstPtr&)> ignore =
+        [](const visualization_msgs::MarkerArrayConstPtr&) {};
+    tree = nh.subscribe<visualization_msgs::MarkerArray>(topic, 10, ignore);
+    spinner.start();
+    for (int i = 0; i < 100 && tree.getNumPublishers() == 0; ++i) ros::WallDuration(0.05).sleep();
+  }
+  const std::vector<Series> all = {measure(o, /*persistent=*/true), measure(o, false)};
+  if (o.json) {
+    printJson(o, all);
+  } else {
+    printTable(o, all);
+  }
+  return 0;
+}

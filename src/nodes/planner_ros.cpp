@@ -1,0 +1,266 @@
+#include "planner_ros.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace roomba_rrt::planner_node {
+namespace {
+
+using planning::Point2;
+using visualization_msgs::Marker;
+
+planning::Point2 toPoint2(const geometry_msgs::Point& p) { return {p.x, p.y}; }
+
+geometry_msgs::Point toPointMsg(const Point2& p, double z = 0.0) {
+  geometry_msgs::Point msg;
+  msg.x = p.x;
+  msg.y = p.y;
+  msg.z = z;
+  return msg;
+}
+
+// The request's rule: a field left at zero takes the node's value. NaN is not zero, so it reaches
+// planning::validate, which names the field.
+template <typename T>
+T orDefault(T value, T fallback) {
+  return value == T{} ? fallback : value;
+}
+
+bool isUnset(const geometry_msgs::Point& p) { return p.x == 0 && p.y == 0; }  // z is ignored
+
+bool boundsGiven(const PlanPath::Request& r) {
+  return r.x_min != 0 || r.x_max != 0 || r.y_min != 0 || r.y_max != 0;
+}
+
+// The first request field that states geometry explicitly, or "" when none does.
+std::string explicitGeometryField(const PlanPath::Request& r) {
+  if (!isUnset(r.start)) return "start";
+  if (!isUnset(r.goal)) return "goal";
+  if (!r.obstacles.empty()) return "obstacles";
+  if (boundsGiven(r)) return "x_min/x_max/y_min/y_max";
+  return "";
+}
+
+// z is not part of the planning problem, but a NaN there is still bad input.
+std::string nonFiniteHeight(const PlanPath::Request& r) {
+  if (!std::isfinite(r.start.z)) return "start.z: must be finite";
+  if (!std::isfinite(r.goal.z)) return "goal.z: must be finite";
+  for (std::size_t i = 0; i < r.obstacles.size(); ++i) {
+    if (!std::isfinite(r.obstacles[i].center.z)) {
+      return "obstacles[" + std::to_string(i) + "].center.z: must be finite";
+    }
+  }
+  return "";
+}
+
+std::string knownScenarios(const std::map<std::string, planning::Problem>& scenarios) {
+  std::string names;
+  for (const auto& entry : scenarios) names += (names.empty() ? "" : ", ") + entry.first;
+  return names.empty() ? "none loaded" : names;
+}
+
+// Start, goal, obstacles and bounds: from the named scenario, or from the request with the
+// node's defaults for what it leaves out. Returns "" or an error naming the field.
+std::string resolveGeometry(const PlanPath::Request& r, const NodeDefaults& defaults,
+                            const std::map<std::string, planning::Problem>& scenarios,
+                            planning::Problem* problem) {
+  if (!r.scenario.empty()) {
+    const auto found = scenarios.find(r.scenario);
+    if (found == scenarios.end()) {
+      return "scenario: unknown '" + r.scenario + "' (known: " + knownScenarios(scenarios) + ")";
+    }
+    const std::string field = explicitGeometryField(r);
+    if (!field.empty()) {
+      return "scenario: cannot be combined with explicit " + field +
+             " (a scenario fills start, goal, obstacles and bounds)";
+    }
+    *problem = found->second;
+    return "";
+  }
+  problem->start = isUnset(r.start) ? defaults.start : toPoint2(r.start);
+  problem->goal = isUnset(r.goal) ? defaults.goal : toPoint2(r.goal);
+  problem->obstacles.clear();
+  for (const auto& obstacle : r.obstacles) {
+    problem->obstacles.push_back({toPoint2(obstacle.center), obstacle.radius});
+  }
+  problem->bounds =
+      boundsGiven(r) ? planning::Bounds{r.x_min, r.x_max, r.y_min, r.y_max} : defaults.bounds;
+  return "";
+}
+
+// Planner options: the node's, overridden by every request field that is set.
+std::string resolveOptions(const PlanPath::Request& r, const NodeDefaults& defaults,
+                           planning::PlannerOptions* options) {
+  *options = defaults.options;
+  options->step = orDefault(r.step, options->step);
+  options->goal_bias = orDefault(r.goal_bias, options->goal_bias);
+  options->max_iterations = orDefault(r.max_iterations, options->max_iterations);
+  options->goal_tolerance = orDefault(r.goal_tolerance, options->goal_tolerance);
+  options->seed = orDefault(r.seed, options->seed);
+  options->smooth = options->smooth || r.smooth;
+  if (!r.algorithm.empty()) {
+    const auto algorithm = planning::parseAlgorithm(r.algorithm);
+    if (!algorithm) {
+      return "algorithm: unknown '" + r.algorithm + "' (expected rrt, rrt_connect or rrt_star)";
+    }
+    options->algorithm = *algorithm;
+  }
+  if (!r.collision_check.empty()) {
+    const auto collision = planning::parseCollisionCheck(r.collision_check);
+    if (!collision) {
+      return "collision_check: unknown '" + r.collision_check + "' (expected points or segments)";
+    }
+    options->collision = *collision;
+  }
+  return "";
+}
+
+std_msgs::ColorRGBA color(float r, float g, float b, float a = 1.0f) {
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+Marker makeMarker(const std::string& frame_id, const ros::Time& stamp, const std::string& ns,
+                  int id, int type, const std_msgs::ColorRGBA& rgba) {
+  Marker m;
+  m.header.frame_id = frame_id;
+  m.header.stamp = stamp;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = Marker::ADD;
+  m.pose.orientation.w = 1.0;  // rviz rejects an all-zero quaternion
+  m.color = rgba;
+  return m;
+}
+
+Marker boundsMarker(const planning::Bounds& b, const Marker& base) {
+  Marker m = base;
+  m.scale.x = 0.04;  // line width
+  const Point2 corners[] = {{b.x_min, b.y_min},
+                            {b.x_max, b.y_min},
+                            {b.x_max, b.y_max},
+                            {b.x_min, b.y_max},
+                            {b.x_min, b.y_min}};
+  for (const Point2& corner : corners) m.points.push_back(toPointMsg(corner));
+  return m;
+}
+
+Marker sphereMarker(const Point2& at, const Marker& base) {
+  Marker m = base;
+  m.pose.position = toPointMsg(at);
+  m.scale.x = m.scale.y = m.scale.z = 0.3;  // diameter
+  return m;
+}
+
+// Edges (two points each) and nodes of the first `max_nodes` nodes of the tree.
+void addTree(const planning::Tree& tree, std::size_t max_nodes, Marker* edges, Marker* nodes) {
+  const std::size_t n = std::min(tree.nodes.size(), max_nodes);
+  edges->points.reserve(2 * n);
+  nodes->points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    nodes->points.push_back(toPointMsg(tree.nodes[i]));
+    const int parent = i < tree.parent.size() ? tree.parent[i] : -1;
+    if (parent < 0 || static_cast<std::size_t>(parent) >= n) continue;
+    edges->points.push_back(toPointMsg(tree.nodes[parent]));
+    edges->points.push_back(toPointMsg(tree.nodes[i]));
+  }
+}
+
+}  // namespace
+
+ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
+                               const std::map<std::string, planning::Problem>& scenarios) {
+  ResolvedRequest resolved;
+  resolved.error = nonFiniteHeight(request);
+  if (resolved.error.empty()) {
+    resolved.error = resolveGeometry(request, defaults, scenarios, &resolved.problem);
+  }
+  if (resolved.error.empty()) resolved.error = resolveOptions(request, defaults, &resolved.options);
+  if (resolved.error.empty()) {
+    resolved.error =
+        planning::validate(resolved.problem, resolved.options, defaults.max_iterations_cap);
+  }
+  return resolved;
+}
+
+nav_msgs::Path toPathMessage(const std::vector<Point2>& path, const std::string& frame_id,
+                             const ros::Time& stamp) {
+  nav_msgs::Path msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  msg.poses.reserve(path.size());
+  for (const Point2& p : path) {
+    geometry_msgs::PoseStamped pose;
+    pose.header = msg.header;
+    pose.pose.position = toPointMsg(p);
+    pose.pose.orientation.w = 1.0;
+    msg.poses.push_back(pose);
+  }
+  return msg;
+}
+
+void fillResponse(const planning::PlanResult& result, const std::string& frame_id,
+                  const ros::Time& stamp, PlanPath::Response* response) {
+  response->success = result.success;
+  response->message = result.message;
+  response->path = toPathMessage(result.path, frame_id, stamp);
+  response->length = result.length;
+  response->iterations = result.iterations;
+  response->tree_size = static_cast<int>(result.tree.nodes.size());
+  response->planning_time = result.planning_time;
+}
+
+visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::string& frame_id,
+                                          const ros::Time& stamp) {
+  visualization_msgs::MarkerArray array;
+  Marker clear;
+  clear.header.frame_id = frame_id;
+  clear.header.stamp = stamp;
+  clear.action = Marker::DELETEALL;
+  array.markers.push_back(clear);
+
+  const planning::Problem& problem = *scene.problem;
+  array.markers.push_back(boundsMarker(
+      problem.bounds,
+      makeMarker(frame_id, stamp, "bounds", 0, Marker::LINE_STRIP, color(0.1f, 0.1f, 0.1f))));
+  for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
+    const planning::Circle& obstacle = problem.obstacles[i];
+    Marker m = makeMarker(frame_id, stamp, "obstacles", static_cast<int>(i), Marker::CYLINDER,
+                          color(0.35f, 0.35f, 0.35f));
+    m.pose.position = toPointMsg(obstacle.center, -0.05);
+    m.scale.x = m.scale.y = 2.0 * obstacle.radius;
+    m.scale.z = 0.1;  // a flat disc just below the tree
+    array.markers.push_back(m);
+  }
+  array.markers.push_back(sphereMarker(
+      problem.start,
+      makeMarker(frame_id, stamp, "start", 0, Marker::SPHERE, color(0.1f, 0.7f, 0.1f))));
+  array.markers.push_back(sphereMarker(
+      problem.goal,
+      makeMarker(frame_id, stamp, "goal", 0, Marker::SPHERE, color(0.9f, 0.5f, 0.0f))));
+
+  Marker edges =
+      makeMarker(frame_id, stamp, "edges", 0, Marker::LINE_LIST, color(0.2f, 0.4f, 1.0f, 0.8f));
+  edges.scale.x = 0.015;
+  Marker nodes = makeMarker(frame_id, stamp, "nodes", 0, Marker::POINTS, color(0.0f, 0.1f, 0.6f));
+  nodes.scale.x = nodes.scale.y = 0.04;
+  if (scene.tree != nullptr) addTree(*scene.tree, scene.max_tree_nodes, &edges, &nodes);
+  if (!edges.points.empty()) array.markers.push_back(std::move(edges));
+  if (!nodes.points.empty()) array.markers.push_back(std::move(nodes));
+
+  if (scene.path != nullptr && scene.path->size() >= 2) {
+    Marker path =
+        makeMarker(frame_id, stamp, "path", 0, Marker::LINE_STRIP, color(0.9f, 0.1f, 0.1f));
+    path.scale.x = 0.06;
+    for (const Point2& p : *scene.path) path.points.push_back(toPointMsg(p, 0.01));
+    array.markers.push_back(std::move(path));
+  }
+  return array;
+}
+
+}  // namespace roomba_rrt::planner_node

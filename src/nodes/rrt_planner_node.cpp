@@ -1,0 +1,193 @@
+// rrt_planner: the RRT planning library as a ROS service.
+//
+// Serves ~plan_path (roomba_rrt/PlanPath); after every plan publishes the tree, obstacles, start,
+// goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
+// (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
+// are served by several threads, so a long plan does not hold up other clients. Parameters and
+// examples: doc/planner_node.md.
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nav_msgs/Path.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <roomba_rrt/PlanPath.h>
+#include <roomba_rrt/planning/planner.h>
+
+#include "planner_ros.h"
+
+namespace roomba_rrt::planner_node {
+namespace {
+
+template <typename T>
+T param(const ros::NodeHandle& pnh, const std::string& name, const T& fallback) {
+  T value;
+  return pnh.param(name, value, fallback) ? value : fallback;
+}
+
+planning::Point2 pointParam(const ros::NodeHandle& pnh, const std::string& name,
+                            const planning::Point2& fallback) {
+  const auto xy = param(pnh, name, std::vector<double>{fallback.x, fallback.y});
+  if (xy.size() != 2) throw std::invalid_argument("~" + name + ": expected [x, y]");
+  return {xy[0], xy[1]};
+}
+
+// The node's defaults for every request field left at zero or empty. The code's fallbacks are
+// the library's (the lab's) values; config/rrt_planner.yaml spells them out.
+NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
+  NodeDefaults d;
+  d.start = pointParam(pnh, "start", d.start);
+  d.goal = pointParam(pnh, "goal", d.goal);
+  d.bounds.x_min = param(pnh, "x_min", d.bounds.x_min);
+  d.bounds.x_max = param(pnh, "x_max", d.bounds.x_max);
+  d.bounds.y_min = param(pnh, "y_min", d.bounds.y_min);
+  d.bounds.y_max = param(pnh, "y_max", d.bounds.y_max);
+  planning::PlannerOptions& o = d.options;
+  o.step = param(pnh, "step", o.step);
+  o.goal_bias = param(pnh, "goal_bias", o.goal_bias);
+  o.max_iterations = param(pnh, "max_iterations", o.max_iterations);
+  o.goal_tolerance = param(pnh, "goal_tolerance", o.goal_tolerance);
+  o.seed = static_cast<std::uint32_t>(param(pnh, "seed", static_cast<int>(o.seed)));
+  o.smooth = param(pnh, "smooth", o.smooth);
+  const auto algorithm = param<std::string>(pnh, "algorithm", planning::toString(o.algorithm));
+  const auto parsed_algorithm = planning::parseAlgorithm(algorithm);
+  if (!parsed_algorithm) throw std::invalid_argument("~algorithm: unknown '" + algorithm + "'");
+  o.algorithm = *parsed_algorithm;
+  const auto collision =
+      param<std::string>(pnh, "collision_check", planning::toString(o.collision));
+  const auto parsed_collision = planning::parseCollisionCheck(collision);
+  if (!parsed_collision) {
+    throw std::invalid_argument("~collision_check: unknown '" + collision + "'");
+  }
+  o.collision = *parsed_collision;
+  const auto nearest = param<std::string>(pnh, "nearest", planning::toString(o.nearest));
+  const auto parsed_nearest = planning::parseNearestSearch(nearest);
+  if (!parsed_nearest) throw std::invalid_argument("~nearest: unknown '" + nearest + "'");
+  o.nearest = *parsed_nearest;
+  d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
+  if (d.max_iterations_cap < 1) throw std::invalid_argument("~max_iterations_cap: must be >= 1");
+  // The defaults must make a valid request on their own (the empty request plans with them).
+  const planning::Problem problem{d.start, d.goal, {}, d.bounds};
+  const std::string error = planning::validate(problem, o, d.max_iterations_cap);
+  if (!error.empty()) throw std::invalid_argument("parameter ~" + error);
+  return d;
+}
+
+class RrtPlannerNode {
+ public:
+  explicit RrtPlannerNode(ros::NodeHandle& pnh) : defaults_(loadDefaults(pnh)) {
+    const std::string scenarios_file = param<std::string>(
+        pnh, "scenarios_file", ros::package::getPath("roomba_rrt") + "/config/rrt_scenarios.yaml");
+    scenarios_ = planning::loadScenarios(scenarios_file);  // throws with the reason
+    frame_id_ = param<std::string>(pnh, "frame_id", "map");
+    max_marker_nodes_ = param(pnh, "max_marker_nodes", 200000);
+    animate_ = param(pnh, "animate", false);
+    animate_every_ = param(pnh, "animate_every", 10);
+    const double animate_rate = param(pnh, "animate_rate", 20.0);
+    if (max_marker_nodes_ < 0) throw std::invalid_argument("~max_marker_nodes: must be >= 0");
+    if (animate_every_ < 1) throw std::invalid_argument("~animate_every: must be >= 1");
+    if (!(animate_rate > 0)) throw std::invalid_argument("~animate_rate: must be > 0");
+    animate_period_ = ros::WallDuration(1.0 / animate_rate);
+
+    tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);
+    path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
+    service_ = pnh.advertiseService("plan_path", &RrtPlannerNode::planPath, this);
+    ROS_INFO_STREAM("rrt_planner: serving " << service_.getService() << " with "
+                                            << scenarios_.size() << " scenarios from "
+                                            << scenarios_file);
+  }
+
+ private:
+  // Called concurrently by the spinner's threads: touches only const members and thread-safe
+  // publishers, so one long plan never holds up another request.
+  bool planPath(PlanPath::Request& request, PlanPath::Response& response) {
+    response.success = false;
+    response.length = std::numeric_limits<double>::infinity();
+    response.path.header.frame_id = frame_id_;
+    const ResolvedRequest resolved = resolveRequest(request, defaults_, scenarios_);
+    if (!resolved.error.empty()) {
+      response.message = resolved.error;
+      ROS_WARN_STREAM("plan_path: rejected: " << resolved.error);
+      return true;  // the client gets success: false and the message
+    }
+    try {
+      const planning::PlanResult result = plan(resolved);
+      const ros::Time stamp = ros::Time::now();
+      fillResponse(result, frame_id_, stamp, &response);
+      tree_pub_.publish(markers(resolved.problem, result.tree, &result.path, stamp));
+      path_pub_.publish(response.path);
+      ROS_DEBUG_STREAM("plan_path: " << (result.success ? "found" : "no path") << ", length "
+                                     << result.length << ", " << result.iterations
+                                     << " iterations, " << result.tree.nodes.size() << " nodes");
+    } catch (const std::exception& e) {
+      response.success = false;
+      response.message = std::string("planner error: ") + e.what();
+      ROS_ERROR_STREAM("plan_path: " << response.message);
+    }
+    return true;
+  }
+
+  planning::PlanResult plan(const ResolvedRequest& resolved) const {
+    if (!animate_) return planning::plan(resolved.problem, resolved.options);
+    // Animation: publish the growing tree every ~animate_every iterations, at most
+    // ~animate_rate times a second (the plan waits for the next frame so rviz can follow).
+    ros::WallTime next_frame = ros::WallTime::now();
+    const auto on_progress = [&](const planning::Tree& tree, int /*iteration*/) {
+      const ros::WallDuration wait = next_frame - ros::WallTime::now();
+      if (wait > ros::WallDuration(0)) wait.sleep();
+      tree_pub_.publish(markers(resolved.problem, tree, nullptr, ros::Time::now()));
+      next_frame = ros::WallTime::now() + animate_period_;
+    };
+    return planning::plan(resolved.problem, resolved.options, on_progress, animate_every_);
+  }
+
+  visualization_msgs::MarkerArray markers(const planning::Problem& problem,
+                                          const planning::Tree& tree,
+                                          const std::vector<planning::Point2>* path,
+                                          const ros::Time& stamp) const {
+    MarkerScene scene;
+    scene.problem = &problem;
+    scene.tree = &tree;
+    scene.path = path;
+    scene.max_tree_nodes = static_cast<std::size_t>(max_marker_nodes_);
+    return toMarkers(scene, frame_id_, stamp);
+  }
+
+  const NodeDefaults defaults_;
+  std::map<std::string, planning::Problem> scenarios_;
+  std::string frame_id_;
+  int max_marker_nodes_ = 0;
+  bool animate_ = false;
+  int animate_every_ = 1;
+  ros::WallDuration animate_period_;
+  ros::Publisher tree_pub_;
+  ros::Publisher path_pub_;
+  ros::ServiceServer service_;
+};
+
+}  // namespace
+}  // namespace roomba_rrt::planner_node
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "rrt_planner");
+  ros::NodeHandle pnh("~");
+  try {
+    roomba_rrt::planner_node::RrtPlannerNode node(pnh);
+    // Several threads: each request is planned in its own callback, so a long plan leaves the
+    // other threads free to accept and answer further requests.
+    const int threads = std::max(2, roomba_rrt::planner_node::param(pnh, "threads", 4));
+    ros::AsyncSpinner spinner(threads);
+    spinner.start();
+    ros::waitForShutdown();
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM("rrt_planner: " << e.what());
+    return 1;
+  }
+  return 0;
+}
