@@ -1,1 +1,58 @@
-# benchmarks targets: see CMakeLists.txt
+# Benchmarks and the peer comparison (scripts/bench runs them all and prints one table).
+#
+# Each benchmark is built only when what it needs is installed (Google Benchmark:
+# libbenchmark-dev; OMPL 1.5: libompl-dev, a benchmark-only dependency), and only on request:
+#   cmake --build <build-dir> --target benchmarks
+# The executables land in <build-dir>/devel/lib/roomba_rrt/ like the nodes.
+
+find_package(benchmark QUIET)
+find_package(ompl QUIET)
+
+add_custom_target(benchmarks)
+
+# --- OMPL, through its CMake config -----------------------------------------------------------
+# Debian's ompl.pc is unusable as is (`-L_link_dirs-NOTFOUND`, and `-std=c++14` against our
+# C++17); omplConfig.cmake gives clean variables. Its include list also names /usr/include,
+# which must never become an explicit -I/-isystem (it breaks #include_next in libstdc++).
+if(OMPL_FOUND)
+  set(RR_OMPL_INCLUDE_DIRS ${OMPL_INCLUDE_DIRS})
+  list(REMOVE_ITEM RR_OMPL_INCLUDE_DIRS /usr/include)
+  list(FILTER RR_OMPL_INCLUDE_DIRS EXCLUDE REGEX "NOTFOUND")
+  set(RR_OMPL_LIBRARIES ${OMPL_LIBRARIES})
+  list(FILTER RR_OMPL_LIBRARIES EXCLUDE REGEX "NOTFOUND")
+  message(STATUS "roomba_rrt benchmarks: OMPL ${OMPL_VERSION} found (${OMPL_INCLUDE_DIR})")
+else()
+  message(STATUS "roomba_rrt benchmarks: OMPL not found (libompl-dev); ompl_comparison skipped")
+endif()
+if(NOT benchmark_FOUND)
+  message(STATUS "roomba_rrt benchmarks: Google Benchmark not found (libbenchmark-dev)")
+endif()
+
+# --- RRT against OMPL's RRT -------------------------------------------------------------------
+if(OMPL_FOUND AND TARGET rrt_planning)
+  add_executable(ompl_comparison EXCLUDE_FROM_ALL bench/ompl_comparison.cpp)
+  target_include_directories(ompl_comparison PRIVATE include)
+  target_include_directories(ompl_comparison SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
+  target_link_libraries(ompl_comparison PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
+  target_compile_definitions(ompl_comparison
+    PRIVATE RR_SCENARIOS_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
+  add_dependencies(benchmarks ompl_comparison)
+endif()
+
+# --- the simulator node's real-time factor (a ROS client; needs a running system) -------------
+if(EXISTS ${PROJECT_SOURCE_DIR}/bench/sim_rtf_bench.cpp)
+  add_executable(sim_rtf_bench EXCLUDE_FROM_ALL bench/sim_rtf_bench.cpp)
+  target_include_directories(sim_rtf_bench PRIVATE include ${catkin_INCLUDE_DIRS})
+  target_link_libraries(sim_rtf_bench PRIVATE ${catkin_LIBRARIES})
+  add_dependencies(sim_rtf_bench ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+  add_dependencies(benchmarks sim_rtf_bench)
+endif()
+
+# --- the other parts' benchmarks (declared in their own fragments) ----------------------------
+# `benchmarks` builds them too, plus the tools scripts/bench runs (the nodes it measures).
+foreach(target IN ITEMS planning_bench behavior_bench sim_bench plan_path_bench
+                        rrt_monte_carlo roomba_sim roomba_fsm rrt_planner)
+  if(TARGET ${target})
+    add_dependencies(benchmarks ${target})
+  endif()
+endforeach()

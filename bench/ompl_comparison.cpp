@@ -1,0 +1,490 @@
+// The lab's RRT (rrt_planning) against OMPL 1.5's stock geometric::RRT, on the same problems with
+// the same parameters and the same collision semantics, timed in the same process.
+//
+//   ompl_comparison                      scenarios a-d x {points, segments} and the growth rows,
+//                                        as a Markdown table
+//   ompl_comparison --json               the same figures as JSON (read by scripts/bench)
+//   ompl_comparison --runs 500 --warmup 20 --growth 10000,100000,1000000 --growth-reps 3
+//   ompl_comparison --plan-once ours|ompl --iterations 1000000
+//                                        one growth plan, nothing else (for peak-RSS figures)
+//
+// Both sides get: step (OMPL's range) 0.2, goal bias 0.1, goal tolerance 1e-3 (OMPL's GoalState
+// threshold), at most N iterations (OMPL's IterationTerminationCondition), the box bounds, and
+// the planning library's own CollisionChecker as the motion test (OMPL: a MotionValidator):
+//   points    a motion is valid when its end state is free (the lab's "for simplicity" check);
+//   segments  a motion is valid when the segment misses every circle (exact segment-circle test).
+// Growth rows: scenario d's world with a goal that is never accepted (the library's
+// goal_tolerance 0; for OMPL a GoalState whose isSatisfied() is always false), so both planners
+// run exactly N iterations while the goal bias still pulls one sample in ten towards (9, 1).
+// One difference remains by design and is reported next to the table: OMPL samples the whole box
+// and discards steps that end in an obstacle, while the lab rejection-samples the free space.
+// This changes the success rates (mostly on scenario d), not the work done per iteration.
+#include <ompl/base/Goal.h>
+#include <ompl/base/MotionValidator.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/config.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "roomba_rrt/planning/collision_checker.h"
+#include "roomba_rrt/planning/planner.h"
+
+namespace {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+namespace rp = roomba_rrt::planning;
+
+// Debian's OMPL leaves OMPL_VERSION empty; the numeric parts are right.
+const std::string kOmplVersion = std::to_string(OMPL_MAJOR_VERSION) + "." +
+                                 std::to_string(OMPL_MINOR_VERSION) + "." +
+                                 std::to_string(OMPL_PATCH_VERSION);
+
+// ---------------------------------------------------------------------------------------------
+// OMPL's side: stock geometric::RRT on a 2-D RealVectorStateSpace.
+
+rp::Point2 point(const ob::State* s) {
+  const double* v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+  return {v[0], v[1]};
+}
+
+/// The lab's motion check for OMPL, by the planning library's own CollisionChecker: only the
+/// end state (points) or the exact segment-circle test (segments); zero-length steps fail.
+class LabMotionValidator : public ob::MotionValidator {
+ public:
+  LabMotionValidator(const ob::SpaceInformationPtr& si, const rp::CollisionChecker& checker)
+      : ob::MotionValidator(si), checker_(checker) {}
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    const rp::Point2 a = point(s1), b = point(s2);
+    // As in the library's extendTree(): a step of length zero (the target is already a tree
+    // node) adds nothing. Without this, OMPL re-inserts the goal once per goal-biased sample
+    // when the goal is never accepted, and its GNAT index degrades on the duplicates.
+    const bool ok = (a.x != b.x || a.y != b.y) && checker_.isMotionFree(a, b);
+    ok ? ++valid_ : ++invalid_;
+    return ok;
+  }
+
+  // Only called by planners that extend greedily (not by RRT); reports the start as last valid.
+  bool checkMotion(const ob::State* s1, const ob::State* s2,
+                   std::pair<ob::State*, double>& last_valid) const override {
+    const bool ok = checkMotion(s1, s2);
+    if (!ok) {
+      if (last_valid.first != nullptr) si_->copyState(last_valid.first, s1);
+      last_valid.second = 0.0;
+    }
+    return ok;
+  }
+
+ private:
+  const rp::CollisionChecker& checker_;
+};
+
+/// The goal with the library's goal_tolerance 0 ("never stops early"): never satisfied, but
+/// still sampled by the goal bias, so the tree keeps growing towards it for all iterations.
+class NeverReachedGoal : public ob::GoalState {
+ public:
+  using ob::GoalState::GoalState;
+  bool isSatisfied(const ob::State* st, double* distance) const override {
+    if (distance != nullptr) *distance = distanceGoal(st);
+    return false;
+  }
+};
+
+struct Solve {
+  bool solved = false;
+  double length = 0;   // path length when solved
+  double seconds = 0;  // wall time of the solve call only
+};
+
+/// OMPL's RRT set up once for one problem; solve() runs a fresh tree each call.
+class OmplLabRrt {
+ public:
+  OmplLabRrt(const rp::Problem& problem, const rp::PlannerOptions& options)
+      : bounds_(problem.bounds), checker_(problem.obstacles, options.collision) {
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0, problem.bounds.x_min);
+    bounds.setHigh(0, problem.bounds.x_max);
+    bounds.setLow(1, problem.bounds.y_min);
+    bounds.setHigh(1, problem.bounds.y_max);
+    space->setBounds(bounds);
+
+    si_ = std::make_shared<ob::SpaceInformation>(space);
+    si_->setStateValidityChecker([this](const ob::State* s) {
+      const rp::Point2 p = point(s);
+      return rp::contains(bounds_, p) && checker_.isFree(p);
+    });
+    si_->setMotionValidator(std::make_shared<LabMotionValidator>(si_, checker_));
+    si_->setup();
+
+    ob::ScopedState<ob::RealVectorStateSpace> start(space), goal(space);
+    start[0] = problem.start.x;
+    start[1] = problem.start.y;
+    goal[0] = problem.goal.x;
+    goal[1] = problem.goal.y;
+    pdef_ = std::make_shared<ob::ProblemDefinition>(si_);
+    pdef_->addStartState(start);
+    auto goal_state = options.goal_tolerance > 0 ? std::make_shared<ob::GoalState>(si_)
+                                                 : std::make_shared<NeverReachedGoal>(si_);
+    goal_state->setState(goal);
+    goal_state->setThreshold(options.goal_tolerance);
+    pdef_->setGoal(goal_state);
+
+    planner_ = std::make_shared<og::RRT>(si_);
+    planner_->setRange(options.step);
+    planner_->setGoalBias(options.goal_bias);
+    planner_->setProblemDefinition(pdef_);
+    planner_->setup();
+  }
+
+  Solve solve(unsigned iterations) {
+    planner_->clear();
+    pdef_->clearSolutionPaths();
+    ob::IterationTerminationCondition stop(iterations);
+    const auto t0 = std::chrono::steady_clock::now();
+    const ob::PlannerStatus status = planner_->solve(stop);
+    const auto t1 = std::chrono::steady_clock::now();
+    Solve out;
+    out.seconds = std::chrono::duration<double>(t1 - t0).count();
+    out.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
+    if (out.solved) out.length = pdef_->getSolutionPath()->length();
+    return out;
+  }
+
+ private:
+  rp::Bounds bounds_;
+  rp::CollisionChecker checker_;
+  ob::SpaceInformationPtr si_;
+  ob::ProblemDefinitionPtr pdef_;
+  std::shared_ptr<og::RRT> planner_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Our side: rrt_planning's plan(), timed the same way.
+
+Solve solveOurs(const rp::Problem& problem, rp::PlannerOptions options, unsigned iterations,
+                std::uint32_t seed) {
+  options.max_iterations = static_cast<int>(iterations);
+  options.seed = seed;
+  const auto t0 = std::chrono::steady_clock::now();
+  const rp::PlanResult result = rp::plan(problem, options);
+  const auto t1 = std::chrono::steady_clock::now();
+  Solve out;
+  out.seconds = std::chrono::duration<double>(t1 - t0).count();
+  out.solved = result.success;
+  if (out.solved) out.length = result.length;
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Statistics and the experiment.
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  const std::size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + mid, v.end());
+  if (v.size() % 2 == 1) return v[mid];
+  return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + mid));
+}
+
+struct Summary {
+  double solved_percent = 0;
+  double mean_length = std::nan("");  // over solved runs
+  double median_seconds = 0;
+};
+
+/// Runs `solve(i)` for i < warmup untimed, then `runs` times, and summarises.
+Summary measure(int warmup, int runs, const std::function<Solve(int)>& solve) {
+  for (int i = 0; i < warmup; ++i) solve(i);
+  std::vector<double> seconds;
+  double length_sum = 0;
+  int solved = 0;
+  for (int i = 0; i < runs; ++i) {
+    const Solve s = solve(warmup + i);
+    seconds.push_back(s.seconds);
+    if (s.solved) {
+      ++solved;
+      length_sum += s.length;
+    }
+  }
+  Summary out;
+  out.solved_percent = runs > 0 ? 100.0 * solved / runs : 0;
+  if (solved > 0) out.mean_length = length_sum / solved;
+  out.median_seconds = median(seconds);
+  return out;
+}
+
+struct ScenarioRow {
+  std::string scenario, mode;
+  Summary ours, ompl;
+};
+
+struct GrowthRow {
+  unsigned iterations = 0;
+  double ours_ns_per_iteration = 0, ompl_ns_per_iteration = 0;
+};
+
+/// The growth rows' options: the lab's, with a goal that is never reached (goal_tolerance 0),
+/// so both planners run exactly the requested number of iterations in scenario d's world.
+rp::PlannerOptions unreachableGoal() {
+  rp::PlannerOptions options;
+  options.goal_tolerance = 0;
+  return options;
+}
+
+struct Config {
+  int runs = 500;
+  int warmup = 20;
+  std::vector<unsigned> growth = {10000, 100000, 1000000};
+  int growth_reps = 3;
+  bool json = false;
+  std::string plan_once;  // "ours" or "ompl"
+  unsigned iterations = 1000000;
+  std::string scenarios_file = rp::defaultScenarioFile();
+};
+
+const char* modeName(rp::CollisionCheck c) {
+  return c == rp::CollisionCheck::kPoints ? "points" : "segments";
+}
+
+std::vector<ScenarioRow> runScenarios(const std::map<std::string, rp::Problem>& scenarios,
+                                      const Config& cfg) {
+  std::vector<ScenarioRow> rows;
+  for (const char* name : {"a", "b", "c", "d"}) {
+    const rp::Problem& problem = scenarios.at(name);
+    for (rp::CollisionCheck mode : {rp::CollisionCheck::kPoints, rp::CollisionCheck::kSegments}) {
+      rp::PlannerOptions options;  // the lab's defaults: step 0.2, bias 0.1, eps 1e-3, 1000 it.
+      options.collision = mode;
+      const unsigned iterations = static_cast<unsigned>(options.max_iterations);
+      ScenarioRow row{name, modeName(mode), {}, {}};
+      OmplLabRrt ompl(problem, options);
+      row.ompl = measure(cfg.warmup, cfg.runs, [&](int) { return ompl.solve(iterations); });
+      row.ours = measure(cfg.warmup, cfg.runs, [&](int i) {
+        return solveOurs(problem, options, iterations, 42u + static_cast<std::uint32_t>(i));
+      });
+      rows.push_back(row);
+      std::cerr << "scenario " << name << " " << modeName(mode) << ": ours "
+                << row.ours.median_seconds * 1e6 << " us, OMPL " << row.ompl.median_seconds * 1e6
+                << " us\n";
+    }
+  }
+  return rows;
+}
+
+std::vector<GrowthRow> runGrowth(const rp::Problem& world, const Config& cfg) {
+  std::vector<GrowthRow> rows;
+  const rp::PlannerOptions options = unreachableGoal();  // points mode, as the lab
+  for (unsigned n : cfg.growth) {
+    OmplLabRrt ompl(world, options);
+    GrowthRow row;
+    row.iterations = n;
+    const int warmup = n <= 100000 ? 1 : 0;
+    row.ompl_ns_per_iteration =
+        measure(warmup, cfg.growth_reps, [&](int) { return ompl.solve(n); }).median_seconds * 1e9 /
+        n;
+    row.ours_ns_per_iteration =
+        measure(warmup, cfg.growth_reps,
+                [&](int i) { return solveOurs(world, options, n, 42u + i); })
+            .median_seconds *
+        1e9 / n;
+    rows.push_back(row);
+    std::cerr << "growth " << n << ": ours " << row.ours_ns_per_iteration << " ns/it, OMPL "
+              << row.ompl_ns_per_iteration << " ns/it\n";
+  }
+  return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output.
+
+std::string num(double v, int precision) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
+               const Config& cfg) {
+  auto side = [](const Summary& s) {
+    return "{\"solved_percent\": " + num(s.solved_percent, 2) +
+           ", \"mean_length\": " + num(s.mean_length, 4) +
+           ", \"median_us\": " + num(s.median_seconds * 1e6, 2) + "}";
+  };
+  std::cout << "{\n  \"runs\": " << cfg.runs << ", \"warmup\": " << cfg.warmup
+            << ", \"ompl_version\": \"" << kOmplVersion << "\",\n  \"scenarios\": [\n";
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    const ScenarioRow& r = scenarios[i];
+    std::cout << "    {\"scenario\": \"" << r.scenario << "\", \"mode\": \"" << r.mode
+              << "\", \"ours\": " << side(r.ours) << ", \"ompl\": " << side(r.ompl) << "}"
+              << (i + 1 < scenarios.size() ? "," : "") << "\n";
+  }
+  std::cout << "  ],\n  \"growth\": [\n";
+  for (std::size_t i = 0; i < growth.size(); ++i) {
+    const GrowthRow& g = growth[i];
+    std::cout << "    {\"iterations\": " << g.iterations
+              << ", \"ours_ns_per_iteration\": " << num(g.ours_ns_per_iteration, 1)
+              << ", \"ompl_ns_per_iteration\": " << num(g.ompl_ns_per_iteration, 1) << "}"
+              << (i + 1 < growth.size() ? "," : "") << "\n";
+  }
+  std::cout << "  ]\n}\n";
+}
+
+void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
+                   const Config& cfg) {
+  std::cout << "RRT vs OMPL " << kOmplVersion << " geometric::RRT (" << cfg.runs
+            << " runs per row after " << cfg.warmup << " warm-up runs; median time per solve)\n\n"
+            << "| scenario | mode | solved % ours | solved % OMPL | mean length ours | "
+               "mean length OMPL | µs ours | µs OMPL | ours/OMPL |\n"
+            << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const ScenarioRow& r : scenarios) {
+    std::cout << "| " << r.scenario << " | " << r.mode << " | " << num(r.ours.solved_percent, 1)
+              << " | " << num(r.ompl.solved_percent, 1) << " | " << num(r.ours.mean_length, 2)
+              << " | " << num(r.ompl.mean_length, 2) << " | " << num(r.ours.median_seconds * 1e6, 1)
+              << " | " << num(r.ompl.median_seconds * 1e6, 1) << " | "
+              << num(r.ours.median_seconds / r.ompl.median_seconds, 3) << " |\n";
+  }
+  std::cout << "\nGrowth (scenario d's world, unreachable goal, points mode; median of "
+            << cfg.growth_reps << ")\n\n"
+            << "| iterations | ns/iteration ours | ns/iteration OMPL | ours/OMPL |\n"
+            << "|---|---|---|---|\n";
+  for (const GrowthRow& g : growth) {
+    std::cout << "| " << g.iterations << " | " << num(g.ours_ns_per_iteration, 1) << " | "
+              << num(g.ompl_ns_per_iteration, 1) << " | "
+              << num(g.ours_ns_per_iteration / g.ompl_ns_per_iteration, 3) << " |\n";
+  }
+  std::cout << "\nOMPL samples the whole box and discards steps that end in an obstacle; the lab "
+               "rejection-samples the free space, so success rates differ (mostly on d).\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line.
+
+[[noreturn]] void usage(const std::string& error) {
+  std::cerr << "ompl_comparison: " << error
+            << "\nusage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
+               " [--growth-reps N] [--scenarios FILE]\n"
+               "       ompl_comparison --plan-once ours|ompl [--iterations N]\n";
+  std::exit(2);
+}
+
+unsigned parseCount(const std::string& flag, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const long v = std::stol(text, &used);
+    if (used == text.size() && v >= 0) return static_cast<unsigned>(v);
+  } catch (const std::exception&) {
+  }
+  usage(flag + ": expected a non-negative integer, got '" + text + "'");
+}
+
+Config parseArgs(int argc, char** argv) {
+  Config cfg;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(arg + ": missing value");
+      return argv[++i];
+    };
+    if (arg == "--json") {
+      cfg.json = true;
+    } else if (arg == "--runs") {
+      cfg.runs = static_cast<int>(parseCount(arg, value()));
+    } else if (arg == "--warmup") {
+      cfg.warmup = static_cast<int>(parseCount(arg, value()));
+    } else if (arg == "--growth-reps") {
+      cfg.growth_reps = std::max(1, static_cast<int>(parseCount(arg, value())));
+    } else if (arg == "--growth") {
+      cfg.growth.clear();
+      std::stringstream list(value());
+      for (std::string item; std::getline(list, item, ',');) {
+        if (!item.empty()) cfg.growth.push_back(parseCount(arg, item));
+      }
+    } else if (arg == "--plan-once") {
+      cfg.plan_once = value();
+      if (cfg.plan_once != "ours" && cfg.plan_once != "ompl") usage("--plan-once: ours or ompl");
+    } else if (arg == "--iterations") {
+      cfg.iterations = parseCount(arg, value());
+    } else if (arg == "--scenarios") {
+      cfg.scenarios_file = value();
+    } else {
+      usage("unknown argument '" + arg + "'");
+    }
+  }
+  if (cfg.runs < 1) usage("--runs: must be at least 1");
+  return cfg;
+}
+
+/// One plan, nothing else, then the process's peak RSS on stdout (MB) and the time on stderr.
+int planOnce(const rp::Problem& world, const Config& cfg) {
+  const rp::PlannerOptions options = unreachableGoal();
+  Solve s;
+  if (cfg.plan_once == "ompl") {
+    OmplLabRrt ompl(world, options);
+    s = ompl.solve(cfg.iterations);
+  } else {
+    s = solveOurs(world, options, cfg.iterations, 42u);
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::cout << "{\"planner\": \"" << cfg.plan_once << "\", \"iterations\": " << cfg.iterations
+            << ", \"seconds\": " << num(s.seconds, 3)
+            << ", \"solved\": " << (s.solved ? "true" : "false")
+            << ", \"peak_rss_mb\": " << num(usage.ru_maxrss / 1024.0, 1) << "}\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Config cfg = parseArgs(argc, argv);
+  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  ompl::RNG::setSeed(42);  // before any planner exists: OMPL seeds every RNG from this one
+
+  std::map<std::string, rp::Problem> scenarios;
+  try {
+    scenarios = rp::loadScenarios(cfg.scenarios_file);
+    for (const char* name : {"a", "b", "c", "d"}) {
+      if (scenarios.count(name) == 0) throw std::runtime_error(std::string("no scenario ") + name);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "ompl_comparison: cannot load scenarios from " << cfg.scenarios_file << ": "
+              << e.what() << "\n";
+    return 1;
+  }
+  const rp::Problem& growth_world = scenarios.at("d");
+  if (!cfg.plan_once.empty()) return planOnce(growth_world, cfg);
+
+  const std::vector<ScenarioRow> rows = runScenarios(scenarios, cfg);
+  const std::vector<GrowthRow> growth = runGrowth(growth_world, cfg);
+  if (cfg.json) {
+    printJson(rows, growth, cfg);
+  } else {
+    printMarkdown(rows, growth, cfg);
+  }
+  return 0;
+}
