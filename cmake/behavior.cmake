@@ -1,1 +1,85 @@
-# behavior targets: see CMakeLists.txt
+# The Roomba behaviours: ROS-free engines (FSM, BT) and the lab's behaviour on both, the
+# roomba_fsm and roomba_bt nodes, the roomba_coverage tool, tests and the tick benchmark.
+
+# tinyxml2 (libtinyxml2-dev) reads the behavior-tree files.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(TINYXML2 REQUIRED IMPORTED_TARGET tinyxml2)
+
+add_library(roomba_behavior_core
+  src/fsm/state_machine.cpp
+  src/bt/status.cpp
+  src/bt/control_node.cpp
+  src/bt/sequence_node.cpp
+  src/bt/selector_node.cpp
+  src/bt/reactive_sequence.cpp
+  src/bt/reactive_selector.cpp
+  src/bt/inverter_node.cpp
+  src/bt/repeat_node.cpp
+  src/bt/retry_node.cpp
+  src/bt/timeout_node.cpp
+  src/bt/tree_factory.cpp
+  src/behavior/roomba_params.cpp
+  src/behavior/roomba_state.cpp
+  src/behavior/motion_primitives.cpp
+  src/behavior/roomba_behavior.cpp
+  src/behavior/roomba_fsm.cpp
+  src/behavior/roomba_tree.cpp
+  src/behavior/roomba_bt.cpp
+)
+target_include_directories(roomba_behavior_core PUBLIC include)
+target_link_libraries(roomba_behavior_core PUBLIC yaml-cpp PRIVATE PkgConfig::TINYXML2)
+
+# The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
+add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp)
+target_include_directories(roomba_behavior_node PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core ${catkin_LIBRARIES})
+add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
+  ${catkin_EXPORTED_TARGETS})
+
+add_executable(roomba_fsm src/nodes/roomba_fsm_node.cpp)
+target_link_libraries(roomba_fsm roomba_behavior_node)
+add_executable(roomba_bt src/nodes/roomba_bt_node.cpp)
+target_link_libraries(roomba_bt roomba_behavior_node)
+
+# Headless coverage experiments: the simulation core and a behaviour in one process.
+add_executable(roomba_coverage src/tools/roomba_coverage.cpp)
+target_link_libraries(roomba_coverage roomba_sim_core roomba_behavior_core PkgConfig::CAIRO)
+target_compile_definitions(roomba_coverage PRIVATE
+  ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(behavior_core_test
+    test/behavior/state_machine_test.cpp
+    test/behavior/control_nodes_test.cpp
+    test/behavior/decorators_test.cpp
+    test/behavior/tree_factory_test.cpp
+    test/behavior/roomba_params_test.cpp
+    test/behavior/roomba_behavior_test.cpp
+    test/behavior/roomba_bt_test.cpp
+    test/behavior/fsm_bt_equivalence_test.cpp
+  )
+  if(TARGET behavior_core_test)
+    target_link_libraries(behavior_core_test roomba_behavior_core gtest_main)
+    target_compile_definitions(behavior_core_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
+  # Through real ROS: roomba_sim at 10x real time with either behaviour node.
+  add_rostest_gtest(behavior_rostest test/behavior/roomba_fsm.test
+    test/behavior/behavior_rostest.cpp)
+  add_rostest(test/behavior/roomba_bt.test DEPENDENCIES behavior_rostest)
+  add_rostest(test/behavior/roomba_behavior_startup.test DEPENDENCIES behavior_rostest)
+  if(TARGET behavior_rostest)
+    target_include_directories(behavior_rostest PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(behavior_rostest ${catkin_LIBRARIES})
+    add_dependencies(behavior_rostest roomba_fsm roomba_bt roomba_sim
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+endif()
+
+# Nanoseconds per tick: the lab tree, the FSM and a hand-written switch (bench/roomba_switch.h).
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(behavior_bench EXCLUDE_FROM_ALL bench/behavior_bench.cpp)
+  target_link_libraries(behavior_bench roomba_behavior_core benchmark::benchmark)
+endif()

@@ -110,6 +110,9 @@ TEST(BehaviorInSim, forward_spiral_bump_back_rotate_and_drive_on_within_90_s_in_
   EXPECT_TRUE(go_back.pressed) << "GoBack began without a bump";
   const double backed = std::hypot(rotate.x - go_back.x, rotate.y - go_back.y);
   EXPECT_NEAR(backed, 0.05, 0.02) << "GoBack should back up about 5 cm";
+  std::printf(
+      "%s: lab sequence complete after %.1f s of robot time, backed up %.3f m; ~state: %s\n",
+      node.c_str(), (ros::Time::now() - start).toSec(), backed, seen.c_str());
 
   ASSERT_GT(observer.odom_count, 100);
   const double tolerance = 1e-3;

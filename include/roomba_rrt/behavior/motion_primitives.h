@@ -39,6 +39,18 @@ class TickCounter {
   long k_ = 0;
 };
 
+/// kBumped when the bumper is pressed, else kTimeUp when `timer` is done (MoveForward,
+/// MoveInSpiral: the bumper has priority over the timer).
+inline MotionEvent bumperThenTimer(const sim::BumperState& bumper, const TickCounter& timer) {
+  if (bumper.pressed) return MotionEvent::kBumped;
+  return timer.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+}
+
+/// kTimeUp when `timer` is done (GoBack, Rotate: the bumper is ignored).
+inline MotionEvent timerOnly(const TickCounter& timer) {
+  return timer.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+}
+
 /// MoveForward: v = forward_speed, ω = 0, for round(move_forward_time·rate) ticks (180).
 /// A bump ends it (→ GoBack), then the timer (→ MoveInSpiral).
 class MoveForward {
@@ -47,8 +59,7 @@ class MoveForward {
       : speed_(p.forward_speed), timer_(p.ticks(p.move_forward_time)) {}
   void enter() { timer_.restart(); }
   MotionEvent check(const sim::BumperState& bumper) const {
-    if (bumper.pressed) return MotionEvent::kBumped;
-    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+    return bumperThenTimer(bumper, timer_);
   }
   sim::Velocity execute() {
     timer_.next();
@@ -72,8 +83,7 @@ class MoveInSpiral {
         timer_(p.ticks(p.move_in_spiral_time)) {}
   void enter() { timer_.restart(); }
   MotionEvent check(const sim::BumperState& bumper) const {
-    if (bumper.pressed) return MotionEvent::kBumped;
-    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
+    return bumperThenTimer(bumper, timer_);
   }
   sim::Velocity execute() {
     const double radius = r0_ + growth_per_tick_ * static_cast<double>(timer_.next());
@@ -94,9 +104,7 @@ class GoBack {
   explicit GoBack(const RoombaParams& p)
       : speed_(p.backward_speed), timer_(p.ticks(p.go_back_time)) {}
   void enter() { timer_.restart(); }
-  MotionEvent check(const sim::BumperState&) const {
-    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
-  }
+  MotionEvent check(const sim::BumperState&) const { return timerOnly(timer_); }
   sim::Velocity execute() {
     timer_.next();
     return {speed_, 0.0};
@@ -120,9 +128,7 @@ class Rotate {
   static double drawAngle(std::mt19937& rng);
 
   void enter();
-  MotionEvent check(const sim::BumperState&) const {
-    return timer_.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
-  }
+  MotionEvent check(const sim::BumperState&) const { return timerOnly(timer_); }
   sim::Velocity execute() {
     const long k = timer_.next();
     return {0.0, k + 1 < timer_.length() ? full_ : last_};

@@ -1,0 +1,141 @@
+#include "behavior_node.h"
+
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <roomba_rrt/Bumper.h>
+#include <ros/package.h>
+#include <std_msgs/String.h>
+#include <visualization_msgs/Marker.h>
+
+#include <cmath>
+#include <exception>
+
+namespace roomba_rrt::nodes {
+namespace {
+
+/// The node: one behaviour, its inputs and outputs.
+class BehaviorNode {
+ public:
+  BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh,
+               std::unique_ptr<behavior::RoombaBehavior> behavior, double rate,
+               double bumper_timeout)
+      : behavior_(std::move(behavior)), bumper_timeout_(bumper_timeout) {
+    cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+    state_pub_ = pnh.advertise<std_msgs::String>("state", 1, /*latch=*/true);
+    marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
+    bumper_sub_ = nh.subscribe("bumper", 1, &BehaviorNode::onBumper, this);
+    odom_sub_ = nh.subscribe("odom", 1, &BehaviorNode::onOdom, this);
+    timer_ = nh.createTimer(ros::Duration(1.0 / rate), &BehaviorNode::onTimer, this);
+  }
+
+ private:
+  void onBumper(const roomba_rrt::Bumper& msg) {
+    bumper_.pressed = msg.pressed;
+    bumper_.left = msg.left;
+    bumper_.right = msg.right;
+    last_bumper_ = ros::Time::now();
+    have_bumper_ = true;
+  }
+
+  void onOdom(const nav_msgs::Odometry& msg) {
+    const auto& p = msg.pose.pose.position;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      ROS_WARN_THROTTLE(5.0, "ignoring /odom with a non-finite position");
+      return;
+    }
+    x_ = p.x;
+    y_ = p.y;
+  }
+
+  void onTimer(const ros::TimerEvent&) {
+    const ros::Time now = ros::Time::now();
+    if (!have_bumper_ || (now - last_bumper_).toSec() > bumper_timeout_) {
+      // A behaviour must not drive blind: stop until the bumper speaks again.
+      cmd_pub_.publish(geometry_msgs::Twist());
+      ROS_WARN_THROTTLE(5.0, "no /bumper for more than %.2f s: commanding zero velocity",
+                        bumper_timeout_);
+      return;
+    }
+    const sim::Velocity cmd = behavior_->tick(bumper_);
+    geometry_msgs::Twist twist;
+    twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
+    twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
+    cmd_pub_.publish(twist);
+
+    const std::string& state = behavior_->stateName();
+    if (state != last_state_) {
+      ROS_DEBUG("%s at (%.2f, %.2f)", state.c_str(), x_, y_);
+      last_state_ = state;
+      publishState(state);
+    }
+  }
+
+  void publishState(const std::string& state) {
+    std_msgs::String msg;
+    msg.data = state;
+    state_pub_.publish(msg);
+
+    visualization_msgs::Marker marker;
+    marker.header.frame_id = "base_link";
+    marker.header.stamp = ros::Time(0);  // follow the robot's latest transform
+    marker.ns = ros::this_node::getName();
+    marker.id = 0;
+    marker.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    marker.action = visualization_msgs::Marker::ADD;
+    marker.pose.position.z = 0.45;  // a little above the robot
+    marker.pose.orientation.w = 1.0;
+    marker.scale.z = 0.2;  // text height, m
+    marker.color.r = marker.color.g = marker.color.b = 1.0;
+    marker.color.a = 1.0;
+    marker.text = state;
+    marker_pub_.publish(marker);
+  }
+
+  std::unique_ptr<behavior::RoombaBehavior> behavior_;
+  double bumper_timeout_;
+  ros::Publisher cmd_pub_, state_pub_, marker_pub_;
+  ros::Subscriber bumper_sub_, odom_sub_;
+  ros::Timer timer_;
+
+  sim::BumperState bumper_;
+  ros::Time last_bumper_;
+  bool have_bumper_ = false;
+  double x_ = 0, y_ = 0;
+  std::string last_state_;
+};
+
+}  // namespace
+
+std::string packageConfigFile(const std::string& file_name) {
+  return ros::package::getPath("roomba_rrt") + "/config/" + file_name;
+}
+
+int runBehaviorNode(int argc, char** argv, const std::string& node_name,
+                    const BehaviorMaker& make_behavior) {
+  ros::init(argc, argv, node_name);
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  try {
+    const std::string config_file =
+        pnh.param<std::string>("config_file", packageConfigFile("roomba_behavior.yaml"));
+    behavior::RoombaParams params = behavior::loadRoombaParams(config_file);
+    params.rate = pnh.param("rate", params.rate);
+    const int seed = pnh.param("seed", 1);
+    const double bumper_timeout = pnh.param("bumper_timeout", 0.5);
+    if (!(bumper_timeout > 0)) throw std::invalid_argument("~bumper_timeout must be > 0");
+    if (seed < 0) throw std::invalid_argument("~seed must be >= 0, got " + std::to_string(seed));
+    behavior::validate(params);  // ~rate may have changed
+
+    BehaviorNode node(nh, pnh, make_behavior(pnh, params, static_cast<std::uint32_t>(seed)),
+                      params.rate, bumper_timeout);
+    ROS_INFO("%s: ticking at %.1f Hz (seed %d, parameters from %s)", node_name.c_str(), params.rate,
+             seed, config_file.c_str());
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL("%s: %s", node_name.c_str(), e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace roomba_rrt::nodes

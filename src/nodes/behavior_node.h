@@ -1,0 +1,33 @@
+// The ROS adapter shared by roomba_fsm and roomba_bt: parameters in, /bumper and /odom in,
+// /cmd_vel, ~state and ~state_marker out, one behaviour tick per timer event.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <ros/ros.h>
+
+#include "roomba_rrt/behavior/roomba_behavior.h"
+
+namespace roomba_rrt::nodes {
+
+/// Makes the behaviour from the parameters; `private_nh` gives access to node-specific ones
+/// (roomba_bt's ~tree_file). May throw std::exception: the node then exits with its message.
+using BehaviorMaker = std::function<std::unique_ptr<behavior::RoombaBehavior>(
+    ros::NodeHandle& private_nh, const behavior::RoombaParams& params, std::uint32_t seed)>;
+
+/// Runs a behaviour node until shutdown and returns the process exit code (non-zero when the
+/// parameters or the behaviour cannot be loaded).
+///
+/// Parameters: ~config_file (default $(rospack find roomba_rrt)/config/roomba_behavior.yaml),
+/// ~rate (Hz, default: the file's rate, 60), ~seed (default 1) and ~bumper_timeout (s of ROS time
+/// without /bumper before the node stops the robot, default 0.5).
+int runBehaviorNode(int argc, char** argv, const std::string& node_name,
+                    const BehaviorMaker& make_behavior);
+
+/// The path of a file in the package's config/ folder (ros::package::getPath).
+std::string packageConfigFile(const std::string& file_name);
+
+}  // namespace roomba_rrt::nodes

@@ -1,0 +1,11 @@
+// roomba_fsm: the lab's Roomba behaviour as a finite state machine (see behavior_node.h).
+#include "behavior_node.h"
+#include "roomba_rrt/behavior/roomba_fsm.h"
+
+int main(int argc, char** argv) {
+  using roomba_rrt::behavior::RoombaFsm;
+  return roomba_rrt::nodes::runBehaviorNode(
+      argc, argv, "roomba_fsm", [](ros::NodeHandle&, const auto& params, std::uint32_t seed) {
+        return std::make_unique<RoombaFsm>(params, seed);
+      });
+}
