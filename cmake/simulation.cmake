@@ -1,1 +1,62 @@
-# simulation targets: see CMakeLists.txt
+# The simulated Roomba: ROS-free core library, the roomba_sim node, tests and benchmarks.
+
+add_library(roomba_sim_core
+  src/sim/unicycle.cpp
+  src/sim/contact.cpp
+  src/sim/coverage_grid.cpp
+  src/sim/world.cpp
+  src/sim/simulator.cpp
+)
+target_include_directories(roomba_sim_core PUBLIC include)
+target_link_libraries(roomba_sim_core PUBLIC yaml-cpp)
+# sqrt without the errno branch: the coverage grid takes one per row of every step.
+target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
+
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp)
+target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
+add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+
+# Measures the node's sustained real-time factor while reading every /odom (see doc/simulation.md).
+add_executable(sim_rtf_probe bench/sim_rtf_probe.cpp)
+target_include_directories(sim_rtf_probe PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(sim_rtf_probe ${catkin_LIBRARIES})
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(sim_core_test
+    test/sim/unicycle_test.cpp
+    test/sim/contact_test.cpp
+    test/sim/coverage_grid_test.cpp
+    test/sim/world_test.cpp
+    test/sim/simulator_test.cpp
+  )
+  if(TARGET sim_core_test)
+    target_link_libraries(sim_core_test roomba_sim_core gtest_main)
+    target_compile_definitions(sim_core_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
+  add_rostest_gtest(sim_driving_test test/sim/sim_driving.test test/sim/sim_driving_test.cpp)
+  add_rostest(test/sim/sim_wall_clock.test DEPENDENCIES sim_driving_test)
+  if(TARGET sim_driving_test)
+    target_include_directories(sim_driving_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(sim_driving_test ${catkin_LIBRARIES})
+    add_dependencies(sim_driving_test roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+
+  add_rostest_gtest(sim_invalid_world_test test/sim/sim_invalid_world.test
+    test/sim/sim_invalid_world_test.cpp)
+  if(TARGET sim_invalid_world_test)
+    target_link_libraries(sim_invalid_world_test ${catkin_LIBRARIES})
+    add_dependencies(sim_invalid_world_test roomba_sim)
+  endif()
+endif()
+
+# Google Benchmark (libbenchmark-dev): core steps per second. Built only when it is installed.
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(sim_bench bench/sim_bench.cpp)
+  target_link_libraries(sim_bench roomba_sim_core benchmark::benchmark)
+  target_compile_definitions(sim_bench PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+endif()

@@ -3,9 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "roomba_rrt/sim/contact.h"
 
@@ -28,8 +30,13 @@ void requirePositive(const std::string& name, double value) {
     fail(name, "must be a finite number > 0, got " + show(value));
 }
 
-void requireFinite(const std::string& name, double value) {
-  if (!std::isfinite(value)) fail(name, "must be a finite number, got " + show(value));
+/// Every named value under `prefix` ("initial_pose" + "/x") must be finite.
+void requireFinite(const std::string& prefix,
+                   std::initializer_list<std::pair<const char*, double>> values) {
+  for (const auto& [key, value] : values) {
+    if (!std::isfinite(value))
+      fail(prefix + "/" + key, "must be a finite number, got " + show(value));
+  }
 }
 
 /// A YAML mapping read key by key, naming every value by its path ("robot/radius",
@@ -142,14 +149,12 @@ void validate(const World& world) {
   requirePositive("coverage_cell_size", world.coverage_cell_size);
   requirePositive("command_timeout", world.command_timeout);
   requirePositive("real_time_factor", world.real_time_factor);
-  const double diameter = 2 * world.robot_radius;
-  if (world.width <= diameter) {
-    fail("room/width",
-         "(" + show(world.width) + ") must exceed the robot's diameter " + show(diameter));
-  }
-  if (world.height <= diameter) {
-    fail("room/height",
-         "(" + show(world.height) + ") must exceed the robot's diameter " + show(diameter));
+  for (const auto& [name, size] :
+       {std::pair{"room/width", world.width}, {"room/height", world.height}}) {
+    const double diameter = 2 * world.robot_radius;
+    if (size <= diameter) {
+      fail(name, "(" + show(size) + ") must exceed the robot's diameter " + show(diameter));
+    }
   }
   if (world.max_linear_speed * world.step >= world.robot_radius) {
     fail("step", "is too long: the robot would move more than its radius in one step");
@@ -157,24 +162,19 @@ void validate(const World& world) {
   for (std::size_t i = 0; i < world.circles.size(); ++i) {
     const Circle& c = world.circles[i];
     const std::string name = "furniture/circles[" + std::to_string(i) + "]";
-    requireFinite(name + "/x", c.x);
-    requireFinite(name + "/y", c.y);
+    requireFinite(name, {{"x", c.x}, {"y", c.y}});
     requirePositive(name + "/radius", c.radius);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
     const Rectangle& b = world.rectangles[i];
     const std::string name = "furniture/rectangles[" + std::to_string(i) + "]";
-    requireFinite(name + "/min_x", b.min_x);
-    requireFinite(name + "/min_y", b.min_y);
-    requireFinite(name + "/max_x", b.max_x);
-    requireFinite(name + "/max_y", b.max_y);
+    requireFinite(name,
+                  {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}});
     if (!(b.max_x > b.min_x)) fail(name + "/max_x", "must be greater than min_x");
     if (!(b.max_y > b.min_y)) fail(name + "/max_y", "must be greater than min_y");
   }
   const Pose2D& p = world.initial_pose;
-  requireFinite("initial_pose/x", p.x);
-  requireFinite("initial_pose/y", p.y);
-  requireFinite("initial_pose/theta", p.theta);
+  requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
   if (penetrates(world, p.x, p.y)) {
     fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
                              ") puts the robot's disc inside a wall or a piece of furniture");
