@@ -262,6 +262,7 @@ void drawPng(const std::string& file, const sim::Simulator& simulator, const Run
       cairo_arc(cr, px(run.path[i].x), py(run.path[i].y), 3.0, 0, 2 * kPi);
       cairo_fill(cr);
     } else {
+      cairo_set_line_width(cr, state == RoombaState::kGoBack ? 3.0 : 1.2);  // 5 cm: make it show
       cairo_move_to(cr, px(run.path[i].x), py(run.path[i].y));
       for (std::size_t j = i + 1; j <= end + 1 && j < run.path.size(); ++j) {
         cairo_line_to(cr, px(run.path[j].x), py(run.path[j].y));
