@@ -25,10 +25,14 @@
 namespace roomba_rrt::planner_node {
 namespace {
 
+// A private parameter, or `fallback` when it is not set; a value of the wrong type is an error
+// (never silently replaced by the default).
 template <typename T>
 T param(const ros::NodeHandle& pnh, const std::string& name, const T& fallback) {
+  if (!pnh.hasParam(name)) return fallback;
   T value;
-  return pnh.param(name, value, fallback) ? value : fallback;
+  if (!pnh.getParam(name, value)) throw std::invalid_argument("~" + name + ": wrong type");
+  return value;
 }
 
 planning::Point2 pointParam(const ros::NodeHandle& pnh, const std::string& name,
@@ -82,8 +86,11 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
 class RrtPlannerNode {
  public:
   explicit RrtPlannerNode(ros::NodeHandle& pnh) : defaults_(loadDefaults(pnh)) {
+    const std::string package = ros::package::getPath("roomba_rrt");
     const std::string scenarios_file = param<std::string>(
-        pnh, "scenarios_file", ros::package::getPath("roomba_rrt") + "/config/rrt_scenarios.yaml");
+        pnh, "scenarios_file",
+        package.empty() ? planning::defaultScenarioFile()  // not on ROS_PACKAGE_PATH
+                        : package + "/config/rrt_scenarios.yaml");
     scenarios_ = planning::loadScenarios(scenarios_file);  // throws with the reason
     frame_id_ = param<std::string>(pnh, "frame_id", "map");
     max_marker_nodes_ = param(pnh, "max_marker_nodes", 200000);
