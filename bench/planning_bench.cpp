@@ -7,8 +7,10 @@
 // Run: scripts/bench, or build-dir/devel/lib/roomba_rrt/planning_bench (or the build dir's bin).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <string>
 
 #include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/rrt.h"
@@ -37,21 +39,22 @@ void BM_SolveScenario(benchmark::State& state, const std::string& name, rp::Near
   state.counters["solved_pct"] = 100.0 * solved / runs;
 }
 
-// A tree of `nodes` nodes in scenario d's world (goal_tolerance 0: it never stops early).
+// A tree of `nodes` nodes in scenario d's world. With goal_tolerance 0 the planner never stops:
+// the tree passes the gaps and fills the whole free space (duplicates of the goal are not added).
 const rp::Tree& largeTree(int nodes) {
   static std::map<int, rp::Tree> cache;
   auto found = cache.find(nodes);
   if (found != cache.end()) return found->second;
   rp::PlannerOptions options;
   options.goal_tolerance = 0;
-  options.max_iterations = nodes * 2;  // enough iterations (some are blocked) ...
+  options.max_iterations = nodes + nodes / 2;  // enough: few iterations are blocked
   rp::Tree tree;
   rp::plan(
       scenarios().at("d"), options,
       [&](const rp::Tree& t, int) {
-        if (tree.size() == 0 && t.size() >= nodes) tree = t;  // ... stop copying at `nodes`
+        if (tree.size() == 0 && t.size() >= nodes) tree = t;  // copy once, at `nodes`
       },
-      1000);
+      100);
   tree.nodes.resize(nodes);
   tree.parent.resize(nodes);
   return cache.emplace(nodes, std::move(tree)).first->second;
@@ -62,6 +65,7 @@ void BM_IterationOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
   const rp::Problem& problem = scenarios().at("d");
   rp::PlannerOptions options;  // lab defaults: p = 0.1, step 0.2
   rp::Tree tree = largeTree(nodes);
+  tree.reserve(nodes + nodes / 10 + 1);  // no reallocation inside the measurement
   const auto nearest = rp::makeNearestNeighbors(nn);
   nearest->clear(problem.bounds);
   for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
@@ -75,6 +79,25 @@ void BM_IterationOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
   }
   state.counters["iterations_per_s"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+// The nearest-neighbour query alone (free-space points, as RRT samples), on the same trees.
+void BM_NearestOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
+  const int nodes = static_cast<int>(state.range(0));
+  const rp::Problem& problem = scenarios().at("d");
+  const rp::Tree& tree = largeTree(nodes);
+  const auto nearest = rp::makeNearestNeighbors(nn);
+  nearest->clear(problem.bounds);
+  for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
+  const rp::CollisionChecker checker(problem.obstacles, rp::CollisionCheck::kPoints);
+  const rp::FreeSpaceSampler sampler(problem.bounds, checker, 1000);
+  rp::MatlabRandom random(9);
+  std::vector<rp::Point2> queries(1 << 16);
+  for (rp::Point2& q : queries) q = *sampler.sample(random);  // free space, as RRT samples
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(nearest->nearest(queries[i++ & (queries.size() - 1)]));
+  }
 }
 
 void BM_GrowTree(benchmark::State& state) {
@@ -102,16 +125,28 @@ BENCHMARK_CAPTURE(BM_SolveScenario, a_brute_force, "a", rp::NearestSearch::kBrut
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_SolveScenario, d_brute_force, "d", rp::NearestSearch::kBruteForce)
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_IterationOnLargeTree, index, rp::NearestSearch::kIndex)
+// Each measurement adds at most 10 % to the tree, so its size stays what the name says.
+const int kLargeTreeBenchmarks = [] {
+  for (int nodes : {10'000, 100'000, 1'000'000}) {
+    const std::string size = "/" + std::to_string(nodes);
+    benchmark::RegisterBenchmark(("BM_IterationOnLargeTree/index" + size).c_str(),
+                                 BM_IterationOnLargeTree, rp::NearestSearch::kIndex)
+        ->Arg(nodes)
+        ->Iterations(nodes / 10)
+        ->Unit(benchmark::kNanosecond);
+    benchmark::RegisterBenchmark(("BM_IterationOnLargeTree/brute_force" + size).c_str(),
+                                 BM_IterationOnLargeTree, rp::NearestSearch::kBruteForce)
+        ->Arg(nodes)
+        ->Iterations(std::min(nodes / 10, 300))
+        ->Unit(benchmark::kMicrosecond);
+  }
+  return 0;
+}();
+BENCHMARK_CAPTURE(BM_NearestOnLargeTree, index, rp::NearestSearch::kIndex)
     ->Arg(10'000)
     ->Arg(100'000)
     ->Arg(1'000'000)
     ->Unit(benchmark::kNanosecond);
-BENCHMARK_CAPTURE(BM_IterationOnLargeTree, brute_force, rp::NearestSearch::kBruteForce)
-    ->Arg(10'000)
-    ->Arg(100'000)
-    ->Arg(1'000'000)
-    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_GrowTree)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 BENCHMARK_MAIN();

@@ -12,17 +12,19 @@ void BruteForceNearestNeighbors::add(const Point2& p, int index) {
   indices_.push_back(index);
 }
 
-int BruteForceNearestNeighbors::nearest(const Point2& q) const {
+Neighbor BruteForceNearestNeighbors::nearestNeighbor(const Point2& q) const {
   int best = -1;
+  std::size_t best_slot = 0;
   double best_d2 = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const double d2 = squaredDistance(points_[i], q);
     if (best < 0 || d2 < best_d2 || (d2 == best_d2 && indices_[i] < best)) {
       best = indices_[i];
       best_d2 = d2;
+      best_slot = i;
     }
   }
-  return best;
+  return best < 0 ? Neighbor{} : Neighbor{best, points_[best_slot]};
 }
 
 void BruteForceNearestNeighbors::withinRadius(const Point2& q, double radius,

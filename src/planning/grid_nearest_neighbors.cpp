@@ -27,10 +27,7 @@ void GridNearestNeighbors::resize(int target_cells) {
   // Take every entry out, lay a finer grid, put them back.
   std::vector<Entry> entries;
   entries.reserve(size_);
-  for (int cy = 0; cy < ny_ && !cells_.empty(); ++cy) {
-    for (int cx = 0; cx < nx_; ++cx)
-      forEachInCell(cx, cy, [&](const Entry& e) { entries.push_back(e); });
-  }
+  for (const Cell& c : cells_) forEachInCell(c, [&](const Entry& e) { entries.push_back(e); });
   const double width = bounds_.x_max - bounds_.x_min;
   const double height = bounds_.y_max - bounds_.y_min;
   cell_size_ = std::sqrt(width * height / target_cells);
@@ -42,33 +39,16 @@ void GridNearestNeighbors::resize(int target_cells) {
   for (const Entry& e : entries) insert(e);
 }
 
-int GridNearestNeighbors::cellX(double x) const {
-  const double i = std::floor((x - bounds_.x_min) * inv_cell_size_);
-  return static_cast<int>(std::clamp(i, 0.0, static_cast<double>(nx_ - 1)));
-}
-
-int GridNearestNeighbors::cellY(double y) const {
-  const double i = std::floor((y - bounds_.y_min) * inv_cell_size_);
-  return static_cast<int>(std::clamp(i, 0.0, static_cast<double>(ny_ - 1)));
-}
-
 void GridNearestNeighbors::insert(const Entry& e) {
   Cell& cell = cells_[static_cast<std::size_t>(cellY(e.y)) * nx_ + cellX(e.x)];
-  if (cell.count < kInline) {
-    cell.inline_entries[cell.count] = e;
-  } else {
-    overflow_.push_back({e, cell.overflow});
-    cell.overflow = static_cast<std::int32_t>(overflow_.size() - 1);
+  for (Entry& slot : cell.inline_entries) {
+    if (slot.index < 0) {
+      slot = e;
+      return;
+    }
   }
-  ++cell.count;
-}
-
-template <typename Visit>
-void GridNearestNeighbors::forEachInCell(int cx, int cy, Visit&& visit) const {
-  const Cell& cell = cells_[static_cast<std::size_t>(cy) * nx_ + cx];
-  const int n = std::min<int>(cell.count, kInline);
-  for (int i = 0; i < n; ++i) visit(cell.inline_entries[i]);
-  for (std::int32_t o = cell.overflow; o >= 0; o = overflow_[o].next) visit(overflow_[o].entry);
+  overflow_.push_back({e, cell.overflow});
+  cell.overflow = static_cast<std::int32_t>(overflow_.size() - 1);
 }
 
 void GridNearestNeighbors::add(const Point2& p, int index) {
@@ -77,19 +57,27 @@ void GridNearestNeighbors::add(const Point2& p, int index) {
   ++size_;
 }
 
-int GridNearestNeighbors::nearest(const Point2& q) const {
-  if (size_ == 0) return -1;
+Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
+  if (size_ == 0) return {};
   const int cx = cellX(q.x);
   const int cy = cellY(q.y);
-  int best = -1;
+  // At 10^6 points every cell is a cache miss: ask for the 3 x 3 block at once, so the
+  // misses overlap instead of queueing (each row of the block is contiguous).
+  for (int y = std::max(0, cy - 1); y <= std::min(ny_ - 1, cy + 1); ++y) {
+    const Cell* row = &cell(std::max(0, cx - 1), y);
+    for (int x = std::max(0, cx - 1); x <= std::min(nx_ - 1, cx + 1); ++x, ++row) {
+      __builtin_prefetch(row);
+    }
+  }
+  const Entry* best = nullptr;
   double best_d2 = std::numeric_limits<double>::infinity();
   auto consider = [&](const Entry& e) {
     const double dx = e.x - q.x;
     const double dy = e.y - q.y;
     const double d2 = dx * dx + dy * dy;  // the same formula as squaredDistance()
-    if (d2 < best_d2 || (d2 == best_d2 && e.index < best)) {
+    if (d2 < best_d2 || (d2 == best_d2 && e.index < best->index)) {
       best_d2 = d2;
-      best = e.index;
+      best = &e;
     }
   };
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -99,10 +87,10 @@ int GridNearestNeighbors::nearest(const Point2& q) const {
     const int y0 = std::max(0, cy - r), y1 = std::min(ny_ - 1, cy + r);
     for (int y = y0; y <= y1; ++y) {
       if (y == cy - r || y == cy + r) {
-        for (int x = x0; x <= x1; ++x) forEachInCell(x, y, consider);
+        for (int x = x0; x <= x1; ++x) forEachInCell(cell(x, y), consider);
       } else {
-        if (cx - r >= 0) forEachInCell(cx - r, y, consider);
-        if (r > 0 && cx + r < nx_) forEachInCell(cx + r, y, consider);
+        if (cx - r >= 0) forEachInCell(cell(cx - r, y), consider);
+        if (r > 0 && cx + r < nx_) forEachInCell(cell(cx + r, y), consider);
       }
     }
     // Done when the visited block covers the grid, or nothing outside it can be closer.
@@ -117,7 +105,7 @@ int GridNearestNeighbors::nearest(const Point2& q) const {
     gap -= kBorderSlack;
     if (gap > 0 && best_d2 < gap * gap) break;
   }
-  return best;
+  return {best->index, {best->x, best->y}};
 }
 
 void GridNearestNeighbors::withinRadius(const Point2& q, double radius,
@@ -126,7 +114,7 @@ void GridNearestNeighbors::withinRadius(const Point2& q, double radius,
   const double r2 = radius * radius;
   for (int y = cellY(q.y - radius); y <= cellY(q.y + radius); ++y) {
     for (int x = cellX(q.x - radius); x <= cellX(q.x + radius); ++x) {
-      forEachInCell(x, y, [&](const Entry& e) {
+      forEachInCell(cell(x, y), [&](const Entry& e) {
         const double dx = e.x - q.x;
         const double dy = e.y - q.y;
         if (dx * dx + dy * dy <= r2) out.push_back(e.index);

@@ -24,11 +24,14 @@ std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions&
 int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
                const Point2& target, double step) {
   // Nearest tree node.
-  const int near = nearest.nearest(target);
+  const auto [near, q_near] = nearest.nearestNeighbor(target);
   // Extend from it by at most one step.
-  const Point2 q_new = steer(tree.nodes[near], target, step);
+  const Point2 q_new = steer(q_near, target, step);
   // Check the new node (points) or the new edge (segments); a collision wastes the iteration.
-  if (!checker.isMotionFree(tree.nodes[near], q_new)) return -1;
+  // A step of length zero (the target is already a node, e.g. the goal with epsilon = 0) adds
+  // nothing either; it never happens in the lab's runs, which stop at the goal.
+  if (!checker.isMotionFree(q_near, q_new)) return -1;
+  if (q_new.x == q_near.x && q_new.y == q_near.y) return -1;
   // Insert it with q_near as parent.
   const int added = tree.add(q_new, near);
   nearest.add(q_new, added);

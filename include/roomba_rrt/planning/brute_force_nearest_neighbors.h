@@ -11,7 +11,7 @@ class BruteForceNearestNeighbors final : public NearestNeighbors {
  public:
   void clear(const Bounds& bounds) override;
   void add(const Point2& p, int index) override;
-  int nearest(const Point2& q) const override;
+  Neighbor nearestNeighbor(const Point2& q) const override;
   void withinRadius(const Point2& q, double radius, std::vector<int>& out) const override;
   int size() const override { return static_cast<int>(points_.size()); }
 

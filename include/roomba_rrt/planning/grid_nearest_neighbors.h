@@ -1,14 +1,16 @@
 // A uniform bucket grid over the bounds, re-sized as it fills: the planner's spatial index.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "roomba_rrt/planning/huge_page_allocator.h"
 #include "roomba_rrt/planning/nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 
-/// Square cells covering the bounds; each cell stores the coordinates of its first two points
+/// Square cells covering the bounds; each cell stores the coordinates of its first three points
 /// inline (one 64-byte cache line), further points in a shared overflow list. When the points
 /// outnumber 1.5 per cell the grid doubles its cell count and re-inserts everything, so a query
 /// looks at about nine cells whatever the tree size. A query visits rings of cells around the
@@ -19,39 +21,53 @@ class GridNearestNeighbors final : public NearestNeighbors {
  public:
   void clear(const Bounds& bounds) override;
   void add(const Point2& p, int index) override;
-  int nearest(const Point2& q) const override;
+  Neighbor nearestNeighbor(const Point2& q) const override;
   void withinRadius(const Point2& q, double radius, std::vector<int>& out) const override;
   int size() const override { return size_; }
   int cellCount() const { return static_cast<int>(cells_.size()); }
 
  private:
-  struct Entry {
-    double x, y;
-    std::int32_t index;
+#pragma pack(push, 4)
+  struct Entry {  // 20 bytes: three fit in a cache line with the overflow link
+    double x = 0, y = 0;
+    std::int32_t index = -1;  ///< -1: empty slot
   };
+#pragma pack(pop)
+  static constexpr int kInline = 3;
   struct alignas(64) Cell {
-    std::int32_t count = 0;      ///< points in this cell (inline and overflow)
-    std::int32_t overflow = -1;  ///< head of this cell's chain in overflow_, -1 if none
-    Entry inline_entries[2];
+    Entry inline_entries[kInline];  ///< filled from the front
+    std::int32_t overflow = -1;     ///< head of this cell's chain in overflow_, -1 if none
   };
+  static_assert(sizeof(Cell) == 64, "a cell is one cache line");
   struct OverflowEntry {
     Entry entry;
     std::int32_t next;
   };
-  static constexpr int kInline = 2;
 
   void resize(int target_cells);
   void insert(const Entry& e);
-  int cellX(double x) const;
-  int cellY(double y) const;
+  int cellX(double x) const {
+    const double i = std::floor((x - bounds_.x_min) * inv_cell_size_);
+    return i <= 0 ? 0 : (i >= nx_ - 1 ? nx_ - 1 : static_cast<int>(i));
+  }
+  int cellY(double y) const {
+    const double i = std::floor((y - bounds_.y_min) * inv_cell_size_);
+    return i <= 0 ? 0 : (i >= ny_ - 1 ? ny_ - 1 : static_cast<int>(i));
+  }
+  const Cell& cell(int cx, int cy) const { return cells_[static_cast<std::size_t>(cy) * nx_ + cx]; }
   template <typename Visit>
-  void forEachInCell(int cx, int cy, Visit&& visit) const;
+  void forEachInCell(const Cell& cell, Visit&& visit) const {
+    for (int i = 0; i < kInline && cell.inline_entries[i].index >= 0; ++i) {
+      visit(cell.inline_entries[i]);
+    }
+    for (std::int32_t o = cell.overflow; o >= 0; o = overflow_[o].next) visit(overflow_[o].entry);
+  }
 
   Bounds bounds_;
   double cell_size_ = 1, inv_cell_size_ = 1;
   int nx_ = 1, ny_ = 1;
   int size_ = 0;
-  std::vector<Cell> cells_;
+  std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<OverflowEntry> overflow_;
 };
 

@@ -9,6 +9,12 @@
 
 namespace roomba_rrt::planning {
 
+/// A stored point and its node index.
+struct Neighbor {
+  int index = -1;  ///< -1 when the structure is empty
+  Point2 position;
+};
+
 /// Holds (point, node index) pairs. Every implementation returns the same answer: the node with
 /// the smallest squared distance dx*dx + dy*dy, the lowest index among equals (as MATLAB's min).
 class NearestNeighbors {
@@ -17,8 +23,11 @@ class NearestNeighbors {
   /// Forgets every point; points will lie inside `bounds`.
   virtual void clear(const Bounds& bounds) = 0;
   virtual void add(const Point2& p, int index) = 0;
+  /// The nearest point and its index (index -1 when empty). Returning the position saves the
+  /// caller a random access into the tree at 10^6 nodes.
+  virtual Neighbor nearestNeighbor(const Point2& q) const = 0;
   /// Index of the nearest point; -1 when empty.
-  virtual int nearest(const Point2& q) const = 0;
+  int nearest(const Point2& q) const { return nearestNeighbor(q).index; }
   /// Indices of all points within `radius` of q (any order).
   virtual void withinRadius(const Point2& q, double radius, std::vector<int>& out) const = 0;
   virtual int size() const = 0;

@@ -45,7 +45,8 @@ std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions&
                                    const PlannerParts& parts);
 
 /// Steps 2-5 (LaValle's EXTEND): nearest node to `target`, steer by at most `step`, check the
-/// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked.
+/// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked
+/// or if the step has length zero (the target is already a tree node).
 int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
                const Point2& target, double step);
 
