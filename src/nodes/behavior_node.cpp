@@ -7,6 +7,7 @@
 #include <std_msgs/String.h>
 #include <visualization_msgs/Marker.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 
@@ -19,13 +20,16 @@ class BehaviorNode {
   BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh,
                std::unique_ptr<behavior::RoombaBehavior> behavior, double rate,
                double bumper_timeout)
-      : behavior_(std::move(behavior)), bumper_timeout_(bumper_timeout) {
+      : behavior_(std::move(behavior)),
+        period_(1.0 / rate),
+        max_catch_up_(std::max(1, static_cast<int>(rate))),
+        bumper_timeout_(bumper_timeout) {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
-    state_pub_ = pnh.advertise<std_msgs::String>("state", 1, /*latch=*/true);
+    state_pub_ = pnh.advertise<std_msgs::String>("state", 10, /*latch=*/true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
     bumper_sub_ = nh.subscribe("bumper", 1, &BehaviorNode::onBumper, this);
     odom_sub_ = nh.subscribe("odom", 1, &BehaviorNode::onOdom, this);
-    timer_ = nh.createTimer(ros::Duration(1.0 / rate), &BehaviorNode::onTimer, this);
+    timer_ = nh.createTimer(period_, &BehaviorNode::onTimer, this);
   }
 
  private:
@@ -54,20 +58,34 @@ class BehaviorNode {
       cmd_pub_.publish(geometry_msgs::Twist());
       ROS_WARN_THROTTLE(5.0, "no /bumper for more than %.2f s: commanding zero velocity",
                         bumper_timeout_);
+      next_tick_ = ros::Time();  // no catching up on the blind time
       return;
     }
-    const sim::Velocity cmd = behavior_->tick(bumper_);
+    // The behaviour measures time in ticks, so it must tick once per period of ROS time. roscpp
+    // skips timer events it is late for (a loaded machine, a fast /clock): tick for those too,
+    // with the latest bumper, so that e.g. GoBack still lasts 0.5 s of robot time.
+    // Start afresh at the first tick, after blind time, or when the clock went back.
+    if (next_tick_.isZero() || now + period_ * 2.0 < next_tick_) next_tick_ = now;
+    const ros::Time due = now + period_ * 0.5;
+    int ticks = 0;
+    sim::Velocity cmd;
+    while (next_tick_ <= due && ticks < max_catch_up_) {
+      cmd = behavior_->tick(bumper_);
+      next_tick_ += period_;
+      ++ticks;
+      const std::string& state = behavior_->stateName();
+      if (state != last_state_) {
+        ROS_DEBUG("%s at (%.2f, %.2f)", state.c_str(), x_, y_);
+        last_state_ = state;
+        publishState(state);
+      }
+    }
+    if (ticks == 0) return;                                  // an early event: nothing is due yet
+    if (ticks == max_catch_up_) next_tick_ = now + period_;  // too far behind: do not chase
     geometry_msgs::Twist twist;
     twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
     twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
     cmd_pub_.publish(twist);
-
-    const std::string& state = behavior_->stateName();
-    if (state != last_state_) {
-      ROS_DEBUG("%s at (%.2f, %.2f)", state.c_str(), x_, y_);
-      last_state_ = state;
-      publishState(state);
-    }
   }
 
   void publishState(const std::string& state) {
@@ -92,6 +110,8 @@ class BehaviorNode {
   }
 
   std::unique_ptr<behavior::RoombaBehavior> behavior_;
+  ros::Duration period_;
+  int max_catch_up_;  ///< at most one second of ticks per timer event
   double bumper_timeout_;
   ros::Publisher cmd_pub_, state_pub_, marker_pub_;
   ros::Subscriber bumper_sub_, odom_sub_;
@@ -99,6 +119,7 @@ class BehaviorNode {
 
   sim::BumperState bumper_;
   ros::Time last_bumper_;
+  ros::Time next_tick_;  ///< ROS time of the next tick due (zero: start afresh)
   bool have_bumper_ = false;
   double x_ = 0, y_ = 0;
   std::string last_state_;
