@@ -158,9 +158,17 @@ struct Outcome {
   std::string output;
 };
 
+/// The directory of this test executable, where catkin also puts the nodes (devel/lib/roomba_rrt).
+std::string executableDir() {
+  std::array<char, 4096> path{};
+  const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
+  const std::string self(path.data(), n > 0 ? static_cast<std::size_t>(n) : 0);
+  return self.substr(0, self.rfind('/'));
+}
+
 /// Runs a behaviour node binary with extra arguments and collects its exit code and output.
 Outcome runNode(const std::string& type, const std::string& args) {
-  const std::string command = "timeout 30 rosrun roomba_rrt " + type + " __name:=startup_" +
+  const std::string command = "timeout 30 " + executableDir() + "/" + type + " __name:=startup_" +
                               std::to_string(getpid()) + " " + args + " 2>&1";
   Outcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
