@@ -2,20 +2,59 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace roomba_rrt::planning {
 namespace {
 
-// Length of the tree path from the root to `node`. Walking the parents (rather than caching a
-// cost per node) keeps the costs right after every rewiring without child lists; on the lab's
-// trees (a few thousand nodes, depth ~50) it is cheap.
-double costToCome(const Tree& tree, int node) {
-  double cost = 0;
-  for (int i = node; tree.parent[i] >= 0; i = tree.parent[i]) {
-    cost += distance(tree.nodes[i], tree.nodes[tree.parent[i]]);
+// The cost (path length from the root) of every node, kept right under rewiring. Children are
+// linked lists in flat arrays (first child, next sibling), so re-parenting a node updates its
+// whole subtree without a heap object per node.
+class CostsFromRoot {
+ public:
+  void addRoot() { push(0.0); }
+  void add(int parent, double cost) {
+    const int node = push(cost);
+    link(node, parent);
   }
-  return cost;
-}
+  double operator()(int node) const { return cost_[node]; }
+
+  // Moves `node` (with its subtree) under `new_parent`, where it costs `new_cost`.
+  void reparent(Tree& tree, int node, int new_parent, double new_cost) {
+    unlink(node, tree.parent[node]);
+    link(node, new_parent);
+    tree.parent[node] = new_parent;
+    const double delta = new_cost - cost_[node];
+    stack_.assign(1, node);
+    while (!stack_.empty()) {
+      const int v = stack_.back();
+      stack_.pop_back();
+      cost_[v] += delta;
+      for (int c = first_child_[v]; c >= 0; c = next_sibling_[c]) stack_.push_back(c);
+    }
+  }
+
+ private:
+  int push(double cost) {
+    cost_.push_back(cost);
+    first_child_.push_back(-1);
+    next_sibling_.push_back(-1);
+    return static_cast<int>(cost_.size()) - 1;
+  }
+  void link(int node, int parent) {
+    next_sibling_[node] = first_child_[parent];
+    first_child_[parent] = node;
+  }
+  void unlink(int node, int parent) {
+    int* slot = &first_child_[parent];
+    while (*slot != node) slot = &next_sibling_[*slot];
+    *slot = next_sibling_[node];
+  }
+
+  std::vector<double> cost_;
+  std::vector<int> first_child_, next_sibling_;
+  std::vector<int> stack_;
+};
 
 // The shrinking neighbourhood radius of RRT* in the plane, never below one step.
 double rewireRadius(const Bounds& bounds, double step, int n) {
@@ -32,6 +71,8 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
   PlanResult result;
   Tree& tree = result.tree;
   plantTree(tree, parts.nearest, problem.start, problem.bounds);
+  CostsFromRoot cost;
+  cost.addRoot();
   std::vector<int> near;
   std::vector<int> at_goal;
 
@@ -43,11 +84,11 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
       result.message = noFreeSpaceMessage(parts.sampler);
       return result;
     }
-    const Point2 q_rand = *sample;
-    // 2. Nearest node and 3. one step towards the sample; 4. skip if blocked.
-    const int nearest = parts.nearest.nearest(q_rand);
-    const Point2 q_new = steer(tree.nodes[nearest], q_rand, options.step);
-    if (!parts.checker.isMotionFree(tree.nodes[nearest], q_new)) {
+    // 2. Nearest node and 3. one step towards the sample; 4. skip if blocked or no step at all.
+    const auto [nearest, q_nearest] = parts.nearest.nearestNeighbor(*sample);
+    const Point2 q_new = steer(q_nearest, *sample, options.step);
+    if (!parts.checker.isMotionFree(q_nearest, q_new) ||
+        (q_new.x == q_nearest.x && q_new.y == q_nearest.y)) {
       progress(tree, iteration);
       continue;
     }
@@ -55,9 +96,9 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     parts.nearest.withinRadius(q_new, rewireRadius(problem.bounds, options.step, tree.size()),
                                near);
     int parent = nearest;
-    double new_cost = costToCome(tree, nearest) + distance(tree.nodes[nearest], q_new);
+    double new_cost = cost(nearest) + distance(q_nearest, q_new);
     for (int n : near) {
-      const double c = costToCome(tree, n) + distance(tree.nodes[n], q_new);
+      const double c = cost(n) + distance(tree.nodes[n], q_new);
       if (c < new_cost && parts.checker.isMotionFree(tree.nodes[n], q_new)) {
         parent = n;
         new_cost = c;
@@ -65,12 +106,13 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     }
     const int added = tree.add(q_new, parent);
     parts.nearest.add(q_new, added);
+    cost.add(parent, new_cost);
     // 6. Rewire: neighbours that get shorter through q_new take it as parent.
     for (int n : near) {
       const double via_new = new_cost + distance(q_new, tree.nodes[n]);
-      if (n != parent && via_new + kImprovement < costToCome(tree, n) &&
+      if (n != parent && via_new + kImprovement < cost(n) &&
           parts.checker.isMotionFree(q_new, tree.nodes[n])) {
-        tree.parent[n] = added;
+        cost.reparent(tree, n, added, via_new);
       }
     }
     // 7. Remember nodes at the goal; keep improving until the iterations are used.
@@ -81,10 +123,9 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
   int best = -1;
   double best_cost = std::numeric_limits<double>::infinity();
   for (int g : at_goal) {
-    const double c = costToCome(tree, g);
-    if (c < best_cost) {
+    if (cost(g) < best_cost) {
       best = g;
-      best_cost = c;
+      best_cost = cost(g);
     }
   }
   if (best >= 0) {

@@ -74,6 +74,23 @@ TEST(RrtStar, approaches_the_straight_line_in_an_empty_world) {
   EXPECT_LT(star.length, 1.03 * straight);
 }
 
+TEST(RrtStar, rewiring_keeps_a_tree_every_node_reaches_the_start) {
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtStar;
+  options.max_iterations = 1500;
+  const PlanResult r = plan(labScenario("c"), options);
+  ASSERT_TRUE(r.success);
+  for (int i = 0; i < r.tree.size(); ++i) {
+    int steps = 0;
+    int node = i;
+    while (r.tree.parent[node] >= 0 && steps <= r.tree.size()) {
+      node = r.tree.parent[node];
+      ++steps;
+    }
+    ASSERT_EQ(node, 0) << "node " << i << " does not lead to the start (cycle?)";
+  }
+}
+
 TEST(Smoothing, is_reproducible_and_straightens_a_detour_in_an_empty_world) {
   const std::vector<Point2> zigzag{{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}};
   const CollisionChecker nothing({}, CollisionCheck::kSegments);
