@@ -10,6 +10,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     ompl.json      bench/ompl_comparison --json
     behavior.json  behavior_bench --benchmark_out (Google Benchmark JSON)
     sim.json       sim_bench --benchmark_out (Google Benchmark JSON)
+    planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
     rtf.json       {"requested": F, "line": "<sim_rtf_probe's output line>"}
     service.json   plan_path_bench --json
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
@@ -67,10 +68,15 @@ def gbench(data, run_name, field):
     return values[len(values) // 2]
 
 
-def ns(b):
-    """A Google Benchmark entry's real time in ns."""
-    scale = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
-    return b["real_time"] * scale
+def gbench_ns(data, prefix):
+    """Median real time (ns) over repetitions of the one run whose name starts with `prefix`."""
+    names = {b.get("run_name", b.get("name")) for b in data.get("benchmarks", [])}
+    matches = sorted(n for n in names if n.startswith(prefix))
+    if not matches:
+        raise Missing(f"{prefix}* not in the output")
+    entry = next(b for b in data["benchmarks"] if b.get("run_name", b.get("name")) == matches[0])
+    scale = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}[entry.get("time_unit", "ns")]
+    return gbench(data, matches[0], "real_time") * scale
 
 
 def fmt(v, digits=3):
@@ -94,7 +100,8 @@ class Table:
             "key": key, "what": what, "ours": ours, "peer": peer, "ratio": ratio,
             "target": target, "met": met,
             "ours_text": ours_text if ours_text is not None else fmt(ours),
-            "peer_text": peer_text if peer_text is not None else ("—" if peer is None else fmt(peer)),
+            "peer_text": (peer_text if peer_text is not None
+                          else "—" if peer is None else fmt(peer)),
             "note": note,
         })
 
@@ -143,6 +150,26 @@ def rrt_rows(t, results):
               g["ours_ns_per_iteration"], g["ompl_ns_per_iteration"], ratio,
               "≤ 0.05" if big else None, (ratio <= 0.05) if big else None,
               fmt(g["ours_ns_per_iteration"]) + " ns", fmt(g["ompl_ns_per_iteration"]) + " ns")
+
+
+def planning_rows(t, results):
+    what = "RRT one iteration on a grown tree of {} nodes (d's world): ns; peer: the lab's " \
+           "brute-force nearest neighbour, same binary"
+    try:
+        data = load(results, "planning")
+    except Missing as e:
+        t.missing("rrt_iteration", what.format("10^4–10^6"), str(e))
+        return
+    for exponent in (4, 5, 6):
+        n = 10 ** exponent
+        try:
+            index = gbench_ns(data, f"BM_IterationOnLargeTree/index/{n}/")
+            brute = gbench_ns(data, f"BM_IterationOnLargeTree/brute_force/{n}/")
+        except Missing as e:
+            t.missing(f"rrt_iteration_{n}", what.format(f"10^{exponent}"), str(e))
+            continue
+        t.add(f"rrt_iteration_{n}", what.format(f"10^{exponent}"), index, brute, index / brute,
+              ours_text=f"{fmt(index)} ns", peer_text=f"{fmt(brute)} ns")
 
 
 def behavior_rows(t, results):
@@ -207,7 +234,8 @@ def service_rows(t, results):
     except Missing as e:
         t.missing("service", what, str(e), "≤ 1 ms")
         return
-    for client, label in (("persistent", "persistent client"), ("per_call", "new connection per call")):
+    for client, label in (("persistent", "persistent client"),
+                          ("per_call", "new connection per call")):
         s = series.get(client)
         if s is None:
             continue
@@ -218,7 +246,8 @@ def service_rows(t, results):
               target="≤ 1 ms" if judged else None,
               met=s["overhead_p50_us"] <= 1000 if judged else None,
               ours_text=f"{fmt(s['overhead_p50_us'])} µs (round trip p50 "
-                        f"{fmt(s['round_trip_p50_us'])} µs, p99 {fmt(s['round_trip_p99_us'])} µs; "
+                        f"{fmt(s['round_trip_p50_us'])} µs, "
+                        f"p99 {fmt(s['round_trip_p99_us'])} µs; "
                         f"planning p50 {fmt(s['planning_p50_us'])} µs)")
 
 
@@ -273,7 +302,8 @@ def markdown(rows, info, results):
         ratio = "—" if r["ratio"] is None else fmt(r["ratio"])
         lines.append(f"| {r['what']} | {r['ours_text']} | {r['peer_text']} | {ratio} | "
                      f"{verdict(r)} |")
-    lines += ["", "RRT rows: ours = rrt_planning's plan(), peer = OMPL's geometric::RRT in the same "
+    lines += ["", "RRT rows: ours = rrt_planning's plan(), peer = OMPL's geometric::RRT in the "
+              "same "
               "process (same Δ, goal bias, ε, iterations and collision test). OMPL samples the "
               "whole box and discards invalid steps, while the lab rejection-samples the free "
               "space; this changes the success rates (mostly on d), not the work per iteration.",
@@ -287,7 +317,8 @@ def main(argv):
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, behavior_rows, sim_rows, rtf_rows, service_rows, memory_rows):
+    for rows in (rrt_rows, planning_rows, behavior_rows, sim_rows, rtf_rows, service_rows,
+                 memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

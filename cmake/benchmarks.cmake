@@ -34,23 +34,12 @@ if(OMPL_FOUND AND TARGET rrt_planning)
   target_include_directories(ompl_comparison PRIVATE include)
   target_include_directories(ompl_comparison SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
   target_link_libraries(ompl_comparison PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
-  target_compile_definitions(ompl_comparison
-    PRIVATE RR_SCENARIOS_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
   add_dependencies(benchmarks ompl_comparison)
-endif()
-
-# --- the simulator node's real-time factor (a ROS client; needs a running system) -------------
-if(EXISTS ${PROJECT_SOURCE_DIR}/bench/sim_rtf_bench.cpp)
-  add_executable(sim_rtf_bench EXCLUDE_FROM_ALL bench/sim_rtf_bench.cpp)
-  target_include_directories(sim_rtf_bench PRIVATE include ${catkin_INCLUDE_DIRS})
-  target_link_libraries(sim_rtf_bench PRIVATE ${catkin_LIBRARIES})
-  add_dependencies(sim_rtf_bench ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
-  add_dependencies(benchmarks sim_rtf_bench)
 endif()
 
 # --- the other parts' benchmarks (declared in their own fragments) ----------------------------
 # `benchmarks` builds them too, plus the tools scripts/bench runs (the nodes it measures).
-foreach(target IN ITEMS planning_bench behavior_bench sim_bench plan_path_bench
+foreach(target IN ITEMS planning_bench behavior_bench sim_bench sim_rtf_probe plan_path_bench
                         rrt_monte_carlo roomba_sim roomba_fsm rrt_planner)
   if(TARGET ${target})
     add_dependencies(benchmarks ${target})
