@@ -51,15 +51,15 @@ inline MotionEvent timerOnly(const TickCounter& timer) {
   return timer.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
 }
 
-/// MoveForward: v = forward_speed, ω = 0, for round(move_forward_time·rate) ticks (180).
-/// A bump ends it (→ GoBack), then the timer (→ MoveInSpiral).
-class MoveForward {
+/// Driving straight at a fixed speed for a fixed number of ticks: MoveForward and GoBack.
+/// `kStopsOnBump`: whether a pressed bumper ends the motion (checked before the timer).
+template <bool kStopsOnBump>
+class StraightMotion {
  public:
-  explicit MoveForward(const RoombaParams& p)
-      : speed_(p.forward_speed), timer_(p.ticks(p.move_forward_time)) {}
+  StraightMotion(double speed, long ticks) : speed_(speed), timer_(ticks) {}
   void enter() { timer_.restart(); }
   MotionEvent check(const sim::BumperState& bumper) const {
-    return bumperThenTimer(bumper, timer_);
+    return kStopsOnBump ? bumperThenTimer(bumper, timer_) : timerOnly(timer_);
   }
   sim::Velocity execute() {
     timer_.next();
@@ -69,6 +69,14 @@ class MoveForward {
  private:
   double speed_;
   TickCounter timer_;
+};
+
+/// MoveForward: v = forward_speed, ω = 0, for round(move_forward_time·rate) ticks (180).
+/// A bump ends it (→ GoBack), then the timer (→ MoveInSpiral).
+class MoveForward : public StraightMotion<true> {
+ public:
+  explicit MoveForward(const RoombaParams& p)
+      : StraightMotion(p.forward_speed, p.ticks(p.move_forward_time)) {}
 };
 
 /// MoveInSpiral: v = forward_speed, ω = v / r(t) with r(t) = r0 + b·t and t = k·Δt on its k-th
@@ -99,20 +107,10 @@ class MoveInSpiral {
 
 /// GoBack: v = backward_speed, ω = 0, for round(go_back_time·rate) ticks (30 ticks at −0.1 m/s:
 /// 5 cm). The bumper is ignored; the timer ends it (→ Rotate).
-class GoBack {
+class GoBack : public StraightMotion<false> {
  public:
   explicit GoBack(const RoombaParams& p)
-      : speed_(p.backward_speed), timer_(p.ticks(p.go_back_time)) {}
-  void enter() { timer_.restart(); }
-  MotionEvent check(const sim::BumperState&) const { return timerOnly(timer_); }
-  sim::Velocity execute() {
-    timer_.next();
-    return {speed_, 0.0};
-  }
-
- private:
-  double speed_;
-  TickCounter timer_;
+      : StraightMotion(p.backward_speed, p.ticks(p.go_back_time)) {}
 };
 
 /// Rotate: on enter, draws dθ ∈ [−π, π) (drawAngle); turns in place at angular_speed with the
