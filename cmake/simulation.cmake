@@ -50,6 +50,15 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(sim_invalid_world_test ${catkin_LIBRARIES})
     add_dependencies(sim_invalid_world_test roomba_sim)
   endif()
+
+  # rviz on a virtual X server (xvfb, imagemagick): the config shows robot, walls, coverage map.
+  add_rostest_gtest(sim_rviz_screenshot_test test/sim/sim_rviz.test
+    test/sim/sim_rviz_screenshot_test.cpp)
+  if(TARGET sim_rviz_screenshot_test)
+    target_include_directories(sim_rviz_screenshot_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(sim_rviz_screenshot_test ${catkin_LIBRARIES})
+    add_dependencies(sim_rviz_screenshot_test roomba_sim)
+  endif()
 endif()
 
 # Google Benchmark (libbenchmark-dev): core steps per second. Built only when it is installed.

@@ -37,7 +37,7 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kMarkerPeriod = 0.1;       // wall s between ~markers (10 Hz)
 constexpr double kCoveragePeriod = 0.5;     // wall s between ~coverage (2 Hz)
-constexpr double kCoverageMapPeriod = 1.0;  // wall s between ~coverage_map (1 Hz)
+constexpr double kCoverageMapPeriod = 0.5;  // wall s between ~coverage_map (2 Hz)
 constexpr double kTrailSpacing = 0.02;      // m between trail points
 constexpr std::size_t kTrailLength = 5000;  // points kept (100 m of path)
 constexpr double kMaxLag = 0.25;            // wall s behind schedule before the schedule resets
