@@ -28,8 +28,9 @@ int childElementCount(const XMLElement& element) {
   return count;
 }
 
+/// A builder for node types whose only argument is the instance name.
 template <class Node>
-TreeFactory::Builder controlBuilder() {
+TreeFactory::Builder namedBuilder() {
   return [](const NodeSpec& spec) { return std::make_unique<Node>(spec.name); };
 }
 
@@ -62,13 +63,13 @@ long NodeSpec::integer(const std::string& key) const {
 }
 
 TreeFactory::TreeFactory() {
-  registerNode("Sequence", NodeKind::kControl, controlBuilder<SequenceNode>());
-  registerNode("Selector", NodeKind::kControl, controlBuilder<SelectorNode>());
-  registerNode("Fallback", NodeKind::kControl, controlBuilder<SelectorNode>());
-  registerNode("ReactiveSequence", NodeKind::kControl, controlBuilder<ReactiveSequence>());
-  registerNode("ReactiveSelector", NodeKind::kControl, controlBuilder<ReactiveSelector>());
-  registerNode("ReactiveFallback", NodeKind::kControl, controlBuilder<ReactiveSelector>());
-  registerNode("Inverter", NodeKind::kDecorator, controlBuilder<InverterNode>());
+  registerNode("Sequence", NodeKind::kControl, namedBuilder<SequenceNode>());
+  registerNode("Selector", NodeKind::kControl, namedBuilder<SelectorNode>());
+  registerNode("Fallback", NodeKind::kControl, namedBuilder<SelectorNode>());
+  registerNode("ReactiveSequence", NodeKind::kControl, namedBuilder<ReactiveSequence>());
+  registerNode("ReactiveSelector", NodeKind::kControl, namedBuilder<ReactiveSelector>());
+  registerNode("ReactiveFallback", NodeKind::kControl, namedBuilder<ReactiveSelector>());
+  registerNode("Inverter", NodeKind::kDecorator, namedBuilder<InverterNode>());
   registerNode("Repeat", NodeKind::kDecorator,
                [](const NodeSpec& s) {
                  return std::make_unique<RepeatNode>(s.name,
