@@ -43,9 +43,10 @@ rr_build() {
   RR_BUILD=${1:-$RR_ROOT/build}
   local type=${2:-Release}
   rr_log "building in $RR_BUILD ($type)"
+  mkdir -p "$RR_BUILD"
   cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON >"$RR_BUILD.cmake.log" 2>&1 ||
-    { cat "$RR_BUILD.cmake.log"; return 1; }
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON >"$RR_BUILD/configure.log" 2>&1 ||
+    { cat "$RR_BUILD/configure.log"; return 1; }
   # catkin builds test executables only through its `tests` target.
   cmake --build "$RR_BUILD" -j"$(nproc)"
   if [ "${RR_BUILD_TESTS:-1}" = 1 ]; then cmake --build "$RR_BUILD" -j"$(nproc)" --target tests; fi
