@@ -35,12 +35,13 @@ namespace {
 using sim::World;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kMarkerPeriod = 0.1;       // wall s between ~markers (10 Hz)
-constexpr double kCoveragePeriod = 0.5;     // wall s between ~coverage (2 Hz)
-constexpr double kCoverageMapPeriod = 0.5;  // wall s between ~coverage_map (2 Hz)
-constexpr double kTrailSpacing = 0.02;      // m between trail points
-constexpr std::size_t kTrailLength = 5000;  // points kept (100 m of path)
-constexpr double kMaxLag = 0.25;            // wall s behind schedule before the schedule resets
+constexpr double kMarkerPeriod = 0.1;        // wall s between ~markers (10 Hz)
+constexpr double kCoveragePeriod = 0.5;      // wall s between ~coverage (2 Hz)
+constexpr double kCoverageMapPeriod = 0.5;   // wall s between ~coverage_map (2 Hz)
+constexpr double kTrailSpacing = 0.02;       // m between trail points
+constexpr std::size_t kTrailLength = 5000;   // points kept (100 m of path)
+constexpr std::uint32_t kStateQueue = 1000;  // /odom and /bumper publisher queues
+constexpr double kMaxLag = 0.25;             // wall s behind schedule before the schedule resets
 constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
 constexpr double kWallThickness = 0.05;
 
@@ -120,8 +121,10 @@ class RoombaSimNode {
  public:
   RoombaSimNode(const World& world, bool use_sim_time)
       : pnh_("~"), sim_(world), use_sim_time_(use_sim_time) {
-    odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 100);
-    bumper_pub_ = nh_.advertise<roomba_rrt::Bumper>("bumper", 100);
+    // Deep queues: at real_time_factor 50 these go out 3000 times per second, and a subscriber
+    // that is descheduled for a moment must not lose any.
+    odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", kStateQueue);
+    bumper_pub_ = nh_.advertise<roomba_rrt::Bumper>("bumper", kStateQueue);
     if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("clock", 10);
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     coverage_pub_ = pnh_.advertise<std_msgs::Float32>("coverage", 1, true);
