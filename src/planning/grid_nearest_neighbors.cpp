@@ -28,12 +28,16 @@ void GridNearestNeighbors::resize(int target_cells) {
   std::vector<Entry> entries;
   entries.reserve(size_);
   for (const Cell& c : cells_) forEachInCell(c, [&](const Entry& e) { entries.push_back(e); });
+  // About square cells, but never more cells along one axis than in total (thin bounds).
   const double width = bounds_.x_max - bounds_.x_min;
   const double height = bounds_.y_max - bounds_.y_min;
-  cell_size_ = std::sqrt(width * height / target_cells);
-  inv_cell_size_ = 1.0 / cell_size_;
-  nx_ = std::max(1, static_cast<int>(std::ceil(width * inv_cell_size_)));
-  ny_ = std::max(1, static_cast<int>(std::ceil(height * inv_cell_size_)));
+  const double columns = std::round(std::sqrt(target_cells * width / height));
+  nx_ = static_cast<int>(std::clamp(columns, 1.0, static_cast<double>(target_cells)));
+  ny_ = std::max(1, target_cells / nx_);
+  cell_w_ = width / nx_;
+  cell_h_ = height / ny_;
+  inv_cell_w_ = nx_ / width;
+  inv_cell_h_ = ny_ / height;
   cells_.assign(static_cast<std::size_t>(nx_) * ny_, Cell{});
   overflow_.clear();
   for (const Entry& e : entries) insert(e);
@@ -98,10 +102,10 @@ Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
     const bool down = cy - r > 0, up = cy + r < ny_ - 1;
     if (!left && !right && !down && !up) break;
     double gap = kInf;
-    if (left) gap = std::min(gap, q.x - (bounds_.x_min + (cx - r) * cell_size_));
-    if (right) gap = std::min(gap, bounds_.x_min + (cx + r + 1) * cell_size_ - q.x);
-    if (down) gap = std::min(gap, q.y - (bounds_.y_min + (cy - r) * cell_size_));
-    if (up) gap = std::min(gap, bounds_.y_min + (cy + r + 1) * cell_size_ - q.y);
+    if (left) gap = std::min(gap, q.x - (bounds_.x_min + (cx - r) * cell_w_));
+    if (right) gap = std::min(gap, bounds_.x_min + (cx + r + 1) * cell_w_ - q.x);
+    if (down) gap = std::min(gap, q.y - (bounds_.y_min + (cy - r) * cell_h_));
+    if (up) gap = std::min(gap, bounds_.y_min + (cy + r + 1) * cell_h_ - q.y);
     gap -= kBorderSlack;
     if (gap > 0 && best_d2 < gap * gap) break;
   }

@@ -86,8 +86,10 @@ ToolArguments parseToolArguments(int argc, const char* const* argv,
     } else if (flag == "--max-iterations") {
       o.max_iterations = parseIntFlag(flag, value);
     } else if (flag == "--seed") {
-      const int seed = parseIntFlag(flag, value);
-      if (seed < 0) bad(flag, "must be >= 0");
+      const double seed = parseDoubleFlag(flag, value);
+      if (seed < 0 || seed > UINT32_MAX || seed != std::floor(seed)) {
+        bad(flag, "must be an integer in [0, 4294967295]");
+      }
       o.seed = static_cast<std::uint32_t>(seed);
     } else if (tool_flags.count(flag)) {
       args.tool[flag] = value;

@@ -42,6 +42,9 @@ std::string validateProblem(const Problem& problem) {
   }
   if (!(b.x_min < b.x_max)) return "bounds: x_min must be < x_max (empty or inverted bounds)";
   if (!(b.y_min < b.y_max)) return "bounds: y_min must be < y_max (empty or inverted bounds)";
+  if (!std::isfinite(b.x_max - b.x_min) || !std::isfinite(b.y_max - b.y_min)) {
+    return "bounds: width and height must be finite (got a span beyond double range)";
+  }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
     const std::string field = "obstacles[" + std::to_string(i) + "]";
     const Circle& c = problem.obstacles[i];

@@ -72,6 +72,25 @@ TEST(NearestNeighbors, radius_query_finds_the_same_nodes_as_brute_force) {
   }
 }
 
+TEST(NearestNeighbors, index_stays_small_and_exact_in_very_thin_bounds) {
+  const Bounds thin{0, 1e6, 0, 1e-3};
+  MatlabRandom random(5);
+  GridNearestNeighbors grid;
+  BruteForceNearestNeighbors brute;
+  grid.clear(thin);
+  brute.clear(thin);
+  for (int i = 0; i < 1000; ++i) {
+    const Point2 p{random.uniform(0, 1e6), random.uniform(0, 1e-3)};
+    grid.add(p, i);
+    brute.add(p, i);
+  }
+  EXPECT_LE(grid.cellCount(), 2048);
+  for (int q = 0; q < 1000; ++q) {
+    const Point2 query{random.uniform(0, 1e6), random.uniform(0, 1e-3)};
+    ASSERT_EQ(grid.nearest(query), brute.nearest(query));
+  }
+}
+
 TEST(NearestNeighbors, empty_structures_have_no_nearest_node) {
   GridNearestNeighbors grid;
   grid.clear(kLab);

@@ -70,6 +70,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"inverted bounds",
                  [](Problem& p, PlannerOptions&) { std::swap(p.bounds.y_min, p.bounds.y_max); },
                  "bounds"},
+        BadInput{"span beyond double range",
+                 [](Problem& p, PlannerOptions&) {
+                   p.bounds.x_min = -1e308;
+                   p.bounds.x_max = 1e308;
+                 },
+                 "bounds"},
         BadInput{"zero step", [](Problem&, PlannerOptions& o) { o.step = 0; }, "step"},
         BadInput{"negative step", [](Problem&, PlannerOptions& o) { o.step = -0.2; }, "step"},
         BadInput{"NaN step", [](Problem&, PlannerOptions& o) { o.step = kNaN; }, "step"},

@@ -10,11 +10,11 @@
 
 namespace roomba_rrt::planning {
 
-/// Square cells covering the bounds; each cell stores the coordinates of its first three points
-/// inline (one 64-byte cache line), further points in a shared overflow list. When the points
-/// outnumber 1.5 per cell the grid doubles its cell count and re-inserts everything, so a query
-/// looks at about nine cells whatever the tree size. A query visits rings of cells around the
-/// query's cell until no unvisited cell can hold a closer point.
+/// Cells (about square, however elongated the bounds) covering the bounds; each cell stores the
+/// coordinates of its first three points inline (one 64-byte cache line), further points in a
+/// shared overflow list. When the points outnumber 1.5 per cell the grid doubles its cell count and
+/// re-inserts everything, so a query looks at about nine cells whatever the tree size. A query
+/// visits rings of cells around the query's cell until no unvisited cell can hold a closer point.
 /// Why not a kd-tree: at 10^6 nodes the cost is cache misses, and this layout touches three
 /// short contiguous runs of memory per query (see doc/planning.md for the measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
@@ -47,11 +47,11 @@ class GridNearestNeighbors final : public NearestNeighbors {
   void resize(int target_cells);
   void insert(const Entry& e);
   int cellX(double x) const {
-    const double i = std::floor((x - bounds_.x_min) * inv_cell_size_);
+    const double i = std::floor((x - bounds_.x_min) * inv_cell_w_);
     return i <= 0 ? 0 : (i >= nx_ - 1 ? nx_ - 1 : static_cast<int>(i));
   }
   int cellY(double y) const {
-    const double i = std::floor((y - bounds_.y_min) * inv_cell_size_);
+    const double i = std::floor((y - bounds_.y_min) * inv_cell_h_);
     return i <= 0 ? 0 : (i >= ny_ - 1 ? ny_ - 1 : static_cast<int>(i));
   }
   const Cell& cell(int cx, int cy) const { return cells_[static_cast<std::size_t>(cy) * nx_ + cx]; }
@@ -64,7 +64,7 @@ class GridNearestNeighbors final : public NearestNeighbors {
   }
 
   Bounds bounds_;
-  double cell_size_ = 1, inv_cell_size_ = 1;
+  double cell_w_ = 1, cell_h_ = 1, inv_cell_w_ = 1, inv_cell_h_ = 1;
   int nx_ = 1, ny_ = 1;
   int size_ = 0;
   std::vector<Cell, HugePageAllocator<Cell>> cells_;
