@@ -46,9 +46,10 @@ constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
 constexpr double kWallThickness = 0.05;
 
 /// Reads the world file, then lets every scalar be overridden by a private parameter of the same
-/// path (~real_time_factor, ~initial_pose/x, ~robot/radius, ...) and writes the values in use back
-/// to those parameters. Throws std::invalid_argument naming the bad parameter.
-World loadWorldParameters(ros::NodeHandle& pnh) {
+/// path (~real_time_factor, ~initial_pose/x, ~robot/radius, ...). Nothing is written back: a
+/// value pinned on the master would silently override the file on the next start.
+/// Throws std::invalid_argument naming the bad parameter.
+World loadWorldParameters(const ros::NodeHandle& pnh) {
   const std::string default_file =
       ros::package::getPath("roomba_rrt") + "/config/roomba_world.yaml";
   World world = sim::loadWorld(pnh.param<std::string>("world_file", default_file));
@@ -72,7 +73,6 @@ World loadWorldParameters(ros::NodeHandle& pnh) {
     }
   }
   sim::validate(world);
-  for (const auto& [name, value] : overrides) pnh.setParam(name, *value);  // the values in use
   return world;
 }
 
