@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -79,9 +80,10 @@ double percentile(std::vector<double> samples, double p) {
 struct Series {
   std::string client;  // "persistent" or "per_call"
   std::vector<double> round_trip_us, planning_us, overhead_us;
+  int lost = 0;  // calls whose connection was lost (client.call() false): counted, not timed
 };
 
-// Calls the service `warmup + calls` times and records the last `calls`.
+// Calls the service until `calls` answers after the first `warmup` ones are recorded.
 Series measure(const Options& o, bool persistent) {
   Series s;
   s.client = persistent ? "persistent" : "per_call";
@@ -89,14 +91,21 @@ Series measure(const Options& o, bool persistent) {
   ros::ServiceClient client = nh.serviceClient<roomba_rrt::PlanPath>(o.service, persistent);
   roomba_rrt::PlanPath srv;
   srv.request.scenario = o.scenario;
-  for (int i = 0; i < o.warmup + o.calls; ++i) {
+  for (int i = 0; static_cast<int>(s.round_trip_us.size()) < o.calls; ++i) {
     const auto begin = std::chrono::steady_clock::now();
     const bool ok = client.call(srv);
     const auto end = std::chrono::steady_clock::now();
-    if (!ok || !srv.response.success) {
-      std::cerr << "plan_path_bench: call " << i << (ok ? " answered: " : " failed")
-                << (ok ? srv.response.message : "") << "\n";
-      std::exit(1);
+    if (!ok) {
+      // roscpp occasionally loses a connection under heavy load; a persistent client must then
+      // reconnect (the ROS wiki's advice for persistent clients).
+      if (++s.lost > o.calls / 10) throw std::runtime_error("too many lost calls (node gone?)");
+      if (!client.isValid()) {
+        client = nh.serviceClient<roomba_rrt::PlanPath>(o.service, persistent);
+      }
+      continue;
+    }
+    if (!srv.response.success) {
+      throw std::runtime_error("call " + std::to_string(i) + " answered: " + srv.response.message);
     }
     if (i < o.warmup) continue;
     const double round_trip = std::chrono::duration<double, std::micro>(end - begin).count();
@@ -111,13 +120,14 @@ Series measure(const Options& o, bool persistent) {
 void printTable(const Options& o, const std::vector<Series>& all) {
   std::printf("~plan_path round trip, scenario %s, %d calls (after %d warm-up), markers %s\n\n",
               o.scenario.c_str(), o.calls, o.warmup, o.markers ? "subscribed" : "not subscribed");
-  std::printf("| client | round trip p50 | p99 | planning p50 | p99 | overhead p50 | p99 |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| client | round trip p50 | p99 | planning p50 | p99 | overhead p50 | p99 | lost |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const Series& s : all) {
-    std::printf("| %s | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us |\n",
+    std::printf("| %s | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us | %.0f us | %d |\n",
                 s.client.c_str(), percentile(s.round_trip_us, 50), percentile(s.round_trip_us, 99),
                 percentile(s.planning_us, 50), percentile(s.planning_us, 99),
-                percentile(s.overhead_us, 50), percentile(s.overhead_us, 99));
+                percentile(s.overhead_us, 50), percentile(s.overhead_us, 99), s.lost);
   }
 }
 
@@ -128,12 +138,13 @@ void printJson(const Options& o, const std::vector<Series>& all) {
     std::printf(
         "%s{\"scenario\": \"%s\", \"client\": \"%s\", \"calls\": %d, \"markers\": %s, "
         "\"round_trip_p50_us\": %.1f, \"round_trip_p99_us\": %.1f, \"planning_p50_us\": %.1f, "
-        "\"planning_p99_us\": %.1f, \"overhead_p50_us\": %.1f, \"overhead_p99_us\": %.1f}",
+        "\"planning_p99_us\": %.1f, \"overhead_p50_us\": %.1f, \"overhead_p99_us\": %.1f, "
+        "\"lost_calls\": %d}",
         i == 0 ? "" : ", ", o.scenario.c_str(), s.client.c_str(), o.calls,
         o.markers ? "true" : "false", percentile(s.round_trip_us, 50),
         percentile(s.round_trip_us, 99), percentile(s.planning_us, 50),
-        percentile(s.planning_us, 99), percentile(s.overhead_us, 50),
-        percentile(s.overhead_us, 99));
+        percentile(s.planning_us, 99), percentile(s.overhead_us, 50), percentile(s.overhead_us, 99),
+        s.lost);
   }
   std::printf("]\n");
 }
@@ -159,7 +170,13 @@ int main(int argc, char** argv) {
     spinner.start();
     for (int i = 0; i < 100 && tree.getNumPublishers() == 0; ++i) ros::WallDuration(0.05).sleep();
   }
-  const std::vector<Series> all = {measure(o, /*persistent=*/true), measure(o, false)};
+  std::vector<Series> all;
+  try {
+    all = {measure(o, /*persistent=*/true), measure(o, /*persistent=*/false)};
+  } catch (const std::exception& e) {
+    std::cerr << "plan_path_bench: " << e.what() << "\n";
+    return 1;
+  }
   if (o.json) {
     printJson(o, all);
   } else {

@@ -16,7 +16,13 @@ PlanPath::Request scenarioRequest(const std::string& name) {
 PlanPath::Response callPlanPath(const PlanPath::Request& request) {
   PlanPath srv;
   srv.request = request;
-  EXPECT_TRUE(ros::service::call(kService, srv)) << "the call to " << kService << " failed";
+  if (ros::service::call(kService, srv)) return srv.response;
+  // roscpp's per-call connection is occasionally lost under heavy load (about 1 call in 5000 on
+  // a busy 2-core machine, also with a node that answers every request); one more try keeps the
+  // tests about the node. A node that died or stopped answering still fails here.
+  ROS_WARN_STREAM("the call to " << kService << " failed; trying once more");
+  ros::WallDuration(0.1).sleep();
+  EXPECT_TRUE(ros::service::call(kService, srv)) << "the call to " << kService << " failed twice";
   return srv.response;
 }
 

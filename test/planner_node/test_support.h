@@ -18,7 +18,7 @@ inline constexpr char kPathTopic[] = "/rrt_planner/path";
 PlanPath::Request scenarioRequest(const std::string& name);
 
 /// Calls ~plan_path (a fresh connection, as a separate client would); fails the current test
-/// when the call itself fails (the node died or refused to answer).
+/// when the call itself fails twice (the node died or refused to answer).
 PlanPath::Response callPlanPath(const PlanPath::Request& request);
 
 /// The marker of namespace `ns` (id 0 unless given), or nullptr.
