@@ -1,5 +1,6 @@
 // The lab's RRT (rrt_planning) against OMPL 1.5's stock geometric::RRT, on the same problems with
-// the same parameters and the same collision semantics, timed in the same process.
+// the same parameters and the same collision semantics, timed in the same process (CPU time of
+// the solving thread, median over many solves after a warm-up).
 //
 //   ompl_comparison                      scenarios a-d x {points, segments} and the growth rows,
 //                                        as a Markdown table
@@ -32,9 +33,9 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +61,15 @@ namespace rp = roomba_rrt::planning;
 const std::string kOmplVersion = std::to_string(OMPL_MAJOR_VERSION) + "." +
                                  std::to_string(OMPL_MINOR_VERSION) + "." +
                                  std::to_string(OMPL_PATCH_VERSION);
+
+/// CPU time of the calling thread. Solves are timed with it rather than with the wall clock: on
+/// a shared machine the wall clock also counts the time other processes held the core, which
+/// would make both sides look slower by a varying amount. On an idle machine the two agree.
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 // ---------------------------------------------------------------------------------------------
 // OMPL's side: stock geometric::RRT on a 2-D RealVectorStateSpace.
@@ -115,7 +125,7 @@ class NeverReachedGoal : public ob::GoalState {
 struct Solve {
   bool solved = false;
   double length = 0;   // path length when solved
-  double seconds = 0;  // wall time of the solve call only
+  double seconds = 0;  // CPU time of the solve call only
 };
 
 /// OMPL's RRT set up once for one problem; solve() runs a fresh tree each call.
@@ -163,11 +173,10 @@ class OmplLabRrt {
     planner_->clear();
     pdef_->clearSolutionPaths();
     ob::IterationTerminationCondition stop(iterations);
-    const auto t0 = std::chrono::steady_clock::now();
+    const double t0 = threadCpuSeconds();
     const ob::PlannerStatus status = planner_->solve(stop);
-    const auto t1 = std::chrono::steady_clock::now();
     Solve out;
-    out.seconds = std::chrono::duration<double>(t1 - t0).count();
+    out.seconds = threadCpuSeconds() - t0;
     out.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
     if (out.solved) out.length = pdef_->getSolutionPath()->length();
     return out;
@@ -188,11 +197,10 @@ Solve solveOurs(const rp::Problem& problem, rp::PlannerOptions options, unsigned
                 std::uint32_t seed) {
   options.max_iterations = static_cast<int>(iterations);
   options.seed = seed;
-  const auto t0 = std::chrono::steady_clock::now();
+  const double t0 = threadCpuSeconds();
   const rp::PlanResult result = rp::plan(problem, options);
-  const auto t1 = std::chrono::steady_clock::now();
   Solve out;
-  out.seconds = std::chrono::duration<double>(t1 - t0).count();
+  out.seconds = threadCpuSeconds() - t0;
   out.solved = result.success;
   if (out.solved) out.length = result.length;
   return out;
@@ -357,7 +365,8 @@ void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<Grow
 void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
                    const Config& cfg) {
   std::cout << "RRT vs OMPL " << kOmplVersion << " geometric::RRT (" << cfg.runs
-            << " runs per row after " << cfg.warmup << " warm-up runs; median time per solve)\n\n"
+            << " runs per row after " << cfg.warmup
+            << " warm-up runs; median CPU time per solve)\n\n"
             << "| scenario | mode | solved % ours | solved % OMPL | mean length ours | "
                "mean length OMPL | µs ours | µs OMPL | ours/OMPL |\n"
             << "|---|---|---|---|---|---|---|---|---|\n";
@@ -368,7 +377,7 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
               << " | " << num(r.ompl.median_seconds * 1e6, 1) << " | "
               << num(r.ours.median_seconds / r.ompl.median_seconds, 3) << " |\n";
   }
-  std::cout << "\nGrowth (scenario d's world, unreachable goal, points mode; median of "
+  std::cout << "\nGrowth (scenario d's world, goal never reached, points mode; median of "
             << cfg.growth_reps << ")\n\n"
             << "| iterations | ns/iteration ours | ns/iteration OMPL | ours/OMPL |\n"
             << "|---|---|---|---|\n";
@@ -439,7 +448,7 @@ Config parseArgs(int argc, char** argv) {
   return cfg;
 }
 
-/// One plan, nothing else, then the process's peak RSS on stdout (MB) and the time on stderr.
+/// One plan, nothing else, then its CPU time and the process's peak RSS (MB) as JSON.
 int planOnce(const rp::Problem& world, const Config& cfg) {
   const rp::PlannerOptions options = unreachableGoal();
   Solve s;
