@@ -36,29 +36,25 @@ if(CATKIN_ENABLE_TESTING)
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
 
-  add_rostest_gtest(sim_driving_test test/sim/sim_driving.test test/sim/sim_driving_test.cpp)
+  # A rostest whose test node (gtest) talks to roomba_sim through a real master.
+  function(roomba_sim_rostest target launch_file source)
+    add_rostest_gtest(${target} ${launch_file} ${source})
+    if(TARGET ${target})
+      target_include_directories(${target} PRIVATE ${catkin_INCLUDE_DIRS})
+      target_link_libraries(${target} ${catkin_LIBRARIES})
+      add_dependencies(${target} roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS})
+    endif()
+  endfunction()
+
+  # Driving, bumper, clock, bad commands, reset; in simulated time (10x) and in wall-clock time.
+  roomba_sim_rostest(sim_driving_test test/sim/sim_driving.test test/sim/sim_driving_test.cpp)
   add_rostest(test/sim/sim_wall_clock.test DEPENDENCIES sim_driving_test)
-  if(TARGET sim_driving_test)
-    target_include_directories(sim_driving_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(sim_driving_test ${catkin_LIBRARIES})
-    add_dependencies(sim_driving_test roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS})
-  endif()
-
-  add_rostest_gtest(sim_invalid_world_test test/sim/sim_invalid_world.test
+  # An invalid world stops the node, naming the parameter.
+  roomba_sim_rostest(sim_invalid_world_test test/sim/sim_invalid_world.test
     test/sim/sim_invalid_world_test.cpp)
-  if(TARGET sim_invalid_world_test)
-    target_link_libraries(sim_invalid_world_test ${catkin_LIBRARIES})
-    add_dependencies(sim_invalid_world_test roomba_sim)
-  endif()
-
   # rviz on a virtual X server (xvfb, imagemagick): the config shows robot, walls, coverage map.
-  add_rostest_gtest(sim_rviz_screenshot_test test/sim/sim_rviz.test
+  roomba_sim_rostest(sim_rviz_screenshot_test test/sim/sim_rviz.test
     test/sim/sim_rviz_screenshot_test.cpp)
-  if(TARGET sim_rviz_screenshot_test)
-    target_include_directories(sim_rviz_screenshot_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(sim_rviz_screenshot_test ${catkin_LIBRARIES})
-    add_dependencies(sim_rviz_screenshot_test roomba_sim)
-  endif()
 endif()
 
 # Google Benchmark (libbenchmark-dev): core steps per second. Built only when it is installed.
