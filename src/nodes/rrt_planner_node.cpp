@@ -75,7 +75,11 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   if (!parsed_nearest) throw std::invalid_argument("~nearest: unknown '" + nearest + "'");
   o.nearest = *parsed_nearest;
   d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
-  if (d.max_iterations_cap < 1) throw std::invalid_argument("~max_iterations_cap: must be >= 1");
+  // planning::plan() validates again with the library's own cap, so it bounds ours.
+  if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
+    throw std::invalid_argument("~max_iterations_cap: must be in [1, " +
+                                std::to_string(planning::kDefaultMaxIterationsCap) + "]");
+  }
   // The defaults must make a valid request on their own (the empty request plans with them).
   const planning::Problem problem{d.start, d.goal, {}, d.bounds};
   const std::string error = planning::validate(problem, o, d.max_iterations_cap);
