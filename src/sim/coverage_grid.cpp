@@ -68,10 +68,12 @@ CoverageGrid::CoverageGrid(const World& world)
 void CoverageGrid::markDisc(double x, double y, double r) {
   // In cell units, cell (i, j) has its centre at (i + 0.5, j + 0.5).
   const double cx = x * inverse_cell_ - 0.5, cy = y * inverse_cell_ - 0.5, cr = r * inverse_cell_;
-  // Rows whose centre line is within r of y.
-  const int last_row = std::min(rows_ - 1, floorToInt(cy + cr));
-  for (int first_row = std::max(0, ceilToInt(cy - cr)); first_row <= last_row;
-       first_row += kRowsPerBatch) {
+  if (!(std::isfinite(cx) && std::isfinite(cy) && cr >= 0 && cr < 1e6)) return;
+  // Rows whose centre line is within r of y (clamped before converting, so far-away discs are
+  // safe).
+  const int last_row = std::min(rows_ - 1, floorToInt(std::clamp(cy + cr, -1.0, double(rows_))));
+  for (int first_row = std::max(0, ceilToInt(std::clamp(cy - cr, -1.0, double(rows_))));
+       first_row <= last_row; first_row += kRowsPerBatch) {
     markRows(first_row, std::min(last_row - first_row + 1, kRowsPerBatch), cx, cy, cr);
   }
 }
@@ -85,8 +87,10 @@ void CoverageGrid::markRows(int first_row, int row_count, double cx, double cy, 
   }
   // Pass 2: set the row's span of cells, counting the free ones swept for the first time.
   for (int k = 0; k < row_count; ++k) {
-    const int first = std::max(0, ceilToInt(cx - half_chord[k]));
-    const int last = std::min(columns_ - 1, floorToInt(cx + half_chord[k]));
+    const int first =
+        std::max(0, ceilToInt(std::clamp(cx - half_chord[k], -1.0, double(columns_))));
+    const int last =
+        std::min(columns_ - 1, floorToInt(std::clamp(cx + half_chord[k], -1.0, double(columns_))));
     if (first > last) continue;
     const std::size_t row_start = static_cast<std::size_t>(first_row + k) * words_per_row_;
     for (int word = first / kBitsPerWord; word <= last / kBitsPerWord; ++word) {

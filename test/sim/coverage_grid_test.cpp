@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using roomba_rrt::sim::CoverageGrid;
 using roomba_rrt::sim::World;
@@ -53,4 +54,12 @@ TEST(CoverageGrid, discs_at_the_edge_of_the_room_stay_inside_the_grid) {
   grid.markDisc(6.4, 4.8, 0.17);
   EXPECT_GT(grid.sweptFreeCells(), 0);
   EXPECT_LT(grid.coverage(), 0.01);
+}
+
+TEST(CoverageGrid, discs_far_outside_or_not_finite_mark_nothing) {
+  CoverageGrid grid{World{}};
+  grid.markDisc(1e12, -1e12, 0.17);
+  grid.markDisc(std::nan(""), 2.0, 0.17);
+  grid.markDisc(3.0, 2.0, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(grid.sweptFreeCells(), 0);
 }
