@@ -7,7 +7,10 @@
 namespace roomba_rrt::planning {
 namespace {
 
-constexpr int kInitialCells = 64;
+// Up to this many points a linear scan of one contiguous array beats any grid (the lab's trees
+// have a few hundred nodes); the grid is built when the next point arrives.
+constexpr int kLinearScanLimit = 512;
+constexpr int kFirstGridCells = 512;
 constexpr double kMaxPointsPerCell = 1.5;  // grow (double the cells) beyond this load
 // Cell borders are computed in floating point; shrinking the "nothing closer outside" distance
 // by this much keeps the answer exact (identical to brute force) despite rounding.
@@ -20,7 +23,7 @@ void GridNearestNeighbors::clear(const Bounds& bounds) {
   size_ = 0;
   cells_.clear();
   overflow_.clear();
-  resize(kInitialCells);
+  linear_.clear();
 }
 
 void GridNearestNeighbors::resize(int target_cells) {
@@ -28,6 +31,8 @@ void GridNearestNeighbors::resize(int target_cells) {
   std::vector<Entry> entries;
   entries.reserve(size_);
   for (const Cell& c : cells_) forEachInCell(c, [&](const Entry& e) { entries.push_back(e); });
+  entries.insert(entries.end(), linear_.begin(), linear_.end());
+  linear_.clear();
   // About square cells, but never more cells along one axis than in total (thin bounds).
   const double width = bounds_.x_max - bounds_.x_min;
   const double height = bounds_.y_max - bounds_.y_min;
@@ -40,11 +45,16 @@ void GridNearestNeighbors::resize(int target_cells) {
   inv_cell_h_ = ny_ / height;
   cells_.assign(static_cast<std::size_t>(nx_) * ny_, Cell{});
   overflow_.clear();
+  bx_ = (nx_ + kBlock - 1) / kBlock;
+  by_ = (ny_ + kBlock - 1) / kBlock;
+  block_count_.assign(static_cast<std::size_t>(bx_) * by_, 0);
   for (const Entry& e : entries) insert(e);
 }
 
 void GridNearestNeighbors::insert(const Entry& e) {
-  Cell& cell = cells_[static_cast<std::size_t>(cellY(e.y)) * nx_ + cellX(e.x)];
+  const int cx = cellX(e.x), cy = cellY(e.y);
+  ++block_count_[blockOf(cx, cy)];
+  Cell& cell = cells_[static_cast<std::size_t>(cy) * nx_ + cx];
   for (Entry& slot : cell.inline_entries) {
     if (slot.index < 0) {
       slot = e;
@@ -56,13 +66,35 @@ void GridNearestNeighbors::insert(const Entry& e) {
 }
 
 void GridNearestNeighbors::add(const Point2& p, int index) {
-  if (size_ + 1 > kMaxPointsPerCell * cellCount()) resize(2 * cellCount());
-  insert({p.x, p.y, index});
   ++size_;
+  if (cells_.empty() && size_ <= kLinearScanLimit) {
+    linear_.push_back({p.x, p.y, index});
+    return;
+  }
+  if (cells_.empty()) {
+    resize(kFirstGridCells);
+  } else if (size_ > kMaxPointsPerCell * cellCount()) {
+    resize(2 * cellCount());
+  }
+  insert({p.x, p.y, index});
 }
 
 Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
   if (size_ == 0) return {};
+  if (cells_.empty()) {
+    const Entry* best = &linear_[0];
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (const Entry& e : linear_) {
+      const double dx = e.x - q.x;
+      const double dy = e.y - q.y;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 < best_d2 || (d2 == best_d2 && e.index < best->index)) {
+        best_d2 = d2;
+        best = &e;
+      }
+    }
+    return {best->index, {best->x, best->y}};
+  }
   const int cx = cellX(q.x);
   const int cy = cellY(q.y);
   // At 10^6 points every cell is a cache miss: ask for the 3 x 3 block at once, so the
@@ -84,38 +116,59 @@ Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
       best = &e;
     }
   };
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  for (int r = 0;; ++r) {
-    // Visit the ring of cells at Chebyshev distance r around (cx, cy).
-    const int x0 = std::max(0, cx - r), x1 = std::min(nx_ - 1, cx + r);
-    const int y0 = std::max(0, cy - r), y1 = std::min(ny_ - 1, cy + r);
-    for (int y = y0; y <= y1; ++y) {
-      if (y == cy - r || y == cy + r) {
-        for (int x = x0; x <= x1; ++x) forEachInCell(cell(x, y), consider);
-      } else {
-        if (cx - r >= 0) forEachInCell(cell(cx - r, y), consider);
-        if (r > 0 && cx + r < nx_) forEachInCell(cell(cx + r, y), consider);
+  // 1. Rings of cells around the query's cell; enough whenever the tree is near.
+  constexpr int kCellRings = 3;
+  for (int r = 0; r < kCellRings; ++r) {
+    forEachOnRing(cx, cy, r, nx_, ny_, [&](int x, int y) { forEachInCell(cell(x, y), consider); });
+    if (ringSearchDone(q, cx, cy, r, nx_, ny_, cell_w_, cell_h_, best_d2)) {
+      return {best->index, {best->x, best->y}};
+    }
+  }
+  // 2. Far from every point: rings of blocks, visiting only blocks that hold points. (Cells of
+  //    step 1 may be visited again; the minimum stays the same.)
+  auto visitBlock = [&](int x, int y) {
+    if (block_count_[static_cast<std::size_t>(y) * bx_ + x] == 0) return;
+    for (int fy = y * kBlock; fy < std::min(ny_, (y + 1) * kBlock); ++fy) {
+      for (int fx = x * kBlock; fx < std::min(nx_, (x + 1) * kBlock); ++fx) {
+        forEachInCell(cell(fx, fy), consider);
       }
     }
-    // Done when the visited block covers the grid, or nothing outside it can be closer.
-    const bool left = cx - r > 0, right = cx + r < nx_ - 1;
-    const bool down = cy - r > 0, up = cy + r < ny_ - 1;
-    if (!left && !right && !down && !up) break;
-    double gap = kInf;
-    if (left) gap = std::min(gap, q.x - (bounds_.x_min + (cx - r) * cell_w_));
-    if (right) gap = std::min(gap, bounds_.x_min + (cx + r + 1) * cell_w_ - q.x);
-    if (down) gap = std::min(gap, q.y - (bounds_.y_min + (cy - r) * cell_h_));
-    if (up) gap = std::min(gap, bounds_.y_min + (cy + r + 1) * cell_h_ - q.y);
-    gap -= kBorderSlack;
-    if (gap > 0 && best_d2 < gap * gap) break;
+  };
+  const int bx = cx / kBlock, by = cy / kBlock;
+  for (int r = 0;; ++r) {
+    forEachOnRing(bx, by, r, bx_, by_, visitBlock);
+    if (ringSearchDone(q, bx, by, r, bx_, by_, kBlock * cell_w_, kBlock * cell_h_, best_d2)) {
+      break;
+    }
   }
   return {best->index, {best->x, best->y}};
+}
+
+bool GridNearestNeighbors::ringSearchDone(const Point2& q, int ux, int uy, int r, int units_x,
+                                          int units_y, double unit_w, double unit_h,
+                                          double best_d2) const {
+  const bool left = ux - r > 0, right = ux + r < units_x - 1;
+  const bool down = uy - r > 0, up = uy + r < units_y - 1;
+  if (!left && !right && !down && !up) return true;  // the whole grid has been visited
+  double gap = std::numeric_limits<double>::infinity();
+  if (left) gap = std::min(gap, q.x - (bounds_.x_min + (ux - r) * unit_w));
+  if (right) gap = std::min(gap, bounds_.x_min + (ux + r + 1) * unit_w - q.x);
+  if (down) gap = std::min(gap, q.y - (bounds_.y_min + (uy - r) * unit_h));
+  if (up) gap = std::min(gap, bounds_.y_min + (uy + r + 1) * unit_h - q.y);
+  gap -= kBorderSlack;
+  return gap > 0 && best_d2 < gap * gap;
 }
 
 void GridNearestNeighbors::withinRadius(const Point2& q, double radius,
                                         std::vector<int>& out) const {
   out.clear();
   const double r2 = radius * radius;
+  for (const Entry& e : linear_) {
+    const double dx = e.x - q.x;
+    const double dy = e.y - q.y;
+    if (dx * dx + dy * dy <= r2) out.push_back(e.index);
+  }
+  if (cells_.empty()) return;
   for (int y = cellY(q.y - radius); y <= cellY(q.y + radius); ++y) {
     for (int x = cellX(q.x - radius); x <= cellX(q.x + radius); ++x) {
       forEachInCell(cell(x, y), [&](const Entry& e) {

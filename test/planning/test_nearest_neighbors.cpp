@@ -72,6 +72,24 @@ TEST(NearestNeighbors, radius_query_finds_the_same_nodes_as_brute_force) {
   }
 }
 
+TEST(NearestNeighbors, index_is_exact_for_queries_far_from_every_point) {
+  // A tree that has not crossed scenario d's wall: points above y = 6, queries below y = 4.
+  MatlabRandom random(13);
+  GridNearestNeighbors grid;
+  BruteForceNearestNeighbors brute;
+  grid.clear(kLab);
+  brute.clear(kLab);
+  for (int i = 0; i < 20000; ++i) {
+    const Point2 p{random.uniform(0, 10), random.uniform(6, 10)};
+    grid.add(p, i);
+    brute.add(p, i);
+  }
+  for (int q = 0; q < 20000; ++q) {
+    const Point2 query{random.uniform(0, 10), random.uniform(0, 4)};
+    ASSERT_EQ(grid.nearest(query), brute.nearest(query)) << "query " << q;
+  }
+}
+
 TEST(NearestNeighbors, index_stays_small_and_exact_in_very_thin_bounds) {
   const Bounds thin{0, 1e6, 0, 1e-3};
   MatlabRandom random(5);

@@ -1,6 +1,7 @@
 // A uniform bucket grid over the bounds, re-sized as it fills: the planner's spatial index.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -15,6 +16,11 @@ namespace roomba_rrt::planning {
 /// shared overflow list. When the points outnumber 1.5 per cell the grid doubles its cell count and
 /// re-inserts everything, so a query looks at about nine cells whatever the tree size. A query
 /// visits rings of cells around the query's cell until no unvisited cell can hold a closer point.
+/// A query far from every point (a region the tree has not reached, e.g. beyond scenario d's
+/// wall) would cross many empty rings: after three rings it continues over blocks of 8 x 8 cells,
+/// skipping empty blocks by their point count.
+/// While it holds at most 512 points it has no grid and scans them linearly: on trees that
+/// small one contiguous scan is faster than any index.
 /// Why not a kd-tree: at 10^6 nodes the cost is cache misses, and this layout touches three
 /// short contiguous runs of memory per query (see doc/planning.md for the measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
@@ -44,6 +50,29 @@ class GridNearestNeighbors final : public NearestNeighbors {
     std::int32_t next;
   };
 
+  static constexpr int kBlock = 8;  ///< cells per block side (the coarse level)
+
+  /// True when nothing outside the (2r+1)^2 units around unit (ux, uy) can be closer than
+  /// sqrt(best_d2), or when those units cover the whole grid. Units are cells or blocks.
+  bool ringSearchDone(const Point2& q, int ux, int uy, int r, int units_x, int units_y,
+                      double unit_w, double unit_h, double best_d2) const;
+  /// Calls visit(x, y) for the units (cells or blocks) at Chebyshev distance r from (ux, uy).
+  template <typename Visit>
+  static void forEachOnRing(int ux, int uy, int r, int units_x, int units_y, Visit&& visit) {
+    const int x0 = std::max(0, ux - r), x1 = std::min(units_x - 1, ux + r);
+    const int y0 = std::max(0, uy - r), y1 = std::min(units_y - 1, uy + r);
+    for (int y = y0; y <= y1; ++y) {
+      if (y == uy - r || y == uy + r) {
+        for (int x = x0; x <= x1; ++x) visit(x, y);
+      } else {
+        if (ux - r >= 0) visit(ux - r, y);
+        if (r > 0 && ux + r < units_x) visit(ux + r, y);
+      }
+    }
+  }
+  std::size_t blockOf(int cx, int cy) const {
+    return static_cast<std::size_t>(cy / kBlock) * bx_ + cx / kBlock;
+  }
   void resize(int target_cells);
   void insert(const Entry& e);
   int cellX(double x) const {
@@ -69,6 +98,9 @@ class GridNearestNeighbors final : public NearestNeighbors {
   int size_ = 0;
   std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<OverflowEntry> overflow_;
+  std::vector<Entry> linear_;              ///< all points while there are few (no grid yet)
+  int bx_ = 1, by_ = 1;                    ///< blocks along x and y
+  std::vector<std::int32_t> block_count_;  ///< points per block
 };
 
 }  // namespace roomba_rrt::planning
