@@ -21,12 +21,14 @@ int extend(GrowingTree& t, const Point2& target, const PlannerOptions& options,
 }
 
 // Steps towards `target` until it is reached (returns that node) or blocked (returns -1).
+// The last step lands exactly on the target (steer returns it when within one step).
 int connect(GrowingTree& t, const Point2& target, const PlannerOptions& options,
             const CollisionChecker& checker) {
   while (true) {
     const int added = extend(t, target, options, checker);
     if (added < 0) return -1;
-    if (distance(t.tree.nodes[added], target) < options.goal_tolerance) return added;
+    const Point2& reached = t.tree.nodes[added];
+    if (reached.x == target.x && reached.y == target.y) return added;
   }
 }
 

@@ -101,6 +101,14 @@ TEST(Smoothing, is_reproducible_and_straightens_a_detour_in_an_empty_world) {
   EXPECT_EQ(once.back().x, 4);
 }
 
+TEST(RrtConnect, connects_even_with_zero_goal_tolerance) {
+  PlannerOptions options;
+  options.algorithm = Algorithm::kRrtConnect;
+  options.goal_tolerance = 0;
+  const Problem a = labScenario("a");
+  expectPathConnectsStartToGoal(plan(a, options), a, 1e-12);
+}
+
 TEST(RrtConnect, tree_holds_both_trees_each_with_its_root) {
   PlannerOptions options;
   options.algorithm = Algorithm::kRrtConnect;

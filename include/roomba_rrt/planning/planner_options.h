@@ -24,7 +24,7 @@ enum class NearestSearch {
   kBruteForce,  ///< "brute_force": the lab's linear scan, kept as the reference.
 };
 
-/// The largest `max_iterations` the library accepts by default (about 60 MB of tree and index
+/// The largest `max_iterations` the library accepts by default (about 100 MB of tree and index
 /// per million nodes). Callers may pass their own cap to validate().
 inline constexpr int kDefaultMaxIterationsCap = 5'000'000;
 
