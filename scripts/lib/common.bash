@@ -16,7 +16,7 @@ RR_PACKAGES=(
   python3-visualization-msgs python3-genpy
   librostest-dev python3-rostest python3-roslaunch python3-rosnode python3-rosservice
   python3-rostopic python3-rosgraph rosbash ros-core
-  libeigen3-dev libgtest-dev libnanoflann-dev libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
+  libgtest-dev libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
   libompl-dev libbenchmark-dev
   rviz xvfb libgl1-mesa-dri imagemagick
 )
