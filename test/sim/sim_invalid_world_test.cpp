@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -16,10 +17,19 @@ struct Outcome {
   std::string output;
 };
 
+/// The roomba_sim built next to this test (catkin puts both in devel/lib/roomba_rrt; `rosrun`
+/// would be ambiguous with several build directories inside the package).
+std::string simExecutable() {
+  std::array<char, 4096> self{};
+  const ssize_t n = readlink("/proc/self/exe", self.data(), self.size() - 1);
+  const std::string path(self.data(), n > 0 ? n : 0);
+  return path.substr(0, path.rfind('/') + 1) + "roomba_sim";
+}
+
 /// Runs roomba_sim under a fresh node name with extra command-line arguments.
 Outcome runSim(const std::string& name, const std::string& args) {
   const std::string command =
-      "timeout 30 rosrun roomba_rrt roomba_sim __name:=" + name + " " + args + " 2>&1";
+      "timeout 30 " + simExecutable() + " __name:=" + name + " " + args + " 2>&1";
   Outcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return outcome;
