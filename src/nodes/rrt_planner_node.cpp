@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -42,6 +43,16 @@ planning::Point2 pointParam(const ros::NodeHandle& pnh, const std::string& name,
   return {xy[0], xy[1]};
 }
 
+// A choice given by name ("rrt", "segments", ...), parsed by the library.
+template <typename Enum>
+Enum enumParam(const ros::NodeHandle& pnh, const std::string& name, Enum fallback,
+               std::optional<Enum> (*parse)(const std::string&)) {
+  const auto text = param<std::string>(pnh, name, planning::toString(fallback));
+  const std::optional<Enum> value = parse(text);
+  if (!value) throw std::invalid_argument("~" + name + ": unknown '" + text + "'");
+  return *value;
+}
+
 // The node's defaults for every request field left at zero or empty. The code's fallbacks are
 // the library's (the lab's) values; config/rrt_planner.yaml spells them out.
 NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
@@ -57,23 +68,13 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   o.goal_bias = param(pnh, "goal_bias", o.goal_bias);
   o.max_iterations = param(pnh, "max_iterations", o.max_iterations);
   o.goal_tolerance = param(pnh, "goal_tolerance", o.goal_tolerance);
-  o.seed = static_cast<std::uint32_t>(param(pnh, "seed", static_cast<int>(o.seed)));
+  const int seed = param(pnh, "seed", static_cast<int>(o.seed));
+  if (seed < 0) throw std::invalid_argument("~seed: must be >= 0");
+  o.seed = static_cast<std::uint32_t>(seed);
   o.smooth = param(pnh, "smooth", o.smooth);
-  const auto algorithm = param<std::string>(pnh, "algorithm", planning::toString(o.algorithm));
-  const auto parsed_algorithm = planning::parseAlgorithm(algorithm);
-  if (!parsed_algorithm) throw std::invalid_argument("~algorithm: unknown '" + algorithm + "'");
-  o.algorithm = *parsed_algorithm;
-  const auto collision =
-      param<std::string>(pnh, "collision_check", planning::toString(o.collision));
-  const auto parsed_collision = planning::parseCollisionCheck(collision);
-  if (!parsed_collision) {
-    throw std::invalid_argument("~collision_check: unknown '" + collision + "'");
-  }
-  o.collision = *parsed_collision;
-  const auto nearest = param<std::string>(pnh, "nearest", planning::toString(o.nearest));
-  const auto parsed_nearest = planning::parseNearestSearch(nearest);
-  if (!parsed_nearest) throw std::invalid_argument("~nearest: unknown '" + nearest + "'");
-  o.nearest = *parsed_nearest;
+  o.algorithm = enumParam(pnh, "algorithm", o.algorithm, planning::parseAlgorithm);
+  o.collision = enumParam(pnh, "collision_check", o.collision, planning::parseCollisionCheck);
+  o.nearest = enumParam(pnh, "nearest", o.nearest, planning::parseNearestSearch);
   d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
   // planning::plan() validates again with the library's own cap, so it bounds ours.
   if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
