@@ -38,13 +38,16 @@ rr_install_deps() {
     "${missing[@]}" >/dev/null
 }
 
-# rr_build [BUILD_DIR] [BUILD_TYPE]: configure and build the package; sets RR_BUILD.
+# rr_build [BUILD_DIR] [BUILD_TYPE]: configure and build the package; sets RR_BUILD and RR_DEVEL.
+# The catkin devel space (nodes, tools, setup.bash) goes to devel/ beside build/, not inside it:
+# rosrun ignores every executable below <package>/build/, and the package is the repository root.
 rr_build() {
   RR_BUILD=${1:-$RR_ROOT/build}
+  RR_DEVEL=${RR_DEVEL:-$RR_ROOT/devel}
   local type=${2:-Release}
-  rr_log "building in $RR_BUILD ($type)"
+  rr_log "building in $RR_BUILD ($type), devel space $RR_DEVEL"
   mkdir -p "$RR_BUILD"
-  cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" \
+  cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" -DCATKIN_DEVEL_PREFIX="$RR_DEVEL" \
     -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON >"$RR_BUILD/configure.log" 2>&1 ||
     { cat "$RR_BUILD/configure.log"; return 1; }
   # catkin builds test executables only through its `tests` target.
@@ -56,7 +59,7 @@ rr_build() {
 rr_source() {
   # shellcheck disable=SC1091
   set +u
-  source "$RR_BUILD/devel/setup.bash"
+  source "$RR_DEVEL/setup.bash"
   set -u
 }
 
