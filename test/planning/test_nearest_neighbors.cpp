@@ -54,6 +54,32 @@ TEST(NearestNeighbors, index_returns_the_brute_force_node_on_100000_random_queri
   EXPECT_EQ(nn.grid.nearest({5, 5}), 97);  // the lowest of the duplicates
 }
 
+TEST(NearestNeighbors, small_trees_scanned_linearly_give_the_brute_force_node_and_lowest_tie) {
+  // Below 512 points the index scans arrays four points at a time; every size 1..300 (so every
+  // remainder of the padding), duplicates included.
+  MatlabRandom random(5);
+  GridAndReference nn(kLab);
+  for (int i = 0; i < 300; ++i) {
+    nn.add(i % 7 == 3 ? Point2{2, 2} : uniformIn(kLab, random));
+    for (int q = 0; q < 20; ++q) {
+      const Point2 query = q == 0 ? Point2{2, 2} : uniformIn(kLab, random);
+      ASSERT_EQ(nn.grid.nearest(query), nn.brute.nearest(query)) << "size " << i + 1;
+    }
+  }
+  EXPECT_EQ(nn.grid.nearest({2, 2}), 3);
+}
+
+TEST(NearestNeighbors, small_tree_with_indices_out_of_order_still_breaks_ties_by_index) {
+  GridNearestNeighbors grid;
+  grid.clear(kLab);
+  grid.add({1, 1}, 9);
+  grid.add({4, 4}, 5);
+  grid.add({3, 3}, 2);
+  grid.add({4, 4}, 1);  // the same point as index 5, lower index
+  EXPECT_EQ(grid.nearest({4.1, 4.1}), 1);
+  EXPECT_EQ(grid.nearest({0, 0}), 9);
+}
+
 TEST(NearestNeighbors, index_answers_right_while_growing_through_resizes) {
   MatlabRandom random(11);
   GridAndReference nn(kLab);

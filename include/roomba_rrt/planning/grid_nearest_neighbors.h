@@ -20,7 +20,8 @@ namespace roomba_rrt::planning {
 /// wall) would cross many empty rings: after three rings it continues over blocks of 8 x 8 cells,
 /// skipping empty blocks by their point count.
 /// While it holds at most 512 points it has no grid and scans them linearly: on trees that
-/// small one contiguous scan is faster than any index.
+/// small one contiguous scan is faster than any index. The scan reads the coordinates as two
+/// separate arrays (x's, y's), four points per SIMD instruction (see linearNearest() in the .cpp).
 /// Why not a kd-tree: at 10^6 nodes the cost is cache misses, and this layout touches three
 /// short contiguous runs of memory per query (see doc/planning.md for the measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
@@ -98,7 +99,19 @@ class GridNearestNeighbors final : public NearestNeighbors {
   int size_ = 0;
   std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<OverflowEntry> overflow_;
-  std::vector<Entry> linear_;              ///< all points while there are few (no grid yet)
+  /// All points while there are few (no grid yet), as separate arrays so that a scan loads four
+  /// x's (or y's) at once. The arrays are padded with NaN up to a multiple of kLinearPad, which
+  /// never compares less than a distance; ids_ has no padding.
+  static constexpr int kLinearPad = 8;
+  std::vector<double> linear_x_, linear_y_;
+  std::vector<std::int32_t> linear_ids_;
+  /// True while linear_ids_ only grows (a planner adds nodes in index order): then the first
+  /// minimum in scan order is also the one with the lowest index.
+  bool linear_ids_increasing_ = true;
+  void addLinear(const Point2& p, int index);
+  Neighbor linearNeighbor(int slot) const {
+    return {linear_ids_[slot], {linear_x_[slot], linear_y_[slot]}};
+  }
   int bx_ = 1, by_ = 1;                    ///< blocks along x and y
   std::vector<std::int32_t> block_count_;  ///< points per block
 };
