@@ -13,7 +13,6 @@
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,6 +22,8 @@
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include "../common/run_node.h"
 
 namespace {
 
@@ -153,31 +154,11 @@ TEST(BehaviorNodeStartup, without_bumper_messages_the_node_commands_zero_velocit
   EXPECT_EQ(moving, 0);
 }
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;
-};
-
-/// The directory of this test executable, where catkin also puts the nodes (devel/lib/roomba_rrt).
-std::string executableDir() {
-  std::array<char, 4096> path{};
-  const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
-  const std::string self(path.data(), n > 0 ? static_cast<std::size_t>(n) : 0);
-  return self.substr(0, self.rfind('/'));
-}
+using roomba_rrt::test::Outcome;
 
 /// Runs a behaviour node binary with extra arguments and collects its exit code and output.
 Outcome runNode(const std::string& type, const std::string& args) {
-  const std::string command = "timeout 30 " + executableDir() + "/" + type + " __name:=startup_" +
-                              std::to_string(getpid()) + " " + args + " 2>&1";
-  Outcome outcome;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return outcome;
-  std::array<char, 512> line;
-  while (fgets(line.data(), line.size(), pipe)) outcome.output += line.data();
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+  return roomba_rrt::test::runNode(type, "startup_" + std::to_string(getpid()), args);
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {

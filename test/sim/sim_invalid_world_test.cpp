@@ -2,42 +2,21 @@
 // parameter. Runs the real binary under the rostest master with bad private parameters.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "../common/run_node.h"
+
 namespace {
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;
-};
-
-/// The roomba_sim built next to this test (catkin puts both in devel/lib/roomba_rrt; `rosrun`
-/// would be ambiguous with several build directories inside the package).
-std::string simExecutable() {
-  std::array<char, 4096> self{};
-  const ssize_t n = readlink("/proc/self/exe", self.data(), self.size() - 1);
-  const std::string path(self.data(), n > 0 ? n : 0);
-  return path.substr(0, path.rfind('/') + 1) + "roomba_sim";
-}
+using roomba_rrt::test::Outcome;
 
 /// Runs roomba_sim under a fresh node name with extra command-line arguments.
 Outcome runSim(const std::string& name, const std::string& args) {
-  const std::string command =
-      "timeout 30 " + simExecutable() + " __name:=" + name + " " + args + " 2>&1";
-  Outcome outcome;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return outcome;
-  std::array<char, 512> buffer;
-  while (fgets(buffer.data(), buffer.size(), pipe)) outcome.output += buffer.data();
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+  return roomba_rrt::test::runNode("roomba_sim", name, args);
 }
 
 void expectRefused(const Outcome& outcome, const std::string& parameter) {
