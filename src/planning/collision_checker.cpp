@@ -1,19 +1,4 @@
+// CollisionChecker is defined inline in its header: its tests run once or more per planner
+// iteration, and an out-of-line call (which the shared library cannot inline) would cost as much
+// as the test itself.
 #include "roomba_rrt/planning/collision_checker.h"
-
-namespace roomba_rrt::planning {
-
-bool CollisionChecker::isFree(const Point2& p) const {
-  for (const Circle& c : obstacles_) {
-    if (contains(c, p)) return false;
-  }
-  return true;
-}
-
-bool CollisionChecker::isSegmentFree(const Point2& a, const Point2& b) const {
-  for (const Circle& c : obstacles_) {
-    if (segmentMeetsCircle(a, b, c)) return false;
-  }
-  return true;
-}
-
-}  // namespace roomba_rrt::planning

@@ -34,10 +34,11 @@ __attribute__((target_clones("avx2", "default"))) int linearNearest(const double
   using V = double __attribute__((vector_size(32)));
   constexpr double inf = std::numeric_limits<double>::infinity();
   const V vqx = {qx, qx, qx, qx}, vqy = {qy, qy, qy, qy};
-  const V lane = {0, 1, 2, 3};
+  const V eight = {8, 8, 8, 8};
   V best_lo = {inf, inf, inf, inf}, best_hi = best_lo;  // slots i..i+3 and i+4..i+7
   V slot_lo = {-1, -1, -1, -1}, slot_hi = slot_lo;
-  for (int i = 0; i < n; i += 8) {
+  V here_lo = {0, 1, 2, 3}, here_hi = {4, 5, 6, 7};  // the slots being compared
+  for (int i = 0; i < n; i += 8, here_lo += eight, here_hi += eight) {
     V x_lo, y_lo, x_hi, y_hi;
     __builtin_memcpy(&x_lo, xs + i, sizeof(V));
     __builtin_memcpy(&y_lo, ys + i, sizeof(V));
@@ -49,11 +50,10 @@ __attribute__((target_clones("avx2", "default"))) int linearNearest(const double
     const V d2_hi = dx_hi * dx_hi + dy_hi * dy_hi;
     const auto closer_lo = d2_lo < best_lo;
     const auto closer_hi = d2_hi < best_hi;
-    const double first = i;
     best_lo = closer_lo ? d2_lo : best_lo;
-    slot_lo = closer_lo ? lane + first : slot_lo;
+    slot_lo = closer_lo ? here_lo : slot_lo;
     best_hi = closer_hi ? d2_hi : best_hi;
-    slot_hi = closer_hi ? lane + (first + 4) : slot_hi;
+    slot_hi = closer_hi ? here_hi : slot_hi;
   }
   double best = inf;
   int slot = -1;
@@ -81,6 +81,10 @@ void GridNearestNeighbors::clear(const Bounds& bounds) {
   linear_y_.clear();
   linear_ids_.clear();
   linear_ids_increasing_ = true;
+  // The linear phase never grows beyond this: allocate once per plan, not while growing.
+  linear_x_.reserve(kLinearScanLimit + kLinearPad);
+  linear_y_.reserve(kLinearScanLimit + kLinearPad);
+  linear_ids_.reserve(kLinearScanLimit);
 }
 
 void GridNearestNeighbors::addLinear(const Point2& p, int index) {

@@ -1,13 +1,8 @@
 #include "roomba_rrt/planning/rrt.h"
 
-namespace roomba_rrt::planning {
+#include <algorithm>
 
-Point2 steer(const Point2& q_near, const Point2& q_rand, double step) {
-  const double d = distance(q_near, q_rand);
-  if (d <= step) return q_rand;
-  // q_near + step * (q_rand - q_near) / d, evaluated in the lab's order.
-  return {q_near.x + step * (q_rand.x - q_near.x) / d, q_near.y + step * (q_rand.y - q_near.y) / d};
-}
+namespace roomba_rrt::planning {
 
 void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const Bounds& bounds) {
   tree.clear();
@@ -15,27 +10,11 @@ void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const 
   nearest.add(root, tree.add(root, -1));
 }
 
-std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions& options,
-                                   const PlannerParts& parts) {
-  if (parts.random.uniform() < options.goal_bias) return problem.goal;
-  return parts.sampler.sample(parts.random);
-}
-
-int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
-               const Point2& target, double step) {
-  // Nearest tree node.
-  const auto [near, q_near] = nearest.nearestNeighbor(target);
-  // Extend from it by at most one step.
-  const Point2 q_new = steer(q_near, target, step);
-  // Check the new node (points) or the new edge (segments); a collision wastes the iteration.
-  // A step of length zero (the target is already a node, e.g. the goal with epsilon = 0) adds
-  // nothing either; it never happens in the lab's runs, which stop at the goal.
-  if (!checker.isMotionFree(q_near, q_new)) return -1;
-  if (q_new.x == q_near.x && q_new.y == q_near.y) return -1;
-  // Insert it with q_near as parent.
-  const int added = tree.add(q_new, near);
-  nearest.add(q_new, added);
-  return added;
+std::size_t nodeCapacity(int max_iterations) {
+  // A run adds at most one node per iteration. Reserving more than a few million is pointless:
+  // a run allowed that many iterations usually stops long before, and the arrays can still grow.
+  constexpr std::size_t kCap = std::size_t{1} << 22;
+  return std::min(static_cast<std::size_t>(std::max(max_iterations, 0)) + 1, kCap);
 }
 
 std::string noFreeSpaceMessage(const FreeSpaceSampler& sampler) {
@@ -48,6 +27,7 @@ PlanResult solveRrt(const Problem& problem, const PlannerOptions& options, Plann
   PlanResult result;
   Tree& tree = result.tree;
   plantTree(tree, parts.nearest, problem.start, problem.bounds);
+  tree.reserve(nodeCapacity(options.max_iterations));  // the arrays never move while it grows
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     result.iterations = iteration;

@@ -71,6 +71,7 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
   PlanResult result;
   Tree& tree = result.tree;
   plantTree(tree, parts.nearest, problem.start, problem.bounds);
+  tree.reserve(nodeCapacity(options.max_iterations));
   CostsFromRoot cost;
   cost.addRoot();
   std::vector<int> near;

@@ -9,15 +9,26 @@
 
 namespace roomba_rrt::planning {
 
+/// Every member is inline: the planner asks it once or more per iteration.
 class CollisionChecker {
  public:
   CollisionChecker(std::vector<Circle> obstacles, CollisionCheck mode)
       : obstacles_(std::move(obstacles)), mode_(mode) {}
 
   /// True when p is outside every (closed) disc.
-  bool isFree(const Point2& p) const;
+  bool isFree(const Point2& p) const {
+    for (const Circle& c : obstacles_) {
+      if (contains(c, p)) return false;
+    }
+    return true;
+  }
   /// True when the whole segment a-b is outside every disc (exact segment-circle test).
-  bool isSegmentFree(const Point2& a, const Point2& b) const;
+  bool isSegmentFree(const Point2& a, const Point2& b) const {
+    for (const Circle& c : obstacles_) {
+      if (segmentMeetsCircle(a, b, c)) return false;
+    }
+    return true;
+  }
   /// The planner's check of a new edge from a (already in the tree) to b, by mode:
   /// `points` checks only b (the lab), `segments` the whole edge.
   bool isMotionFree(const Point2& a, const Point2& b) const {

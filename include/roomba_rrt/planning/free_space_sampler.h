@@ -17,7 +17,15 @@ class FreeSpaceSampler {
   FreeSpaceSampler(const Bounds& bounds, const CollisionChecker& checker, int max_tries)
       : bounds_(bounds), checker_(checker), max_tries_(max_tries) {}
 
-  std::optional<Point2> sample(MatlabRandom& random) const;
+  std::optional<Point2> sample(MatlabRandom& random) const {
+    for (int attempt = 0; attempt < max_tries_; ++attempt) {
+      // The lab's order: x first, then y, each from its own rand().
+      const double x = random.uniform(bounds_.x_min, bounds_.x_max);
+      const double y = random.uniform(bounds_.y_min, bounds_.y_max);
+      if (checker_.isFree({x, y})) return Point2{x, y};
+    }
+    return std::nullopt;
+  }
   int maxTries() const { return max_tries_; }
 
  private:

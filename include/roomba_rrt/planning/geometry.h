@@ -1,6 +1,7 @@
 // Plane geometry of the planning world: points, circular obstacles, the sampling box.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -47,7 +48,20 @@ inline bool contains(const Circle& circle, const Point2& p) {
 
 /// True when the segment a-b has a point in the closed disc (exact segment-circle test:
 /// the distance from the centre to the closest point of the segment is at most the radius).
-bool segmentMeetsCircle(const Point2& a, const Point2& b, const Circle& circle);
+/// Inline, as the other small tests here: the planner calls it for every obstacle on every step.
+inline bool segmentMeetsCircle(const Point2& a, const Point2& b, const Circle& circle) {
+  // Closest point of the segment to the centre: a + t (b - a), t clamped to [0, 1].
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) {
+    t = ((circle.center.x - a.x) * dx + (circle.center.y - a.y) * dy) / length_sq;
+    t = std::clamp(t, 0.0, 1.0);
+  }
+  const Point2 closest{a.x + t * dx, a.y + t * dy};
+  return contains(circle, closest);
+}
 
 /// Sum of the lengths of consecutive segments; 0 for fewer than two points.
 double pathLength(const std::vector<Point2>& path);

@@ -26,7 +26,12 @@ struct ProgressCallback {
 
 /// The extend rule: q_rand itself when it is within `step` of q_near, otherwise the point at
 /// distance `step` from q_near towards q_rand.
-Point2 steer(const Point2& q_near, const Point2& q_rand, double step);
+inline Point2 steer(const Point2& q_near, const Point2& q_rand, double step) {
+  const double d = distance(q_near, q_rand);
+  if (d <= step) return q_rand;
+  // q_near + step * (q_rand - q_near) / d, evaluated in the lab's order.
+  return {q_near.x + step * (q_rand.x - q_near.x) / d, q_near.y + step * (q_rand.y - q_near.y) / d};
+}
 
 /// The collaborators every planner is handed, so each can be swapped without touching a loop.
 struct PlannerParts {
@@ -39,16 +44,40 @@ struct PlannerParts {
 /// Makes `tree` a single root node at `root` and `nearest` an index of it over `bounds`.
 void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const Bounds& bounds);
 
+// steer, sampleTarget and extendTree are inline: they run every iteration, and a shared library
+// cannot inline calls to its own exported functions.
+
 /// Step 1 of an iteration: one rand() for the goal bias (the goal when r < p), otherwise a
 /// free-space sample (x, then y, per rejection try). std::nullopt when no free point was found.
-std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions& options,
-                                   const PlannerParts& parts);
+inline std::optional<Point2> sampleTarget(const Problem& problem, const PlannerOptions& options,
+                                          const PlannerParts& parts) {
+  if (parts.random.uniform() < options.goal_bias) return problem.goal;
+  return parts.sampler.sample(parts.random);
+}
 
 /// Steps 2-5 (LaValle's EXTEND): nearest node to `target`, steer by at most `step`, check the
 /// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked
 /// or if the step has length zero (the target is already a tree node).
-int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
-               const Point2& target, double step);
+inline int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
+                      const Point2& target, double step) {
+  // Nearest tree node.
+  const auto [near, q_near] = nearest.nearestNeighbor(target);
+  // Extend from it by at most one step.
+  const Point2 q_new = steer(q_near, target, step);
+  // Check the new node (points) or the new edge (segments); a collision wastes the iteration.
+  // A step of length zero (the target is already a node, e.g. the goal with epsilon = 0) adds
+  // nothing either; it never happens in the lab's runs, which stop at the goal.
+  if (!checker.isMotionFree(q_near, q_new)) return -1;
+  if (q_new.x == q_near.x && q_new.y == q_near.y) return -1;
+  // Insert it with q_near as parent.
+  const int added = tree.add(q_new, near);
+  nearest.add(q_new, added);
+  return added;
+}
+
+/// How many nodes a run of `max_iterations` can hold at most (the root and one per iteration),
+/// capped at 2^22; planners reserve their tree arrays with it, so they are not copied as they grow.
+std::size_t nodeCapacity(int max_iterations);
 
 /// The message of a run that found no free point to sample.
 std::string noFreeSpaceMessage(const FreeSpaceSampler& sampler);
