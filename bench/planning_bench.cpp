@@ -67,7 +67,7 @@ void BM_IterationOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
   rp::Tree tree = largeTree(nodes);
   tree.reserve(nodes + nodes / 10 + 1);  // no reallocation inside the measurement
   const auto nearest = rp::makeNearestNeighbors(nn);
-  nearest->clear(problem.bounds);
+  nearest->clear(problem.bounds, tree.nodes);
   for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
   const rp::CollisionChecker checker(problem.obstacles, options.collision);
   const rp::FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
@@ -87,7 +87,7 @@ void BM_NearestOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
   const rp::Problem& problem = scenarios().at("d");
   const rp::Tree& tree = largeTree(nodes);
   const auto nearest = rp::makeNearestNeighbors(nn);
-  nearest->clear(problem.bounds);
+  nearest->clear(problem.bounds, tree.nodes);
   for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
   const rp::CollisionChecker checker(problem.obstacles, rp::CollisionCheck::kPoints);
   const rp::FreeSpaceSampler sampler(problem.bounds, checker, 1000);

@@ -2,7 +2,8 @@
 
 namespace roomba_rrt::planning {
 
-void BruteForceNearestNeighbors::clear(const Bounds& /*bounds*/) {
+void BruteForceNearestNeighbors::clear(const Bounds& /*bounds*/,
+                                       const std::vector<Point2>& /*positions*/) {
   points_.clear();
   indices_.clear();
 }

@@ -11,10 +11,18 @@ namespace {
 // have a few hundred nodes); the grid is built when the next point arrives.
 constexpr int kLinearScanLimit = 512;
 constexpr int kFirstGridCells = 512;
-constexpr double kMaxPointsPerCell = 1.5;  // grow (double the cells) beyond this load
+constexpr double kMaxPointsPerCell = 4;  // grow (double the cells) beyond this load
 // Cell borders are computed in floating point; shrinking the "nothing closer outside" distance
 // by this much keeps the answer exact (identical to brute force) despite rounding.
 constexpr double kBorderSlack = 1e-9;
+// Relative slack on the float pre-filter's bounds, far above the rounding of the double
+// arithmetic that computes them (a few 1e-16).
+constexpr double kRelativeSlack = 1e-9;
+
+/// How far a point's float copy can lie from the point, when no coordinate exceeds max_abs: a
+/// float is within 2^-24 |x| of x, so the copy is within sqrt(2) 2^-24 max_abs (2^-23 max_abs
+/// rounds that up; the tiny term covers float's subnormal range).
+double floatCopyError(double max_abs) { return max_abs * 0x1p-23 + 1e-40; }
 
 /// The slot of the nearest of `n` points, given as x[] and y[] padded with NaN to a multiple of 8,
 /// to (qx, qy): the first slot, in array order, where dx*dx + dy*dy is smallest; -1 when no
@@ -72,8 +80,67 @@ __attribute__((target_clones("avx2", "default"))) int linearNearest(const double
 
 }  // namespace
 
-void GridNearestNeighbors::clear(const Bounds& bounds) {
+/// What a grid query has seen so far. The grid lives in "float space": each point is stored,
+/// and put in its cell, by its float copy, and distances here are from those copies ("float
+/// distances"). `error` bounds how far a float copy lies from its exact point, so a point's exact
+/// distance is within `error` of its float distance.
+///  - best_d2: the smallest squared float distance seen.
+///  - The exact nearest point is at least as close as the float-best point, whose exact distance
+///    is at most sqrt(best_d2) + error; so its float distance is at most sqrt(best_d2) + 2 error.
+///    Points within that bound are kept as candidates (nearly always just one), and so is the
+///    ring search's radius: reachD2(). No float copy beyond it can be the nearest point's.
+struct GridNearestNeighbors::Search {
+  static constexpr int kMaxCandidates = 16;
+  Point2 q;
+  double error = 0;
+  const Point2* positions = nullptr;  ///< to prefetch the exact coordinates of a new best
+  double best_d2 = std::numeric_limits<double>::infinity();
+  double keep_d2 = std::numeric_limits<double>::infinity();  ///< (sqrt(best_d2) + 2 error)^2
+  int count = 0;
+  bool overflowed = false;  ///< more candidates than fit: exactNearest() looks again
+  std::int32_t index[kMaxCandidates];
+  double d2[kMaxCandidates];
+
+  double floatD2(const Entry& e) const {
+    const double dx = static_cast<double>(e.x) - q.x;
+    const double dy = static_cast<double>(e.y) - q.y;
+    return dx * dx + dy * dy;
+  }
+  void consider(const Entry& e) {
+    const double d2_e = floatD2(e);
+    if (d2_e > keep_d2) return;
+    if (d2_e < best_d2) {
+      // Its exact coordinates will be read at the end: start loading them now (at 10^6 nodes
+      // that is a cache miss, which then overlaps the rest of the search).
+      __builtin_prefetch(positions + e.index);
+      best_d2 = d2_e;
+      const double keep = (std::sqrt(best_d2) + 2 * error) * (1 + kRelativeSlack);
+      keep_d2 = keep * keep;
+    }
+    if (count == kMaxCandidates) {  // drop the candidates that a closer point has ruled out
+      int kept = 0;
+      for (int k = 0; k < count; ++k) {
+        if (d2[k] <= keep_d2) {
+          index[kept] = index[k];
+          d2[kept++] = d2[k];
+        }
+      }
+      count = kept;
+    }
+    if (count == kMaxCandidates) {
+      overflowed = true;
+      return;
+    }
+    index[count] = e.index;
+    d2[count++] = d2_e;
+  }
+  double reachD2() const { return keep_d2; }
+};
+
+void GridNearestNeighbors::clear(const Bounds& bounds, const std::vector<Point2>& positions) {
   bounds_ = bounds;
+  positions_ = &positions;
+  max_abs_coordinate_ = 0;
   size_ = 0;
   cells_.clear();
   overflow_.clear();
@@ -100,16 +167,22 @@ void GridNearestNeighbors::addLinear(const Point2& p, int index) {
 }
 
 void GridNearestNeighbors::resize(int target_cells) {
-  // Take every entry out, lay a finer grid, put them back.
+  // Take every entry out (12 bytes a point), free the old cells, lay a finer grid, put the entries
+  // back. Reading them cell by cell keeps both the reads and the writes local.
   std::vector<Entry> entries;
   entries.reserve(size_);
   for (const Cell& c : cells_) forEachInCell(c, [&](const Entry& e) { entries.push_back(e); });
   for (std::size_t i = 0; i < linear_ids_.size(); ++i) {
-    entries.push_back({linear_x_[i], linear_y_[i], linear_ids_[i]});
+    entries.push_back(
+        {static_cast<float>(linear_x_[i]), static_cast<float>(linear_y_[i]), linear_ids_[i]});
+    max_abs_coordinate_ =
+        std::max({max_abs_coordinate_, std::abs(linear_x_[i]), std::abs(linear_y_[i])});
   }
-  linear_x_.clear();
-  linear_y_.clear();
-  linear_ids_.clear();
+  linear_x_ = {};
+  linear_y_ = {};
+  linear_ids_ = {};
+  decltype(cells_)().swap(cells_);
+  decltype(overflow_)().swap(overflow_);
   // About square cells, but never more cells along one axis than in total (thin bounds).
   const double width = bounds_.x_max - bounds_.x_min;
   const double height = bounds_.y_max - bounds_.y_min;
@@ -121,7 +194,6 @@ void GridNearestNeighbors::resize(int target_cells) {
   inv_cell_w_ = nx_ / width;
   inv_cell_h_ = ny_ / height;
   cells_.assign(static_cast<std::size_t>(nx_) * ny_, Cell{});
-  overflow_.clear();
   bx_ = (nx_ + kBlock - 1) / kBlock;
   by_ = (ny_ + kBlock - 1) / kBlock;
   block_count_.assign(static_cast<std::size_t>(bx_) * by_, 0);
@@ -129,7 +201,7 @@ void GridNearestNeighbors::resize(int target_cells) {
 }
 
 void GridNearestNeighbors::insert(const Entry& e) {
-  const int cx = cellX(e.x), cy = cellY(e.y);
+  const int cx = cellX(e.x), cy = cellY(e.y);  // the float copy decides the cell
   ++block_count_[blockOf(cx, cy)];
   Cell& cell = cells_[static_cast<std::size_t>(cy) * nx_ + cx];
   for (Entry& slot : cell.inline_entries) {
@@ -153,7 +225,8 @@ void GridNearestNeighbors::add(const Point2& p, int index) {
   } else if (size_ > kMaxPointsPerCell * cellCount()) {
     resize(2 * cellCount());
   }
-  insert({p.x, p.y, index});
+  max_abs_coordinate_ = std::max({max_abs_coordinate_, std::abs(p.x), std::abs(p.y)});
+  insert({static_cast<float>(p.x), static_cast<float>(p.y), index});
 }
 
 Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
@@ -188,23 +261,22 @@ Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
       __builtin_prefetch(row);
     }
   }
-  const Entry* best = nullptr;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  auto consider = [&](const Entry& e) {
-    const double dx = e.x - q.x;
-    const double dy = e.y - q.y;
-    const double d2 = dx * dx + dy * dy;  // the same formula as squaredDistance()
-    if (d2 < best_d2 || (d2 == best_d2 && e.index < best->index)) {
-      best_d2 = d2;
-      best = &e;
-    }
-  };
+  Search search;
+  search.q = q;
+  search.error = floatCopyError(max_abs_coordinate_);
+  search.positions = positions_->data();
+  auto consider = [&](const Entry& e) { search.consider(e); };
   // 1. Rings of cells around the query's cell; enough whenever the tree is near.
   constexpr int kCellRings = 3;
   for (int r = 0; r < kCellRings; ++r) {
-    forEachOnRing(cx, cy, r, nx_, ny_, [&](int x, int y) { forEachInCell(cell(x, y), consider); });
-    if (ringSearchDone(q, cx, cy, r, nx_, ny_, cell_w_, cell_h_, best_d2)) {
-      return {best->index, {best->x, best->y}};
+    forEachOnRing(cx, cy, r, nx_, ny_, [&](int x, int y) {
+      // Skip a cell that lies wholly beyond the candidates' radius (most of the ring around a
+      // query, once its own cell has given a near point).
+      if (r > 0 && cellGapD2(q, x, y) > search.keep_d2) return;
+      forEachInCell(cell(x, y), consider);
+    });
+    if (ringSearchDone(q, cx, cy, r, nx_, ny_, cell_w_, cell_h_, search.reachD2())) {
+      return exactNearest(q, search);
     }
   }
   // 2. Far from every point: rings of blocks, visiting only blocks that hold points. (Cells of
@@ -220,11 +292,54 @@ Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
   const int bx = cx / kBlock, by = cy / kBlock;
   for (int r = 0;; ++r) {
     forEachOnRing(bx, by, r, bx_, by_, visitBlock);
-    if (ringSearchDone(q, bx, by, r, bx_, by_, kBlock * cell_w_, kBlock * cell_h_, best_d2)) {
+    if (ringSearchDone(q, bx, by, r, bx_, by_, kBlock * cell_w_, kBlock * cell_h_,
+                       search.reachD2())) {
       break;
     }
   }
-  return {best->index, {best->x, best->y}};
+  return exactNearest(q, search);
+}
+
+Neighbor GridNearestNeighbors::exactNearest(const Point2& q, const Search& search) const {
+  // Among the candidates, the exact answer: the smallest squaredDistance(), then the lowest index.
+  int best = -1;
+  double best_d2 = 0;
+  auto decide = [&](int index) {
+    const double d2 = squaredDistance((*positions_)[index], q);
+    if (best < 0 || d2 < best_d2 || (d2 == best_d2 && index < best)) {
+      best = index;
+      best_d2 = d2;
+    }
+  };
+  if (!search.overflowed) {
+    for (int k = 0; k < search.count; ++k) {
+      if (search.d2[k] <= search.keep_d2) decide(search.index[k]);
+    }
+  } else {
+    // More than kMaxCandidates points within the float error of each other (duplicates): look
+    // again at every cell that can hold a candidate.
+    const double r = std::sqrt(search.keep_d2);
+    for (int y = cellY(q.y - r); y <= cellY(q.y + r); ++y) {
+      for (int x = cellX(q.x - r); x <= cellX(q.x + r); ++x) {
+        forEachInCell(cell(x, y), [&](const Entry& e) {
+          if (search.floatD2(e) <= search.keep_d2) decide(e.index);
+        });
+      }
+    }
+  }
+  return {best, (*positions_)[best]};
+}
+
+double GridNearestNeighbors::cellGapD2(const Point2& q, int cx, int cy) const {
+  // The cell's extent; the outermost cells also hold anything beyond the bounds (cellX clamps).
+  double gap_x = 0, gap_y = 0;
+  if (cx > 0) gap_x = std::max(gap_x, bounds_.x_min + cx * cell_w_ - q.x);
+  if (cx < nx_ - 1) gap_x = std::max(gap_x, q.x - (bounds_.x_min + (cx + 1) * cell_w_));
+  if (cy > 0) gap_y = std::max(gap_y, bounds_.y_min + cy * cell_h_ - q.y);
+  if (cy < ny_ - 1) gap_y = std::max(gap_y, q.y - (bounds_.y_min + (cy + 1) * cell_h_));
+  gap_x = std::max(0.0, gap_x - kBorderSlack);
+  gap_y = std::max(0.0, gap_y - kBorderSlack);
+  return gap_x * gap_x + gap_y * gap_y;
 }
 
 bool GridNearestNeighbors::ringSearchDone(const Point2& q, int ux, int uy, int r, int units_x,
@@ -252,12 +367,18 @@ void GridNearestNeighbors::withinRadius(const Point2& q, double radius,
     if (dx * dx + dy * dy <= r2) out.push_back(linear_ids_[i]);
   }
   if (cells_.empty()) return;
-  for (int y = cellY(q.y - radius); y <= cellY(q.y + radius); ++y) {
-    for (int x = cellX(q.x - radius); x <= cellX(q.x + radius); ++x) {
+  // Pre-select by the float copies (see Search), decide by the exact coordinates.
+  Search search;
+  search.q = q;
+  // A point within `radius` has its float copy within `reach`.
+  const double reach = (radius + floatCopyError(max_abs_coordinate_)) * (1 + kRelativeSlack);
+  for (int y = cellY(q.y - reach); y <= cellY(q.y + reach); ++y) {
+    for (int x = cellX(q.x - reach); x <= cellX(q.x + reach); ++x) {
       forEachInCell(cell(x, y), [&](const Entry& e) {
-        const double dx = e.x - q.x;
-        const double dy = e.y - q.y;
-        if (dx * dx + dy * dy <= r2) out.push_back(e.index);
+        if (search.floatD2(e) <= reach * reach &&
+            squaredDistance((*positions_)[e.index], q) <= r2) {
+          out.push_back(e.index);
+        }
       });
     }
   }

@@ -6,7 +6,7 @@ namespace roomba_rrt::planning {
 
 void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const Bounds& bounds) {
   tree.clear();
-  nearest.clear(bounds);
+  nearest.clear(bounds, tree.nodes);
   nearest.add(root, tree.add(root, -1));
 }
 

@@ -9,7 +9,7 @@ namespace roomba_rrt::planning {
 
 class BruteForceNearestNeighbors final : public NearestNeighbors {
  public:
-  void clear(const Bounds& bounds) override;
+  void clear(const Bounds& bounds, const std::vector<Point2>& positions) override;
   void add(const Point2& p, int index) override;
   Neighbor nearestNeighbor(const Point2& q) const override;
   void withinRadius(const Point2& q, double radius, std::vector<int>& out) const override;

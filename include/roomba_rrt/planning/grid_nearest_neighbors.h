@@ -11,11 +11,17 @@
 
 namespace roomba_rrt::planning {
 
-/// Cells (about square, however elongated the bounds) covering the bounds; each cell stores the
-/// coordinates of its first three points inline (one 64-byte cache line), further points in a
-/// shared overflow list. When the points outnumber 1.5 per cell the grid doubles its cell count and
-/// re-inserts everything, so a query looks at about nine cells whatever the tree size. A query
-/// visits rings of cells around the query's cell until no unvisited cell can hold a closer point.
+/// Cells (about square, however elongated the bounds) covering the bounds; each cell stores its
+/// first five points inline (one 64-byte cache line), further points in a shared overflow list.
+/// When the points outnumber 4 per cell the grid doubles its cell count and re-inserts
+/// everything, so a query looks at about nine cells whatever the tree size. A query visits rings
+/// of cells around the query's cell until no unvisited cell can hold a closer point.
+/// Memory: a cell keeps each point as float coordinates and the node index (12 bytes), about
+/// 19 bytes per point with the empty slots (a 10^6-node tree: 16 MB). Floats only pre-select:
+/// a float coordinate is within about 2^-24 |x| of the exact one, so the search keeps every point
+/// whose float distance is within that error of the best, and decides among those (nearly always
+/// one) by the exact coordinates, read from the caller's array (clear()'s `positions`). The
+/// answer is therefore exactly brute force's.
 /// A query far from every point (a region the tree has not reached, e.g. beyond scenario d's
 /// wall) would cross many empty rings: after three rings it continues over blocks of 8 x 8 cells,
 /// skipping empty blocks by their point count.
@@ -26,7 +32,7 @@ namespace roomba_rrt::planning {
 /// short contiguous runs of memory per query (see doc/planning.md for the measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
  public:
-  void clear(const Bounds& bounds) override;
+  void clear(const Bounds& bounds, const std::vector<Point2>& positions) override;
   void add(const Point2& p, int index) override;
   Neighbor nearestNeighbor(const Point2& q) const override;
   void withinRadius(const Point2& q, double radius, std::vector<int>& out) const override;
@@ -34,13 +40,11 @@ class GridNearestNeighbors final : public NearestNeighbors {
   int cellCount() const { return static_cast<int>(cells_.size()); }
 
  private:
-#pragma pack(push, 4)
-  struct Entry {  // 20 bytes: three fit in a cache line with the overflow link
-    double x = 0, y = 0;
+  struct Entry {              // 12 bytes: five fit in a cache line with the overflow link
+    float x = 0, y = 0;       ///< the coordinates rounded to float (a pre-filter only)
     std::int32_t index = -1;  ///< -1: empty slot
   };
-#pragma pack(pop)
-  static constexpr int kInline = 3;
+  static constexpr int kInline = 5;
   struct alignas(64) Cell {
     Entry inline_entries[kInline];  ///< filled from the front
     std::int32_t overflow = -1;     ///< head of this cell's chain in overflow_, -1 if none
@@ -57,6 +61,9 @@ class GridNearestNeighbors final : public NearestNeighbors {
   /// sqrt(best_d2), or when those units cover the whole grid. Units are cells or blocks.
   bool ringSearchDone(const Point2& q, int ux, int uy, int r, int units_x, int units_y,
                       double unit_w, double unit_h, double best_d2) const;
+  /// Squared distance from q to the nearest point of cell (cx, cy), rounded down: no point stored
+  /// in that cell is closer.
+  double cellGapD2(const Point2& q, int cx, int cy) const;
   /// Calls visit(x, y) for the units (cells or blocks) at Chebyshev distance r from (ux, uy).
   template <typename Visit>
   static void forEachOnRing(int ux, int uy, int r, int units_x, int units_y, Visit&& visit) {
@@ -76,6 +83,9 @@ class GridNearestNeighbors final : public NearestNeighbors {
   }
   void resize(int target_cells);
   void insert(const Entry& e);
+  /// The candidates of a grid query: see nearestNeighbor() in the .cpp.
+  struct Search;
+  Neighbor exactNearest(const Point2& q, const Search& search) const;
   int cellX(double x) const {
     const double i = std::floor((x - bounds_.x_min) * inv_cell_w_);
     return i <= 0 ? 0 : (i >= nx_ - 1 ? nx_ - 1 : static_cast<int>(i));
@@ -94,6 +104,9 @@ class GridNearestNeighbors final : public NearestNeighbors {
   }
 
   Bounds bounds_;
+  const std::vector<Point2>* positions_ = nullptr;  ///< exact coordinates, by node index
+  /// Largest |x| or |y| added so far: a float coordinate is within 2^-24 of it of the exact one.
+  double max_abs_coordinate_ = 0;
   double cell_w_ = 1, cell_h_ = 1, inv_cell_w_ = 1, inv_cell_h_ = 1;
   int nx_ = 1, ny_ = 1;
   int size_ = 0;

@@ -20,8 +20,11 @@ struct Neighbor {
 class NearestNeighbors {
  public:
   virtual ~NearestNeighbors() = default;
-  /// Forgets every point; points will lie inside `bounds`.
-  virtual void clear(const Bounds& bounds) = 0;
+  /// Forgets every point; points will lie inside `bounds`. `positions` is where the caller keeps
+  /// the points (the tree's node array): every point added later as (p, index) must be
+  /// positions[index], for as long as the structure is used. The grid reads exact coordinates
+  /// from it instead of keeping a second copy of them.
+  virtual void clear(const Bounds& bounds, const std::vector<Point2>& positions) = 0;
   virtual void add(const Point2& p, int index) = 0;
   /// The nearest point and its index (index -1 when empty). Returning the position saves the
   /// caller a random access into the tree at 10^6 nodes.
