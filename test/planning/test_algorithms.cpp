@@ -74,6 +74,35 @@ TEST(RrtStar, approaches_the_straight_line_in_an_empty_world) {
   EXPECT_LT(star.length, 1.03 * straight);
 }
 
+TEST(EveryAlgorithm, paths_never_repeat_a_point) {
+  // The reported case: RRT* returned a path whose last two poses were equal. A zero-length
+  // segment must never appear, whatever the algorithm, seed or smoothing.
+  Problem p;
+  p.start = {1, 5};
+  p.goal = {9, 5};
+  p.obstacles = {{{5, 5}, 1.5}};
+  p.bounds = {-1, 11, -1, 11};
+  PlannerOptions options;
+  options.collision = CollisionCheck::kSegments;
+  options.max_iterations = 5000;
+  for (Algorithm algorithm : {Algorithm::kRrt, Algorithm::kRrtConnect, Algorithm::kRrtStar}) {
+    for (std::uint32_t seed = 40; seed < 60; ++seed) {
+      for (bool smooth : {false, true}) {
+        options.algorithm = algorithm;
+        options.seed = seed;
+        options.smooth = smooth;
+        const PlanResult r = plan(p, options);
+        ASSERT_TRUE(r.success) << r.message;
+        for (std::size_t i = 1; i < r.path.size(); ++i) {
+          ASSERT_GT(distance(r.path[i - 1], r.path[i]), 0.0)
+              << "algorithm " << static_cast<int>(algorithm) << ", seed " << seed << ", smooth "
+              << smooth << ": points " << i - 1 << " and " << i << " are equal";
+        }
+      }
+    }
+  }
+}
+
 TEST(RrtStar, rewiring_keeps_a_tree_every_node_reaches_the_start) {
   PlannerOptions options;
   options.algorithm = Algorithm::kRrtStar;
