@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/geometry.h"
+#include "roomba_rrt/planning/matlab_random.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/scenarios.h"
 
@@ -74,6 +76,24 @@ TEST(Scenarios, a_malformed_file_is_an_error_naming_the_field) {
     EXPECT_NE(std::string(e.what()).find("scenarios.x.start"), std::string::npos) << e.what();
   }
   EXPECT_THROW(loadScenarios("/nonexistent/scenarios.yaml"), std::runtime_error);
+}
+
+TEST(Geometry, checker_quick_test_gives_the_exact_test_answer_for_segments_grazing_a_disc) {
+  // Short segments whose far end lies within 1e-9 of the rim, from every side: the checker's
+  // quick distance test must never disagree with the exact segment-circle test.
+  const Circle disc{{5, 5}, 1.05};
+  const CollisionChecker checker({disc}, CollisionCheck::kSegments);
+  MatlabRandom random(3);
+  for (int i = 0; i < 100000; ++i) {
+    const double angle = random.uniform(0, 2 * M_PI);
+    const double rim = disc.radius + random.uniform(-1e-9, 1e-9);
+    const Point2 b{disc.center.x + rim * std::cos(angle), disc.center.y + rim * std::sin(angle)};
+    // Half of them straight out from the centre: then a is at r + length, the quick test's edge.
+    const double away = i % 2 == 0 ? angle : random.uniform(0, 2 * M_PI);
+    const double length = random.uniform(0, 0.2);
+    const Point2 a{b.x + length * std::cos(away), b.y + length * std::sin(away)};
+    ASSERT_EQ(checker.isSegmentFree(a, b), !segmentMeetsCircle(a, b, disc)) << "segment " << i;
+  }
 }
 
 }  // namespace
