@@ -10,7 +10,7 @@
 namespace roomba_rrt::planning {
 
 /// Allocations of 2 MB or more are 2 MB aligned and marked MADV_HUGEPAGE (Linux transparent
-/// huge pages, mode "madvise"), so a random access into a 64 MB grid no longer also misses the
+/// huge pages, mode "madvise"), so a random access into a 16 MB grid no longer also misses the
 /// TLB: one page-table walk per 2 MB instead of per 4 KB. Smaller ones use plain operator new.
 template <typename T>
 struct HugePageAllocator {
