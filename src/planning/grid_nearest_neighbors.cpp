@@ -149,16 +149,16 @@ void GridNearestNeighbors::clear(const Bounds& bounds, const std::vector<Point2>
   linear_ids_.clear();
   linear_ids_increasing_ = true;
   // The linear phase never grows beyond this: allocate once per plan, not while growing.
-  linear_x_.reserve(kLinearScanLimit + kLinearPad);
-  linear_y_.reserve(kLinearScanLimit + kLinearPad);
+  linear_x_.reserve(kLinearScanLimit + 64);
+  linear_y_.reserve(kLinearScanLimit + 64);
   linear_ids_.reserve(kLinearScanLimit);
 }
 
 void GridNearestNeighbors::addLinear(const Point2& p, int index) {
   const std::size_t slot = linear_ids_.size();
-  if (slot % kLinearPad == 0) {  // open the next group of kLinearPad slots, all NaN
-    linear_x_.resize(slot + kLinearPad, std::numeric_limits<double>::quiet_NaN());
-    linear_y_.resize(slot + kLinearPad, std::numeric_limits<double>::quiet_NaN());
+  if (slot == linear_x_.size()) {  // open 64 more slots (a multiple of kLinearPad), all NaN
+    linear_x_.resize(slot + 64, std::numeric_limits<double>::quiet_NaN());
+    linear_y_.resize(slot + 64, std::numeric_limits<double>::quiet_NaN());
   }
   linear_x_[slot] = p.x;
   linear_y_[slot] = p.y;
