@@ -4,7 +4,7 @@
 //  - BM_IterationOnLargeTree: one RRT iteration (sample, nearest, steer, check, insert) on a
 //    tree of 10^6 nodes grown in scenario d's world, with the grid index vs brute force.
 //  - BM_GrowTree: a whole exploration run of N iterations from the start (index only).
-// Run: scripts/bench, or build-dir/devel/lib/roomba_rrt/planning_bench (or the build dir's bin).
+// Run: scripts/bench, or devel/lib/roomba_rrt/planning_bench after a Release build.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -3,7 +3,8 @@
 //
 // Subscribes /cmd_vel; publishes /odom, /bumper, tf odom→base_link (+ static map→odom, the
 // identity: odometry is perfect and in room coordinates), /clock when /use_sim_time is true,
-// ~markers, ~coverage, ~coverage_map; service ~reset. Parameters: see doc/simulation.md.
+// ~markers, ~coverage, ~coverage_map; service ~reset. Parameters: see README.md, "The simulated
+// Roomba".
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/OccupancyGrid.h>

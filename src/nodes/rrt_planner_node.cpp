@@ -4,7 +4,7 @@
 // goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
 // (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
 // are served by several threads, so a long plan does not hold up other clients. Parameters and
-// examples: doc/planner_node.md.
+// examples: README.md, "The rrt_planner node".
 #include <cmath>
 #include <limits>
 #include <map>

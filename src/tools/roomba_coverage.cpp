@@ -4,7 +4,7 @@
 // (contact → bumper → behaviour → move), deterministic by seed. Prints the coverage at 60, 300
 // and 600 s (mean ± standard deviation over seeds with --seeds), writes the first seed's
 // trajectory as CSV and draws it as a PNG (room, furniture, cleaned floor, path coloured by
-// state). See doc/behavior.md.
+// state). See README.md, "Behaviours".
 #include <cairo.h>
 
 #include <chrono>
