@@ -7,9 +7,6 @@
 namespace roomba_rrt::planning {
 namespace {
 
-// Up to this many points a linear scan of one contiguous array beats any grid (the lab's trees
-// have a few hundred nodes); the grid is built when the next point arrives.
-constexpr int kLinearScanLimit = 512;
 constexpr int kFirstGridCells = 512;
 constexpr double kMaxPointsPerCell = 4;  // grow (double the cells) beyond this load
 // Cell borders are computed in floating point; shrinking the "nothing closer outside" distance
@@ -24,6 +21,8 @@ constexpr double kRelativeSlack = 1e-9;
 /// rounds that up; the tiny term covers float's subnormal range).
 double floatCopyError(double max_abs) { return max_abs * 0x1p-23 + 1e-40; }
 
+}  // namespace
+
 /// The slot of the nearest of `n` points, given as x[] and y[] padded with NaN to a multiple of 8,
 /// to (qx, qy): the first slot, in array order, where dx*dx + dy*dy is smallest; -1 when no
 /// distance is below +infinity (no points, or coordinates so large that the squares overflow).
@@ -36,9 +35,8 @@ double floatCopyError(double max_abs) { return max_abs * 0x1p-23 + 1e-40; }
 /// lanes, the smaller distance wins and the lower slot among equal ones. No FMA is enabled (AVX2
 /// does not imply it), so every distance is rounded exactly as squaredDistance() rounds it and the
 /// answer is bit for bit the brute-force one. The padding NaNs never compare less than anything.
-__attribute__((target_clones("avx2", "default"))) int linearNearest(const double* xs,
-                                                                    const double* ys, int n,
-                                                                    double qx, double qy) {
+__attribute__((target_clones("avx2", "default"))) int GridNearestNeighbors::linearNearest(
+    const double* xs, const double* ys, int n, double qx, double qy) {
   using V = double __attribute__((vector_size(32)));
   constexpr double inf = std::numeric_limits<double>::infinity();
   const V vqx = {qx, qx, qx, qx}, vqy = {qy, qy, qy, qy};
@@ -77,8 +75,6 @@ __attribute__((target_clones("avx2", "default"))) int linearNearest(const double
   }
   return slot;
 }
-
-}  // namespace
 
 /// What a grid query has seen so far. The grid lives in "float space": each point is stored,
 /// and put in its cell, by its float copy, and distances here are from those copies ("float
@@ -154,16 +150,10 @@ void GridNearestNeighbors::clear(const Bounds& bounds, const std::vector<Point2>
   linear_ids_.reserve(kLinearScanLimit);
 }
 
-void GridNearestNeighbors::addLinear(const Point2& p, int index) {
-  const std::size_t slot = linear_ids_.size();
-  if (slot == linear_x_.size()) {  // open 64 more slots (a multiple of kLinearPad), all NaN
-    linear_x_.resize(slot + 64, std::numeric_limits<double>::quiet_NaN());
-    linear_y_.resize(slot + 64, std::numeric_limits<double>::quiet_NaN());
-  }
-  linear_x_[slot] = p.x;
-  linear_y_[slot] = p.y;
-  if (slot > 0 && index <= linear_ids_.back()) linear_ids_increasing_ = false;
-  linear_ids_.push_back(index);
+void GridNearestNeighbors::openLinearSlots() {
+  const std::size_t slots = linear_x_.size() + 64;
+  linear_x_.resize(slots, std::numeric_limits<double>::quiet_NaN());
+  linear_y_.resize(slots, std::numeric_limits<double>::quiet_NaN());
 }
 
 void GridNearestNeighbors::resize(int target_cells) {
@@ -214,12 +204,7 @@ void GridNearestNeighbors::insert(const Entry& e) {
   cell.overflow = static_cast<std::int32_t>(overflow_.size() - 1);
 }
 
-void GridNearestNeighbors::add(const Point2& p, int index) {
-  ++size_;
-  if (cells_.empty() && size_ <= kLinearScanLimit) {
-    addLinear(p, index);
-    return;
-  }
+void GridNearestNeighbors::addToGrid(const Point2& p, int index) {
   if (cells_.empty()) {
     resize(kFirstGridCells);
   } else if (size_ > kMaxPointsPerCell * cellCount()) {
@@ -229,7 +214,7 @@ void GridNearestNeighbors::add(const Point2& p, int index) {
   insert({static_cast<float>(p.x), static_cast<float>(p.y), index});
 }
 
-Neighbor GridNearestNeighbors::nearestNeighbor(const Point2& q) const {
+Neighbor GridNearestNeighbors::searchNearest(const Point2& q) const {
   if (size_ == 0) return {};
   if (cells_.empty()) {
     const int n = static_cast<int>(linear_ids_.size());

@@ -33,9 +33,29 @@ namespace roomba_rrt::planning {
 /// measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
  public:
+  /// Up to this many points a linear scan of one contiguous array beats any grid (the lab's trees
+  /// have a few hundred nodes); the grid is built when the next point arrives.
+  static constexpr int kLinearScanLimit = 512;
+
   void clear(const Bounds& bounds, const std::vector<Point2>& positions) override;
-  void add(const Point2& p, int index) override;
-  Neighbor nearestNeighbor(const Point2& q) const override;
+  // add() and nearestNeighbor() handle the lab's case (a small tree, added in index order) inline:
+  // a planner that calls them through this class, not the interface, runs that case without a
+  // function call (see solveRrt()).
+  void add(const Point2& p, int index) override {
+    ++size_;
+    if (cells_.empty() && size_ <= kLinearScanLimit) {
+      addLinear(p, index);
+    } else {
+      addToGrid(p, index);
+    }
+  }
+  Neighbor nearestNeighbor(const Point2& q) const override {
+    if (cells_.empty() && linear_ids_increasing_ && size_ > 0) {
+      const int slot = linearNearest(linear_x_.data(), linear_y_.data(), size_, q.x, q.y);
+      if (slot >= 0) return linearNeighbor(slot);
+    }
+    return searchNearest(q);
+  }
   void withinRadius(const Point2& q, double radius, std::vector<int>& out) const override;
   int size() const override { return size_; }
   int cellCount() const { return static_cast<int>(cells_.size()); }
@@ -122,7 +142,23 @@ class GridNearestNeighbors final : public NearestNeighbors {
   /// True while linear_ids_ only grows (a planner adds nodes in index order): then the first
   /// minimum in scan order is also the one with the lowest index.
   bool linear_ids_increasing_ = true;
-  void addLinear(const Point2& p, int index);
+  void addLinear(const Point2& p, int index) {
+    const std::size_t slot = linear_ids_.size();
+    if (slot == linear_x_.size()) openLinearSlots();
+    linear_x_[slot] = p.x;
+    linear_y_[slot] = p.y;
+    if (slot > 0 && index <= linear_ids_.back()) linear_ids_increasing_ = false;
+    linear_ids_.push_back(index);
+  }
+  /// Appends 64 NaN slots (a multiple of kLinearPad) to linear_x_ and linear_y_.
+  void openLinearSlots();
+  /// The slot of the nearest of the `n` linear points to (qx, qy), the first in slot order among
+  /// equals; -1 when every distance overflows. See the .cpp.
+  static int linearNearest(const double* xs, const double* ys, int n, double qx, double qy);
+  /// add() once the linear phase is over: builds or grows the grid, inserts p.
+  void addToGrid(const Point2& p, int index);
+  /// nearestNeighbor() of any state (grid, or points out of index order, or overflow).
+  Neighbor searchNearest(const Point2& q) const;
   Neighbor linearNeighbor(int slot) const {
     return {linear_ids_[slot], {linear_x_[slot], linear_y_[slot]}};
   }

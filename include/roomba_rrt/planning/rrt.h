@@ -57,9 +57,11 @@ inline std::optional<Point2> sampleTarget(const Problem& problem, const PlannerO
 
 /// Steps 2-5 (LaValle's EXTEND): nearest node to `target`, steer by at most `step`, check the
 /// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked
-/// or if the step has length zero (the target is already a tree node).
-inline int extendTree(Tree& tree, NearestNeighbors& nearest, const CollisionChecker& checker,
-                      const Point2& target, double step) {
+/// or if the step has length zero (the target is already a tree node). `Index` is
+/// NearestNeighbors, or a concrete index whose calls the compiler can then inline.
+template <typename Index>
+int extendTree(Tree& tree, Index& nearest, const CollisionChecker& checker, const Point2& target,
+               double step) {
   // Nearest tree node.
   const auto [near, q_near] = nearest.nearestNeighbor(target);
   // Extend from it by at most one step.
