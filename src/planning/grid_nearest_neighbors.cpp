@@ -61,19 +61,22 @@ __attribute__((target_clones("avx2", "default"))) int GridNearestNeighbors::line
     best_hi = closer_hi ? d2_hi : best_hi;
     slot_hi = closer_hi ? here_hi : slot_hi;
   }
-  double best = inf;
-  int slot = -1;
-  auto merge = [&](double d2, double s) {
-    if (s >= 0 && (d2 < best || (d2 == best && s < slot))) {
-      best = d2;
-      slot = static_cast<int>(s);
-    }
+  // Merge the eight lanes into lane 0, halving each time and without branches (a data-dependent
+  // branch per lane, mispredicted now and then, costs more than the scan of a small tree): of two
+  // (distance, slot) pairs the smaller distance wins, the lower slot among equal distances.
+  using Mask = long long __attribute__((vector_size(32)));
+  auto keepNearer = [](V& best, V& slot, const V& other_best, const V& other_slot) {
+    const Mask take = (other_best < best) | ((other_best == best) & (other_slot < slot));
+    best = take ? other_best : best;
+    slot = take ? other_slot : slot;
   };
-  for (int k = 0; k < 4; ++k) {
-    merge(best_lo[k], slot_lo[k]);
-    merge(best_hi[k], slot_hi[k]);
-  }
-  return slot;
+  keepNearer(best_lo, slot_lo, best_hi, slot_hi);
+  const Mask swap_pairs = {2, 3, 0, 1}, swap_neighbours = {1, 0, 3, 2};
+  keepNearer(best_lo, slot_lo, __builtin_shuffle(best_lo, swap_pairs),
+             __builtin_shuffle(slot_lo, swap_pairs));
+  keepNearer(best_lo, slot_lo, __builtin_shuffle(best_lo, swap_neighbours),
+             __builtin_shuffle(slot_lo, swap_neighbours));
+  return best_lo[0] < inf ? static_cast<int>(slot_lo[0]) : -1;
 }
 
 /// What a grid query has seen so far. The grid lives in "float space": each point is stored,
