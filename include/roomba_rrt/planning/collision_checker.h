@@ -15,7 +15,15 @@ namespace roomba_rrt::planning {
 class CollisionChecker {
  public:
   CollisionChecker(std::vector<Circle> obstacles, CollisionCheck mode)
-      : obstacles_(std::move(obstacles)), mode_(mode) {}
+      : obstacles_(std::move(obstacles)), mode_(mode) {
+    // Each disc's part of the quick test's reach (see isSegmentFree()), computed once.
+    reach_.reserve(obstacles_.size());
+    for (const Circle& c : obstacles_) {
+      const double slack =
+          1e-12 * (std::max(std::abs(c.center.x), std::abs(c.center.y)) + std::abs(c.radius));
+      reach_.push_back(c.radius + slack);
+    }
+  }
 
   /// True when p is outside every (closed) disc.
   bool isFree(const Point2& p) const {
@@ -27,15 +35,16 @@ class CollisionChecker {
   /// True when the whole segment a-b is outside every disc (exact segment-circle test).
   bool isSegmentFree(const Point2& a, const Point2& b) const {
     // A quick test first, without the exact test's division: every point of the segment is
-    // within its length L of a, so a disc farther than r + L from a cannot meet it. `slack`
-    // (1e-12 of the coordinates' size) is far above the rounding of either test, so the quick
-    // test never calls free what the exact test would call a collision: the answer is the same.
-    const double length = distance(a, b);
+    // within its length L of a, so a disc farther than r + L from a cannot meet it. L is taken
+    // as |dx| + |dy| (never less, and no square root), and a slack of 1e-12 of the coordinates'
+    // and the radius's size is added, far above the rounding of either test, so the quick test
+    // never calls free what the exact test would call a collision: the answer is the same.
+    const double length = std::abs(b.x - a.x) + std::abs(b.y - a.y);
     const double size = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
-    for (const Circle& c : obstacles_) {
-      const double slack =
-          1e-12 * (std::max({size, std::abs(c.center.x), std::abs(c.center.y)}) + c.radius);
-      const double clear = c.radius + length + slack;
+    const double segment_reach = length + 1e-12 * size;
+    for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+      const Circle& c = obstacles_[i];
+      const double clear = reach_[i] + segment_reach;
       if (squaredDistance(a, c.center) > clear * clear) continue;  // too far to touch the segment
       if (segmentMeetsCircle(a, b, c)) return false;
     }
@@ -51,6 +60,7 @@ class CollisionChecker {
 
  private:
   std::vector<Circle> obstacles_;
+  std::vector<double> reach_;  ///< per disc: its radius plus its share of the quick test's slack
   CollisionCheck mode_;
 };
 
