@@ -26,14 +26,43 @@ std::string noFreeSpaceMessage(const FreeSpaceSampler& sampler) {
 
 namespace {
 
-/// solveRrt() with `nearest` (which is parts.nearest) called through its type `Index`.
+/// A tree's index that also keeps the node nearest to the goal up to date as nodes are added:
+/// with goal bias p, a fraction p of the targets is the goal, and those need no search. Its
+/// answers are the index's (the smallest squared distance, the lowest index among equals).
+template <typename Index>
+class GoalAwareIndex {
+ public:
+  GoalAwareIndex(Index& index, const Point2& goal, const Point2& root)
+      : index_(index), goal_(goal), best_{0, root}, best_d2_(squaredDistance(root, goal)) {}
+
+  Neighbor nearestNeighbor(const Point2& q) const {
+    return q.x == goal_.x && q.y == goal_.y ? best_ : index_.nearestNeighbor(q);
+  }
+  void add(const Point2& p, int index) {
+    index_.add(p, index);
+    const double d2 = squaredDistance(p, goal_);
+    if (d2 < best_d2_) {  // strict: an equally near node added earlier has the lower index
+      best_d2_ = d2;
+      best_ = {index, p};
+    }
+  }
+
+ private:
+  Index& index_;
+  Point2 goal_;
+  Neighbor best_;
+  double best_d2_;
+};
+
+/// solveRrt() with `index` (which is parts.nearest) called through its type `Index`.
 template <typename Index>
 PlanResult growRrt(const Problem& problem, const PlannerOptions& options, PlannerParts parts,
-                   Index& nearest, const ProgressCallback& progress) {
+                   Index& index, const ProgressCallback& progress) {
   PlanResult result;
   Tree& tree = result.tree;
-  plantTree(tree, nearest, problem.start, problem.bounds);
+  plantTree(tree, index, problem.start, problem.bounds);
   tree.reserve(nodeCapacity(options.max_iterations));  // the arrays never move while it grows
+  GoalAwareIndex<Index> nearest(index, problem.goal, problem.start);
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     result.iterations = iteration;
