@@ -42,9 +42,11 @@ __attribute__((target_clones("avx2", "default"))) int GridNearestNeighbors::line
   const V vqx = {qx, qx, qx, qx}, vqy = {qy, qy, qy, qy};
   const V eight = {8, 8, 8, 8};
   V best_lo = {inf, inf, inf, inf}, best_hi = best_lo;  // slots i..i+3 and i+4..i+7
+  // The i at which each lane saw its minimum (its slot is that plus the lane's offset, added
+  // after the loop: one counter for all eight lanes).
   V slot_lo = {-1, -1, -1, -1}, slot_hi = slot_lo;
-  V here_lo = {0, 1, 2, 3}, here_hi = {4, 5, 6, 7};  // the slots being compared
-  for (int i = 0; i < n; i += 8, here_lo += eight, here_hi += eight) {
+  V here = {0, 0, 0, 0};
+  for (int i = 0; i < n; i += 8, here += eight) {
     V x_lo, y_lo, x_hi, y_hi;
     __builtin_memcpy(&x_lo, xs + i, sizeof(V));
     __builtin_memcpy(&y_lo, ys + i, sizeof(V));
@@ -57,10 +59,12 @@ __attribute__((target_clones("avx2", "default"))) int GridNearestNeighbors::line
     const auto closer_lo = d2_lo < best_lo;
     const auto closer_hi = d2_hi < best_hi;
     best_lo = closer_lo ? d2_lo : best_lo;
-    slot_lo = closer_lo ? here_lo : slot_lo;
+    slot_lo = closer_lo ? here : slot_lo;
     best_hi = closer_hi ? d2_hi : best_hi;
-    slot_hi = closer_hi ? here_hi : slot_hi;
+    slot_hi = closer_hi ? here : slot_hi;
   }
+  slot_lo += V{0, 1, 2, 3};  // lanes that saw no distance below infinity never win below
+  slot_hi += V{4, 5, 6, 7};
   // Merge the eight lanes into lane 0, halving each time and without branches (a data-dependent
   // branch per lane, mispredicted now and then, costs more than the scan of a small tree): of two
   // (distance, slot) pairs the smaller distance wins, the lower slot among equal distances.
