@@ -3,8 +3,6 @@
 
 add_library(rrt_planning
   src/planning/brute_force_nearest_neighbors.cpp
-  src/planning/collision_checker.cpp
-  src/planning/free_space_sampler.cpp
   src/planning/geometry.cpp
   src/planning/grid_nearest_neighbors.cpp
   src/planning/monte_carlo.cpp
