@@ -6,19 +6,38 @@ export PATH=/usr/bin:/bin:$PATH
 
 RR_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 
-# Every Debian package the project builds, runs, tests and benchmarks with.
+# Every Debian package the project builds, runs, tests, fuzzes and benchmarks with, and every
+# command the README tells users to run. Debian splits ROS messages in three: the C++ headers
+# (lib*-msgs-dev), the Python classes (python3-*-msgs) and the .msg/.srv definitions
+# (ros-*-msgs) that message generation reads; all three are listed for every message package.
 RR_PACKAGES=(
-  build-essential cmake pkg-config
-  catkin libroscpp-dev ros-message-generation ros-message-runtime
-  libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libnav-msgs-dev
-  libvisualization-msgs-dev libros-rosgraph-msgs-dev libroslib-dev libtf2-ros-dev libtf2-dev
-  python3-std-msgs python3-std-srvs python3-geometry-msgs python3-nav-msgs
-  python3-visualization-msgs python3-genpy
-  librostest-dev python3-rostest python3-roslaunch python3-rosnode python3-rosservice
-  python3-rostopic python3-rosgraph rosbash ros-core
-  libgtest-dev libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
+  # toolchain
+  build-essential cmake pkg-config git
+  # ROS 1 core: catkin, roscpp, message generation, the master and the command-line tools
+  catkin libroscpp-dev libroslib-dev ros-message-generation ros-message-runtime
+  ros-core rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic
+  python3-rosgraph python3-rosparam python3-rosmsg python3-rosbag python3-genpy python3-genmsg
+  # messages this package uses or depends on: definitions, C++ headers, Python classes
+  ros-std-msgs libstd-msgs-dev python3-std-msgs
+  ros-std-srvs libstd-srvs-dev python3-std-srvs
+  ros-geometry-msgs libgeometry-msgs-dev python3-geometry-msgs
+  ros-nav-msgs libnav-msgs-dev python3-nav-msgs
+  ros-visualization-msgs libvisualization-msgs-dev python3-visualization-msgs
+  ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
+  ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs
+  ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
+  ros-roscpp-msg python3-roscpp-msg
+  ros-move-base-msgs libmove-base-msgs-dev python3-move-base-msgs
+  # tf2 (C++ and Python) and its tools (tf2_echo, view_frames), actionlib (C++ and Python)
+  libtf2-dev libtf2-ros-dev python3-tf2-ros tf2-tools
+  libactionlib-dev python3-actionlib python3-actionlib-tools
+  # libraries of the ROS-free cores and the tools
+  libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
+  # tests, benchmarks, fuzzing (clang's libFuzzer and sanitizer runtimes), pictures
+  libgtest-dev librostest-dev python3-rostest python3-rosunit
   libompl-dev libbenchmark-dev
-  rviz xvfb libgl1-mesa-dri imagemagick
+  clang libfuzzer-14-dev libclang-rt-14-dev
+  rviz xvfb libgl1-mesa-dri imagemagick iproute2 procps
 )
 
 rr_log() { printf '\033[1m[roomba_rrt]\033[0m %s\n' "$*" >&2; }
