@@ -43,35 +43,74 @@ RR_PACKAGES=(
 rr_log() { printf '\033[1m[roomba_rrt]\033[0m %s\n' "$*" >&2; }
 
 # Install whatever Debian packages are missing (nothing to do, and no network, when all are there).
+# apt-get's output goes to build/apt.log; the terminal gets one line.
 rr_install_deps() {
   local missing=() p
   for p in "${RR_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
-  rr_log "installing missing Debian packages: ${missing[*]}"
-  local sudo=""
+  local sudo="" log="$RR_ROOT/build/apt.log" t0=$SECONDS
   [ "$(id -u)" -ne 0 ] && sudo=sudo
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-    "${missing[@]}" >/dev/null
+  mkdir -p "$RR_ROOT/build"
+  rr_log "installing ${#missing[@]} missing Debian packages (with what they pull in; a few minutes on a fresh machine; log: ${log#"$RR_ROOT"/})"
+  if ! { $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq &&
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q \
+      "${missing[@]}"; } >"$log" 2>&1; then
+    tail -n 30 "$log" >&2
+    rr_log "apt-get failed; the whole output is in $log"
+    return 1
+  fi
+  rr_log "installed in $((SECONDS - t0)) s"
+}
+
+# rr_run_logged LOG DESCRIPTION COMMAND...: run a build command with its output in LOG; on a
+# terminal show one line that follows cmake's "[ NN%]" progress, elsewhere one line at the start.
+# On failure print the errors (and the log's path) and return non-zero.
+rr_run_logged() {
+  local log=$1 what=$2 pid rc pct=""
+  shift 2
+  "$@" >"$log" 2>&1 &
+  pid=$!
+  if [ -t 2 ]; then
+    while kill -0 "$pid" 2>/dev/null; do
+      pct=$(grep -o '^\[ *[0-9]*%\]' "$log" 2>/dev/null | tail -n 1 | tr -d '[] ')
+      printf '\r\033[1m[roomba_rrt]\033[0m %s %s ' "$what" "${pct:-...}" >&2
+      sleep 1
+    done
+    printf '\r\033[K' >&2
+  else
+    rr_log "$what (log: ${log#"$RR_ROOT"/})"
+  fi
+  rc=0
+  wait "$pid" || rc=$?
+  if [ $rc -ne 0 ]; then
+    grep -E -B2 -A8 'error|Error|ERROR' "$log" | head -n 80 >&2 || tail -n 40 "$log" >&2
+    rr_log "$what failed; the whole output is in $log"
+  fi
+  return $rc
 }
 
 # rr_build [BUILD_DIR] [BUILD_TYPE]: configure and build the package; sets RR_BUILD and RR_DEVEL.
 # The catkin devel space (nodes, tools, setup.bash) goes to devel/ beside build/, not inside it:
 # rosrun ignores every executable below <package>/build/, and the package is the repository root.
+# RR_BUILD_TESTS=0 skips the test executables. Output goes to build/build.log.
 rr_build() {
   RR_BUILD=${1:-$RR_ROOT/build}
   RR_DEVEL=${RR_DEVEL:-$RR_ROOT/devel}
-  local type=${2:-Release}
-  rr_log "building in $RR_BUILD ($type), devel space $RR_DEVEL"
+  local type=${2:-Release} t0=$SECONDS
   mkdir -p "$RR_BUILD"
-  cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" -DCATKIN_DEVEL_PREFIX="$RR_DEVEL" \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON >"$RR_BUILD/configure.log" 2>&1 ||
-    { cat "$RR_BUILD/configure.log"; return 1; }
+  rr_run_logged "$RR_BUILD/configure.log" "configuring ($type)" \
+    cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" -DCATKIN_DEVEL_PREFIX="$RR_DEVEL" \
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON || return 1
+  rr_run_logged "$RR_BUILD/build.log" "building nodes and tools" \
+    cmake --build "$RR_BUILD" -j"$(nproc)" || return 1
   # catkin builds test executables only through its `tests` target.
-  cmake --build "$RR_BUILD" -j"$(nproc)"
-  if [ "${RR_BUILD_TESTS:-1}" = 1 ]; then cmake --build "$RR_BUILD" -j"$(nproc)" --target tests; fi
+  if [ "${RR_BUILD_TESTS:-1}" = 1 ]; then
+    rr_run_logged "$RR_BUILD/build-tests.log" "building tests" \
+      cmake --build "$RR_BUILD" -j"$(nproc)" --target tests || return 1
+  fi
+  rr_log "built in $((SECONDS - t0)) s (devel space ${RR_DEVEL#"$RR_ROOT"/}/)"
 }
 
 # Put the built package on ROS_PACKAGE_PATH (rosrun, rostest, rosservice find it).
@@ -83,3 +122,23 @@ rr_source() {
 }
 
 rr_master_online() { /usr/bin/python3 -c 'import rosgraph,sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null; }
+
+# rr_wait_nodes TIMEOUT NODE...: wait until every named node has registered with the master
+# (its publications, subscriptions and services are then known). Non-zero after TIMEOUT seconds.
+rr_wait_nodes() {
+  /usr/bin/python3 - "$@" <<'PY'
+import sys, time, rosgraph
+timeout, wanted = float(sys.argv[1]), set(sys.argv[2:])
+master, deadline = rosgraph.Master("/roomba_rrt_scripts"), time.time() + timeout
+while time.time() < deadline:
+    try:
+        state = master.getSystemState()
+        nodes = {n for group in state for _, ns in group for n in ns}
+        if wanted <= nodes:
+            sys.exit(0)
+    except Exception:
+        pass
+    time.sleep(0.2)
+sys.exit(1)
+PY
+}
