@@ -74,7 +74,8 @@ if(CATKIN_ENABLE_TESTING)
   foreach(planner_node_test
       plan_path_service:rrt_planner_service_test
       concurrent_clients:rrt_planner_concurrency_test
-      animation:rrt_planner_animation_test)
+      animation:rrt_planner_animation_test
+      hostile_requests:rrt_planner_hostile_test)
     string(REPLACE ":" ";" planner_node_test ${planner_node_test})
     list(GET planner_node_test 0 launch_name)
     list(GET planner_node_test 1 test_target)
