@@ -37,7 +37,7 @@ struct ResolvedRequest {
 
 /// Fills every field of `request` left at zero or empty from `defaults` (a named scenario fills
 /// start, goal, obstacles and bounds), then validates the result. Never throws on bad input: the
-/// error message names the field ("scenario: unknown 'z' ...", "step: must be > 0", ...).
+/// error message names the field ("scenario: unknown 'z' ...", "step: must be in [...]", ...).
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
                                const std::map<std::string, planning::Problem>& scenarios);
 

@@ -9,14 +9,14 @@
 
 namespace roomba_rrt::planning {
 
-/// Every loop of every planner (RRT-Connect's connect steps included) calls it once. It reads the
-/// clock and asks `requested` only every `stride` calls: the stride starts at 1, doubles while
-/// the time between two readings stays below about a millisecond and halves when it exceeds
-/// two, between 1 and 1024. A cheap loop (the lab's, about 80 ns) thus pays one decrement, and
-/// one clock reading per 1024 loops; an expensive one (RRT* on a large tree) is stopped within a
-/// few loops of the limit. One loop itself (e.g. a free-space sample of up to
-/// max_rejection_tries draws) is never interrupted. Without a limit and a request it never reads
-/// the clock.
+/// The planners call it once per loop (RRT-Connect's connect steps included; plain RRT, whose
+/// loops are the shortest, every 16th loop). It reads the clock and asks `requested` only every
+/// `stride` calls: the stride starts at 1, doubles while the time between two readings stays
+/// below about a millisecond and halves when it exceeds two, between 1 and 1024. A cheap loop
+/// (the lab's, about 80 ns) thus pays a decrement, and one clock reading per thousands of loops;
+/// an expensive one (RRT* on a large tree) is stopped within a few loops of the limit. One loop
+/// itself (e.g. a free-space sample of up to max_rejection_tries draws) is never interrupted.
+/// Without a limit and a request it never reads the clock.
 class StopCondition {
  public:
   /// Never stops.
