@@ -98,10 +98,21 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   return d;
 }
 
+// ~threads: plans at once, at least 2 (a smaller value is raised to 2), at most kMaxThreads.
+int threadsParam(const ros::NodeHandle& pnh) {
+  constexpr int kMaxThreads = 64;
+  const int threads = param(pnh, "threads", 4);
+  if (threads > kMaxThreads) {
+    throw std::invalid_argument("~threads: must be <= " + std::to_string(kMaxThreads) + " (got " +
+                                std::to_string(threads) + ")");
+  }
+  return std::max(2, threads);
+}
+
 class RrtPlannerNode {
  public:
   explicit RrtPlannerNode(ros::NodeHandle& pnh)
-      : defaults_(loadDefaults(pnh)), slots_(std::max(2, param(pnh, "threads", 4))) {
+      : defaults_(loadDefaults(pnh)), slots_(threadsParam(pnh)) {
     const std::string package = ros::package::getPath("roomba_rrt");
     const std::string scenarios_file = param<std::string>(
         pnh, "scenarios_file",
@@ -168,7 +179,7 @@ class RrtPlannerNode {
 
   planning::PlanResult plan(const ResolvedRequest& resolved) const {
     // A node shutting down (Ctrl-C) stops its plans within about a millisecond.
-    const auto shutting_down = [] { return !ros::ok(); };
+    const auto shutting_down = [] { return ros::isShuttingDown() || !ros::ok(); };
     if (!animate_) return planning::plan(resolved.problem, resolved.options, {}, 0, shutting_down);
     // Animation: publish the growing tree every ~animate_every iterations, at most
     // ~animate_rate times a second (the plan waits for the next frame so rviz can follow).
