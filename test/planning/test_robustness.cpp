@@ -184,6 +184,11 @@ TEST(RrtConnectBudget, connect_steps_count_against_max_iterations) {
   EXPECT_FALSE(r.success);
   EXPECT_EQ(r.iterations, 1);
   EXPECT_LE(r.tree.size(), 3);  // two roots and at most one step
+  // Step 1e-4 took 2.9 s and 46 571 nodes: now 1000 steps of the default budget at most.
+  r = plan(labScenario("a"), with(1e-4, 1000, 0.1, Algorithm::kRrtConnect));
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.iterations, 1000);
+  EXPECT_LE(r.tree.size(), 1002);
   // In general: at most max_iterations nodes beyond the two roots, successful or not.
   for (std::uint32_t seed = 1; seed <= 20; ++seed) {
     o = with(0.2, 60, 0.1, Algorithm::kRrtConnect);
