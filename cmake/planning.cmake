@@ -14,6 +14,7 @@ add_library(rrt_planning
   src/planning/rrt_connect.cpp
   src/planning/rrt_star.cpp
   src/planning/scenarios.cpp
+  src/planning/stop_condition.cpp
   src/planning/tool_arguments.cpp
   src/planning/tree.cpp
   src/planning/validate.cpp
@@ -41,6 +42,7 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/test_rrt.cpp
     test/planning/test_algorithms.cpp
     test/planning/test_validate.cpp
+    test/planning/test_robustness.cpp
   )
   if(TARGET test_rrt_planning)
     target_link_libraries(test_rrt_planning rrt_planning gtest_main)
@@ -72,7 +74,8 @@ if(CATKIN_ENABLE_TESTING)
   foreach(planner_node_test
       plan_path_service:rrt_planner_service_test
       concurrent_clients:rrt_planner_concurrency_test
-      animation:rrt_planner_animation_test)
+      animation:rrt_planner_animation_test
+      hostile_requests:rrt_planner_hostile_test)
     string(REPLACE ":" ";" planner_node_test ${planner_node_test})
     list(GET planner_node_test 0 launch_name)
     list(GET planner_node_test 1 test_target)

@@ -98,6 +98,7 @@ std::string resolveOptions(const PlanPath::Request& r, const NodeDefaults& defau
   options->goal_tolerance = orDefault(r.goal_tolerance, options->goal_tolerance);
   options->seed = orDefault(r.seed, options->seed);
   options->smooth = options->smooth || r.smooth;
+  options->max_planning_time = orDefault(r.max_planning_time, options->max_planning_time);
   if (!r.algorithm.empty()) {
     const auto algorithm = planning::parseAlgorithm(r.algorithm);
     if (!algorithm) {
@@ -113,6 +114,16 @@ std::string resolveOptions(const PlanPath::Request& r, const NodeDefaults& defau
     options->collision = *collision;
   }
   return "";
+}
+
+// The node's ~max_planning_time is also the most a request may ask for (0: no limit).
+std::string checkPlanningTimeLimit(const PlanPath::Request& r, const NodeDefaults& defaults) {
+  const double limit = defaults.options.max_planning_time;
+  if (limit <= 0 || r.max_planning_time <= limit) return "";
+  std::ostringstream out;
+  out << "max_planning_time: " << r.max_planning_time << " s is above the node's limit of " << limit
+      << " s (~max_planning_time)";
+  return out.str();
 }
 
 std_msgs::ColorRGBA color(float r, float g, float b, float a = 1.0f) {
@@ -185,6 +196,7 @@ ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefau
     resolved.error =
         planning::validate(resolved.problem, resolved.options, defaults.max_iterations_cap);
   }
+  if (resolved.error.empty()) resolved.error = checkPlanningTimeLimit(request, defaults);
   return resolved;
 }
 

@@ -23,7 +23,8 @@ struct NodeDefaults {
   planning::Point2 start{1, 1};  // the lab's case a
   planning::Point2 goal{9, 9};
   planning::Bounds bounds;           // the lab's [0, 10] x [0, 10]
-  planning::PlannerOptions options;  // the lab's step, goal bias, iterations, tolerance, seed
+  planning::PlannerOptions options;  // the lab's step, goal bias, iterations, tolerance, seed;
+                                     // its max_planning_time is also the requests' limit
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
 };
 
@@ -36,7 +37,7 @@ struct ResolvedRequest {
 
 /// Fills every field of `request` left at zero or empty from `defaults` (a named scenario fills
 /// start, goal, obstacles and bounds), then validates the result. Never throws on bad input: the
-/// error message names the field ("scenario: unknown 'z' ...", "step: must be > 0", ...).
+/// error message names the field ("scenario: unknown 'z' ...", "step: must be in [...]", ...).
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
                                const std::map<std::string, planning::Problem>& scenarios);
 

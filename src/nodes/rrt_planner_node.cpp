@@ -3,7 +3,9 @@
 // Serves ~plan_path (roomba_rrt/PlanPath); after every plan publishes the tree, obstacles, start,
 // goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
 // (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
-// are served by several threads, so a long plan does not hold up other clients. Parameters and
+// are served by several threads, so a long plan does not hold up other clients; beyond ~threads
+// plans at once a request is answered "busy" at once, and every plan stops after
+// ~max_planning_time seconds (or less, if the request asks). Parameters and
 // examples: README.md, "The rrt_planner node".
 #include <cmath>
 #include <limits>
@@ -21,6 +23,7 @@
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/planning/planner.h>
 
+#include "plan_slots.h"
 #include "planner_ros.h"
 
 namespace roomba_rrt::planner_node {
@@ -53,6 +56,9 @@ Enum enumParam(const ros::NodeHandle& pnh, const std::string& name, Enum fallbac
   return *value;
 }
 
+// Seconds a plan may take unless ~max_planning_time says otherwise.
+constexpr double kDefaultMaxPlanningTime = 5.0;
+
 // The node's defaults for every request field left at zero or empty. The code's fallbacks are
 // the library's (the lab's) values; config/rrt_planner.yaml spells them out.
 NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
@@ -75,6 +81,10 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   o.algorithm = enumParam(pnh, "algorithm", o.algorithm, planning::parseAlgorithm);
   o.collision = enumParam(pnh, "collision_check", o.collision, planning::parseCollisionCheck);
   o.nearest = enumParam(pnh, "nearest", o.nearest, planning::parseNearestSearch);
+  o.max_planning_time = param(pnh, "max_planning_time", kDefaultMaxPlanningTime);
+  if (!(o.max_planning_time > 0)) {  // the upper end is validate()'s
+    throw std::invalid_argument("~max_planning_time: must be > 0 s (every plan has a time limit)");
+  }
   d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
   // planning::plan() validates again with the library's own cap, so it bounds ours.
   if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
@@ -88,9 +98,21 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   return d;
 }
 
+// ~threads: plans at once, at least 2 (a smaller value is raised to 2), at most kMaxThreads.
+int threadsParam(const ros::NodeHandle& pnh) {
+  constexpr int kMaxThreads = 64;
+  const int threads = param(pnh, "threads", 4);
+  if (threads > kMaxThreads) {
+    throw std::invalid_argument("~threads: must be <= " + std::to_string(kMaxThreads) + " (got " +
+                                std::to_string(threads) + ")");
+  }
+  return std::max(2, threads);
+}
+
 class RrtPlannerNode {
  public:
-  explicit RrtPlannerNode(ros::NodeHandle& pnh) : defaults_(loadDefaults(pnh)) {
+  explicit RrtPlannerNode(ros::NodeHandle& pnh)
+      : defaults_(loadDefaults(pnh)), slots_(threadsParam(pnh)) {
     const std::string package = ros::package::getPath("roomba_rrt");
     const std::string scenarios_file = param<std::string>(
         pnh, "scenarios_file",
@@ -115,6 +137,9 @@ class RrtPlannerNode {
                                             << scenarios_file);
   }
 
+  /// How many plans run at once (~threads, at least 2).
+  int planThreads() const { return slots_.capacity(); }
+
  private:
   // Called concurrently by the spinner's threads: touches only const members and thread-safe
   // publishers, so one long plan never holds up another request.
@@ -127,6 +152,13 @@ class RrtPlannerNode {
       response.message = resolved.error;
       ROS_WARN_STREAM("plan_path: rejected: " << resolved.error);
       return true;  // the client gets success: false and the message
+    }
+    const PlanSlots::Lease slot = slots_.tryAcquire();
+    if (!slot) {
+      response.message = "busy: all " + std::to_string(slots_.capacity()) +
+                         " planning threads (~threads) are in use; call again later";
+      ROS_WARN_STREAM("plan_path: " << response.message);
+      return true;
     }
     try {
       const planning::PlanResult result = plan(resolved);
@@ -146,7 +178,9 @@ class RrtPlannerNode {
   }
 
   planning::PlanResult plan(const ResolvedRequest& resolved) const {
-    if (!animate_) return planning::plan(resolved.problem, resolved.options);
+    // A node shutting down (Ctrl-C) stops its plans within about a millisecond.
+    const auto shutting_down = [] { return ros::isShuttingDown() || !ros::ok(); };
+    if (!animate_) return planning::plan(resolved.problem, resolved.options, {}, 0, shutting_down);
     // Animation: publish the growing tree every ~animate_every iterations, at most
     // ~animate_rate times a second (the plan waits for the next frame so rviz can follow).
     ros::WallTime next_frame = ros::WallTime::now();
@@ -156,7 +190,8 @@ class RrtPlannerNode {
       tree_pub_.publish(markers(resolved.problem, tree, nullptr, ros::Time::now()));
       next_frame = ros::WallTime::now() + animate_period_;
     };
-    return planning::plan(resolved.problem, resolved.options, on_progress, animate_every_);
+    return planning::plan(resolved.problem, resolved.options, on_progress, animate_every_,
+                          shutting_down);
   }
 
   visualization_msgs::MarkerArray markers(const planning::Problem& problem,
@@ -181,6 +216,7 @@ class RrtPlannerNode {
   ros::Publisher tree_pub_;
   ros::Publisher path_pub_;
   ros::ServiceServer service_;
+  PlanSlots slots_;
 };
 
 }  // namespace
@@ -192,9 +228,9 @@ int main(int argc, char** argv) {
   try {
     roomba_rrt::planner_node::RrtPlannerNode node(pnh);
     // Several threads: each request is planned in its own callback, so a long plan leaves the
-    // other threads free to accept and answer further requests.
-    const int threads = std::max(2, roomba_rrt::planner_node::param(pnh, "threads", 4));
-    ros::AsyncSpinner spinner(threads);
+    // other threads free to accept and answer further requests. Two threads more than plans may
+    // run at once answer "busy" while every planning thread is taken.
+    ros::AsyncSpinner spinner(node.planThreads() + 2);
     spinner.start();
     ros::waitForShutdown();
   } catch (const std::exception& e) {

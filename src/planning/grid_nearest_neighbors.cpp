@@ -183,8 +183,9 @@ void GridNearestNeighbors::resize(int target_cells) {
   // About square cells, but never more cells along one axis than in total (thin bounds).
   const double width = bounds_.x_max - bounds_.x_min;
   const double height = bounds_.y_max - bounds_.y_min;
+  // A NaN or infinite shape (degenerate bounds, which validate() refuses) gets one column.
   const double columns = std::round(std::sqrt(target_cells * width / height));
-  nx_ = static_cast<int>(std::clamp(columns, 1.0, static_cast<double>(target_cells)));
+  nx_ = columns >= 1 ? static_cast<int>(std::min(columns, static_cast<double>(target_cells))) : 1;
   ny_ = std::max(1, target_cells / nx_);
   cell_w_ = width / nx_;
   cell_h_ = height / ny_;

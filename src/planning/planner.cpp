@@ -10,18 +10,31 @@
 namespace roomba_rrt::planning {
 
 PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRandom& random,
-                const std::function<void(const Tree&, int)>& on_progress, int progress_every) {
+                const std::function<void(const Tree&, int)>& on_progress, int progress_every,
+                const std::function<bool()>& stop_requested) {
   const auto started = std::chrono::steady_clock::now();
   PlanResult result;
   if (std::string error = validate(problem, options); !error.empty()) {
     result.message = error;
     return result;
   }
+  if (distance(problem.start, problem.goal) < options.goal_tolerance) {
+    // Already there: the tree is its root, the path that one point.
+    result.success = true;
+    result.tree.add(problem.start, -1);
+    result.path = {problem.start};
+    result.length = 0;
+    result.message = "path found (the start is within goal_tolerance of the goal)";
+    result.planning_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+  }
+  StopCondition stop(options.max_planning_time, stop_requested);
   // The collaborators: collision checker, free-space sampler, nearest-neighbour structure.
   const CollisionChecker checker(problem.obstacles, options.collision);
   const FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
   const auto nearest = makeNearestNeighbors(options.nearest);
-  const PlannerParts parts{random, sampler, *nearest, checker};
+  const PlannerParts parts{random, sampler, *nearest, checker, &stop};
   const ProgressCallback progress{on_progress, progress_every};
   switch (options.algorithm) {
     case Algorithm::kRrt:
@@ -45,9 +58,10 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRan
 }
 
 PlanResult plan(const Problem& problem, const PlannerOptions& options,
-                const std::function<void(const Tree&, int)>& on_progress, int progress_every) {
+                const std::function<void(const Tree&, int)>& on_progress, int progress_every,
+                const std::function<bool()>& stop_requested) {
   MatlabRandom random(options.seed);
-  return plan(problem, options, random, on_progress, progress_every);
+  return plan(problem, options, random, on_progress, progress_every, stop_requested);
 }
 
 }  // namespace roomba_rrt::planning

@@ -1,6 +1,7 @@
 #include "roomba_rrt/planning/rrt.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "roomba_rrt/planning/grid_nearest_neighbors.h"
 
@@ -10,6 +11,15 @@ void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const 
   tree.clear();
   nearest.clear(bounds, tree.nodes);
   nearest.add(root, tree.add(root, -1));
+}
+
+Point2 steerFar(const Point2& q_near, const Point2& q_rand, double step) {
+  // The fraction t = step / d of the way, d from halved differences (they cannot overflow), and
+  // the point as the convex combination (1 - t) q_near + t q_rand (it cannot either).
+  const double half_d =
+      std::hypot(0.5 * q_rand.x - 0.5 * q_near.x, 0.5 * q_rand.y - 0.5 * q_near.y);
+  const double t = std::min(1.0, 0.5 * step / half_d);  // 0 when even half_d overflows
+  return {(1 - t) * q_near.x + t * q_rand.x, (1 - t) * q_near.y + t * q_rand.y};
 }
 
 std::size_t nodeCapacity(int max_iterations) {
@@ -63,8 +73,16 @@ PlanResult growRrt(const Problem& problem, const PlannerOptions& options, Planne
   plantTree(tree, index, problem.start, problem.bounds);
   tree.reserve(nodeCapacity(options.max_iterations));  // the arrays never move while it grows
   GoalAwareIndex<Index> nearest(index, problem.goal, problem.start);
+  StopCondition never;
+  StopCondition& stop = parts.stop != nullptr ? *parts.stop : never;
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    // Asked every 16th iteration: an RRT iteration is short, and a counter the loop keeps in a
+    // register is cheaper than the condition's own countdown in memory.
+    if (iteration % 16 == 0 && stop()) {
+      result.message = stop.reason();
+      return result;
+    }
     result.iterations = iteration;
     // 1. Sample: the goal with probability p, otherwise a free point (bounded rejection).
     const std::optional<Point2> q_rand = sampleTarget(problem, options, parts);

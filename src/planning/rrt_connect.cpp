@@ -14,22 +14,42 @@ struct GrowingTree {
   void plant(const Point2& root, const Bounds& bounds) { plantTree(tree, nearest, root, bounds); }
 };
 
+// The extension steps of a run, connect steps included: each one counts against
+// max_iterations and asks the stop condition.
+class StepBudget {
+ public:
+  StepBudget(int max_steps, StopCondition& stop) : max_steps_(max_steps), stop_(stop) {}
+  /// Takes one step; false when none is left (iterations used up, or told to stop).
+  bool take() {
+    if (used_ >= max_steps_ || stop_()) return false;
+    ++used_;
+    return true;
+  }
+  int used() const { return used_; }
+
+ private:
+  int used_ = 0;
+  int max_steps_;
+  StopCondition& stop_;
+};
+
 // One step of tree `t` towards `target`; the new node's index, or -1 if blocked.
 int extend(GrowingTree& t, const Point2& target, const PlannerOptions& options,
            const CollisionChecker& checker) {
   return extendTree(t.tree, t.nearest, checker, target, options.step);
 }
 
-// Steps towards `target` until it is reached (returns that node) or blocked (returns -1).
-// The last step lands exactly on the target (steer returns it when within one step).
+// Steps towards `target` until it is reached (returns that node), blocked or out of steps
+// (returns -1). The last step lands exactly on the target (steer returns it when within one step).
 int connect(GrowingTree& t, const Point2& target, const PlannerOptions& options,
-            const CollisionChecker& checker) {
-  while (true) {
+            const CollisionChecker& checker, StepBudget& budget) {
+  while (budget.take()) {
     const int added = extend(t, target, options, checker);
     if (added < 0) return -1;
     const Point2& reached = t.tree.nodes[added];
     if (reached.x == target.x && reached.y == target.y) return added;
   }
+  return -1;
 }
 
 // Both trees in one: the goal tree's nodes follow the start tree's, parents shifted.
@@ -57,8 +77,10 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
   GrowingTree* other = &goal_tree;
 
   PlanResult result;
-  for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
-    result.iterations = iteration;
+  StopCondition never;
+  StopCondition& stop = parts.stop != nullptr ? *parts.stop : never;
+  StepBudget budget(options.max_iterations, stop);
+  for (int round = 1; budget.take(); ++round) {
     // 1. Sample a free point (no goal bias: the goal tree pulls instead).
     const auto q_rand = parts.sampler.sample(parts.random);
     if (!q_rand) {
@@ -70,7 +92,7 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
     if (added >= 0) {
       // 3. Connect the other tree to the new node, step by step.
       const Point2 q_new = active->tree.nodes[added];
-      const int reached = connect(*other, q_new, options, parts.checker);
+      const int reached = connect(*other, q_new, options, parts.checker, budget);
       if (reached >= 0) {
         // 4. A path: start tree root ... junction ... goal tree root.
         const bool start_active = active == &start_tree;
@@ -87,12 +109,16 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
     }
     // 5. Swap the roles of the trees.
     std::swap(active, other);
-    if (progress.call && progress.every > 0 && iteration % progress.every == 0) {
-      progress(merge(start_tree.tree, goal_tree.tree), iteration);
+    if (progress.call && progress.every > 0 && round % progress.every == 0) {
+      progress(merge(start_tree.tree, goal_tree.tree), round);
     }
   }
+  result.iterations = budget.used();
   if (!result.success && result.message.empty()) {
-    result.message = "no path within " + std::to_string(options.max_iterations) + " iterations";
+    result.message = !stop.reason().empty()
+                         ? stop.reason()
+                         : "no path within " + std::to_string(options.max_iterations) +
+                               " iterations (connect steps included)";
   }
   result.tree = merge(start_tree.tree, goal_tree.tree);
   return result;

@@ -76,8 +76,14 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
   cost.addRoot();
   std::vector<int> near;
   std::vector<int> at_goal;
+  StopCondition never;
+  StopCondition& stop = parts.stop != nullptr ? *parts.stop : never;
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    if (stop()) {
+      result.message = stop.reason();
+      return result;
+    }
     result.iterations = iteration;
     // 1. Sample exactly as RRT does (goal bias, then rejection sampling).
     const std::optional<Point2> sample = sampleTarget(problem, options, parts);

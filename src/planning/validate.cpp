@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "roomba_rrt/planning/limits.h"
+
 namespace roomba_rrt::planning {
 namespace {
 
@@ -16,6 +18,15 @@ std::string show(double v) {
 std::string checkFinite(const std::string& field, double v) {
   return std::isfinite(v) ? "" : field + ": must be finite (got " + show(v) + ")";
 }
+
+// "field: must be in [lo, hi] <unit> (got v)" when v (finite) is outside, "" otherwise.
+std::string checkRange(const char* field, double v, double lo, double hi, const char* unit = "m") {
+  if (v >= lo && v <= hi) return "";
+  return std::string(field) + ": must be in [" + show(lo) + ", " + show(hi) + "] " + unit +
+         " (got " + show(v) + ")";
+}
+
+bool withinCoordinateRange(double v) { return std::abs(v) <= kMaxCoordinate; }
 
 // plan() validates every call and a lab solve takes some 20 us, so the checks of valid input
 // build no strings: a field's name is only spelled out once it has an error to report.
@@ -42,21 +53,39 @@ std::string validateProblem(const Problem& problem) {
                                      {"bounds.y_min", b.y_min},
                                      {"bounds.y_max", b.y_max}}) {
     if (auto error = checkFinite(field, value); !error.empty()) return error;
+    if (auto error = checkRange(field, value, -kMaxCoordinate, kMaxCoordinate); !error.empty()) {
+      return error;
+    }
   }
   if (!(b.x_min < b.x_max)) return "bounds: x_min must be < x_max (empty or inverted bounds)";
   if (!(b.y_min < b.y_max)) return "bounds: y_min must be < y_max (empty or inverted bounds)";
-  if (!std::isfinite(b.x_max - b.x_min) || !std::isfinite(b.y_max - b.y_min)) {
-    return "bounds: width and height must be finite (got a span beyond double range)";
+  if (b.x_max - b.x_min < kMinBoundsExtent || b.y_max - b.y_min < kMinBoundsExtent) {
+    return "bounds: width (x_max - x_min) and height (y_max - y_min) must be at least " +
+           show(kMinBoundsExtent) + " m (got " + show(b.x_max - b.x_min) + " x " +
+           show(b.y_max - b.y_min) + ")";
+  }
+  if (problem.obstacles.size() > static_cast<std::size_t>(kMaxObstacles)) {
+    return "obstacles: at most " + std::to_string(kMaxObstacles) + " (got " +
+           std::to_string(problem.obstacles.size()) + ")";
   }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
     const Circle& c = problem.obstacles[i];
-    const bool valid = std::isfinite(c.center.x) && std::isfinite(c.center.y) &&
-                       std::isfinite(c.radius) && c.radius >= 0;
+    const bool valid = withinCoordinateRange(c.center.x) && withinCoordinateRange(c.center.y) &&
+                       c.radius >= 0 && c.radius <= kMaxLength;  // false for NaN
     if (valid) continue;
     const std::string field = "obstacles[" + std::to_string(i) + "]";
     if (auto error = checkPointFinite(field + ".center", c.center); !error.empty()) return error;
+    for (const auto& [axis, value] :
+         {std::pair<const char*, double>{".center.x", c.center.x}, {".center.y", c.center.y}}) {
+      const std::string name = field + axis;
+      if (auto error = checkRange(name.c_str(), value, -kMaxCoordinate, kMaxCoordinate);
+          !error.empty()) {
+        return error;
+      }
+    }
     if (auto error = checkFinite(field + ".radius", c.radius); !error.empty()) return error;
-    if (c.radius < 0) return field + ".radius: must be >= 0 (got " + show(c.radius) + ")";
+    const std::string radius = field + ".radius";
+    return checkRange(radius.c_str(), c.radius, 0, kMaxLength);
   }
   if (auto error = checkPointFinite("start", problem.start); !error.empty()) return error;
   if (auto error = checkPointFinite("goal", problem.goal); !error.empty()) return error;
@@ -66,7 +95,7 @@ std::string validateProblem(const Problem& problem) {
 
 std::string validateOptions(const PlannerOptions& o, int max_iterations_cap) {
   if (auto error = checkFinite("step", o.step); !error.empty()) return error;
-  if (o.step <= 0) return "step: must be > 0 (got " + show(o.step) + ")";
+  if (auto error = checkRange("step", o.step, kMinStep, kMaxLength); !error.empty()) return error;
   if (auto error = checkFinite("goal_bias", o.goal_bias); !error.empty()) return error;
   if (o.goal_bias < 0 || o.goal_bias > 1) {
     return "goal_bias: must be in [0, 1] (got " + show(o.goal_bias) + ")";
@@ -79,8 +108,15 @@ std::string validateOptions(const PlannerOptions& o, int max_iterations_cap) {
            std::to_string(max_iterations_cap);
   }
   if (auto error = checkFinite("goal_tolerance", o.goal_tolerance); !error.empty()) return error;
-  if (o.goal_tolerance < 0) {
-    return "goal_tolerance: must be >= 0 (got " + show(o.goal_tolerance) + ")";
+  if (auto error = checkRange("goal_tolerance", o.goal_tolerance, 0, kMaxLength); !error.empty()) {
+    return error;
+  }
+  if (auto error = checkFinite("max_planning_time", o.max_planning_time); !error.empty()) {
+    return error;
+  }
+  if (auto error = checkRange("max_planning_time", o.max_planning_time, 0, kMaxPlanningTime, "s");
+      !error.empty()) {
+    return error;
   }
   if (o.max_rejection_tries < 1) return "max_rejection_tries: must be >= 1";
   if (o.smoothing_tries < 0) return "smoothing_tries: must be >= 0";

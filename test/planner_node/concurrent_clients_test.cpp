@@ -16,25 +16,6 @@
 namespace roomba_rrt::planner_node_test {
 namespace {
 
-// A goal that no tree can reach: the corner pocket behind a disc that cuts the corner of the
-// bounds off (the disc reaches past both walls, so no step of 0.2 can jump into the pocket).
-// With a large iteration budget this plan runs long and then fails.
-PlanPath::Request unreachableGoal(int max_iterations) {
-  PlanPath::Request request;
-  request.start = geometry_msgs::Point();
-  request.start.x = 1;
-  request.start.y = 1;
-  request.goal.x = 9.9;
-  request.goal.y = 9.9;
-  CircleObstacle wall;
-  wall.center.x = 9;
-  wall.center.y = 9;
-  wall.radius = 1.2;
-  request.obstacles = {wall};
-  request.max_iterations = max_iterations;
-  return request;
-}
-
 // An iteration budget that keeps the node busy for a few seconds on this machine: a calibration
 // (nothing is asserted about time), so the test neither takes minutes on a slow machine nor
 // finishes the "long" plan before the short one starts on a fast one.

@@ -23,20 +23,6 @@ using visualization_msgs::MarkerArray;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-geometry_msgs::Point point(double x, double y) {
-  geometry_msgs::Point p;
-  p.x = x;
-  p.y = y;
-  return p;
-}
-
-CircleObstacle circle(double x, double y, double radius) {
-  CircleObstacle c;
-  c.center = point(x, y);
-  c.radius = radius;
-  return c;
-}
-
 // The latched message the node published last on `topic`.
 template <typename Message>
 Message latched(const std::string& topic) {

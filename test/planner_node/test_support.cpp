@@ -7,9 +7,32 @@
 
 namespace roomba_rrt::planner_node_test {
 
+geometry_msgs::Point point(double x, double y) {
+  geometry_msgs::Point p;
+  p.x = x;
+  p.y = y;
+  return p;
+}
+
+CircleObstacle circle(double x, double y, double radius) {
+  CircleObstacle c;
+  c.center = point(x, y);
+  c.radius = radius;
+  return c;
+}
+
 PlanPath::Request scenarioRequest(const std::string& name) {
   PlanPath::Request request;
   request.scenario = name;
+  return request;
+}
+
+PlanPath::Request unreachableGoal(int max_iterations) {
+  PlanPath::Request request;
+  request.start = point(1, 1);
+  request.goal = point(9.9, 9.9);
+  request.obstacles = {circle(9, 9, 1.2)};
+  request.max_iterations = max_iterations;
   return request;
 }
 

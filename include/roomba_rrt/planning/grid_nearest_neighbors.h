@@ -107,13 +107,15 @@ class GridNearestNeighbors final : public NearestNeighbors {
   /// The candidates of a grid query: see nearestNeighbor() in the .cpp.
   struct Search;
   Neighbor exactNearest(const Point2& q, const Search& search) const;
+  // A NaN position (0 * inf in degenerate bounds, which validate() refuses) goes to cell 0 and
+  // +-inf to an end: only a number strictly between 0 and the last cell is converted to int.
   int cellX(double x) const {
     const double i = std::floor((x - bounds_.x_min) * inv_cell_w_);
-    return i <= 0 ? 0 : (i >= nx_ - 1 ? nx_ - 1 : static_cast<int>(i));
+    return !(i > 0) ? 0 : (i >= nx_ - 1 ? nx_ - 1 : static_cast<int>(i));
   }
   int cellY(double y) const {
     const double i = std::floor((y - bounds_.y_min) * inv_cell_h_);
-    return i <= 0 ? 0 : (i >= ny_ - 1 ? ny_ - 1 : static_cast<int>(i));
+    return !(i > 0) ? 0 : (i >= ny_ - 1 ? ny_ - 1 : static_cast<int>(i));
   }
   const Cell& cell(int cx, int cy) const { return cells_[static_cast<std::size_t>(cy) * nx_ + cx]; }
   template <typename Visit>

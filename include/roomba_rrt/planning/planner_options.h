@@ -41,6 +41,7 @@ struct PlannerOptions {
   std::uint32_t seed = 42;  ///< MATLAB rng(seed); 0 behaves as MATLAB's rng(0) (MT seed 5489).
   int max_rejection_tries = 100000;  ///< draws of one free point before the space counts as full.
   int smoothing_tries = 200;         ///< random shortcut attempts when `smooth` is set.
+  double max_planning_time = 0;      ///< wall-clock budget (s); 0 = none. See StopCondition.
 };
 
 std::optional<Algorithm> parseAlgorithm(const std::string& name);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "roomba_rrt/planning/plan_result.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
+#include "roomba_rrt/planning/stop_condition.h"
 
 namespace roomba_rrt::planning {
 
@@ -24,11 +26,17 @@ struct ProgressCallback {
   }
 };
 
+/// steer() for points so far apart that their squared distance overflows (far beyond the ranges
+/// validate() accepts): the same point, computed without overflow; never NaN for finite input.
+Point2 steerFar(const Point2& q_near, const Point2& q_rand, double step);
+
 /// The extend rule: q_rand itself when it is within `step` of q_near, otherwise the point at
 /// distance `step` from q_near towards q_rand.
 inline Point2 steer(const Point2& q_near, const Point2& q_rand, double step) {
   const double d = distance(q_near, q_rand);
   if (d <= step) return q_rand;
+  // An overflowed distance would make the formula below inf / inf = NaN.
+  if (!(d < std::numeric_limits<double>::infinity())) return steerFar(q_near, q_rand, step);
   // q_near + step * (q_rand - q_near) / d, evaluated in the lab's order.
   return {q_near.x + step * (q_rand.x - q_near.x) / d, q_near.y + step * (q_rand.y - q_near.y) / d};
 }
@@ -39,6 +47,8 @@ struct PlannerParts {
   const FreeSpaceSampler& sampler;
   NearestNeighbors& nearest;
   const CollisionChecker& checker;
+  /// Asked once per loop (extension step); nullptr: stop only after max_iterations.
+  StopCondition* stop = nullptr;
 };
 
 /// Makes `tree` a single root node at `root` and `nearest` an index of it over `bounds`.
