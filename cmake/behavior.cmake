@@ -75,6 +75,16 @@ if(CATKIN_ENABLE_TESTING)
     add_dependencies(behavior_rostest roomba_fsm roomba_bt roomba_sim
       ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()
+
+  # rviz on a virtual X server (xvfb, imagemagick): the state text follows the moving robot.
+  add_rostest_gtest(state_marker_rviz_test test/behavior/state_marker_rviz.test
+    test/behavior/state_marker_rviz_test.cpp)
+  if(TARGET state_marker_rviz_test)
+    target_include_directories(state_marker_rviz_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(state_marker_rviz_test roomba_screen_capture ${catkin_LIBRARIES})
+    add_dependencies(state_marker_rviz_test roomba_fsm roomba_sim
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
 endif()
 
 # Nanoseconds per tick: the lab tree, the FSM and a hand-written switch (bench/roomba_switch.h).
