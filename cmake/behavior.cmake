@@ -64,6 +64,13 @@ if(CATKIN_ENABLE_TESTING)
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
 
+  # The roomba_coverage tool as a user runs it (its PNG's seed, its progress bar).
+  catkin_add_gtest(roomba_coverage_test test/behavior/roomba_coverage_test.cpp)
+  if(TARGET roomba_coverage_test)
+    target_link_libraries(roomba_coverage_test gtest_main)
+    add_dependencies(roomba_coverage_test roomba_coverage)
+  endif()
+
   # Through real ROS: roomba_sim at 10x real time with either behaviour node.
   add_rostest_gtest(behavior_rostest test/behavior/roomba_fsm.test
     test/behavior/behavior_rostest.cpp)
