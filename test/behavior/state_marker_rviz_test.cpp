@@ -78,7 +78,8 @@ struct View {
 View look(const Screenshot& shot) {
   // Only inside the room: the Displays panel has white backgrounds and blue labels.
   const Box room = shot.find(kFloorNotYetCleaned, 4, shot.all()).bounds;
-  // The text is antialiased: its core is within 25 of white; the swept floor is 214 grey.
+  // The text is antialiased: its core is within 25 of white; the swept floor is 214 grey. The
+  // robot's white heading arrow counts too: it sits on the disc, so it cannot hide lost text.
   return {shot.find(kRobotBlue, 10, room), shot.find(kTextWhite, 25, room)};
 }
 
