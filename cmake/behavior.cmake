@@ -64,6 +64,13 @@ if(CATKIN_ENABLE_TESTING)
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
 
+  # The roomba_coverage tool as a user runs it (its PNG's seed, its progress bar).
+  catkin_add_gtest(roomba_coverage_test test/behavior/roomba_coverage_test.cpp)
+  if(TARGET roomba_coverage_test)
+    target_link_libraries(roomba_coverage_test gtest_main)
+    add_dependencies(roomba_coverage_test roomba_coverage)
+  endif()
+
   # Through real ROS: roomba_sim at 10x real time with either behaviour node.
   add_rostest_gtest(behavior_rostest test/behavior/roomba_fsm.test
     test/behavior/behavior_rostest.cpp)
@@ -73,6 +80,16 @@ if(CATKIN_ENABLE_TESTING)
     target_include_directories(behavior_rostest PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(behavior_rostest ${catkin_LIBRARIES})
     add_dependencies(behavior_rostest roomba_fsm roomba_bt roomba_sim
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+
+  # rviz on a virtual X server (xvfb, imagemagick): the state text follows the moving robot.
+  add_rostest_gtest(state_marker_rviz_test test/behavior/state_marker_rviz.test
+    test/behavior/state_marker_rviz_test.cpp)
+  if(TARGET state_marker_rviz_test)
+    target_include_directories(state_marker_rviz_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(state_marker_rviz_test roomba_screen_capture ${catkin_LIBRARIES})
+    add_dependencies(state_marker_rviz_test roomba_fsm roomba_sim
       ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()
 endif()

@@ -52,9 +52,14 @@ if(CATKIN_ENABLE_TESTING)
   # An invalid world stops the node, naming the parameter.
   roomba_sim_rostest(sim_invalid_world_test test/sim/sim_invalid_world.test
     test/sim/sim_invalid_world_test.cpp)
+  # What a user sees in rviz: Xvfb, programs on it, screen grabs (imagemagick); also behavior.cmake.
+  add_library(roomba_screen_capture STATIC EXCLUDE_FROM_ALL test/common/screen_capture.cpp)
   # rviz on a virtual X server (xvfb, imagemagick): the config shows robot, walls, coverage map.
   roomba_sim_rostest(sim_rviz_screenshot_test test/sim/sim_rviz.test
     test/sim/sim_rviz_screenshot_test.cpp)
+  if(TARGET sim_rviz_screenshot_test)
+    target_link_libraries(sim_rviz_screenshot_test roomba_screen_capture)
+  endif()
 endif()
 
 # Google Benchmark (libbenchmark-dev): core steps per second. Built only when it is installed.

@@ -95,7 +95,8 @@ class BehaviorNode {
 
     visualization_msgs::Marker marker;
     marker.header.frame_id = "base_link";
-    marker.header.stamp = ros::Time(0);  // follow the robot's latest transform
+    marker.header.stamp = ros::Time(0);  // the robot's latest transform...
+    marker.frame_locked = true;          // ...every frame, so the text follows the robot
     marker.ns = ros::this_node::getName();
     marker.id = 0;
     marker.type = visualization_msgs::Marker::TEXT_VIEW_FACING;

@@ -3,8 +3,9 @@
 // Runs the simulation core with the FSM or the BT in one process, in the lab's step order
 // (contact → bumper → behaviour → move), deterministic by seed. Prints the coverage at 60, 300
 // and 600 s (mean ± standard deviation over seeds with --seeds), writes the first seed's
-// trajectory as CSV and draws it as a PNG (room, furniture, cleaned floor, path coloured by
-// state). See README.md, "Behaviours".
+// trajectory as CSV and draws a typical run as a PNG (room, furniture, cleaned floor, path
+// coloured by state): the seed whose final coverage is closest to the mean. Shows a progress bar
+// on a terminal. See README.md, "Behaviours".
 #include <cairo.h>
 
 #include <chrono>
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "progress_bar.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/sim/simulator.h"
@@ -44,7 +46,9 @@ const char* const kUsage =
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree)\n"
     "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
-    "  --png       picture of the first seed's run\n";
+    "  --png       picture of a typical run: with --seeds N, the seed whose final coverage is\n"
+    "              closest to the mean of the N (its title says which)\n"
+    "A progress bar counts the runs on stderr when it is a terminal.\n";
 
 struct Options {
   std::string behavior;
@@ -327,11 +331,25 @@ void drawPng(const std::string& file, const sim::Simulator& simulator, const Run
 
 // ---- statistics -------------------------------------------------------------------------
 
+double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
+/// Index of the value closest to the mean (the first of equals): a typical run, not the worst.
+std::size_t closestToMean(const std::vector<double>& values) {
+  const double m = mean(values);
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    if (std::abs(values[i] - m) < std::abs(values[best] - m)) best = i;
+  }
+  return best;
+}
+
 /// "mean ± std" in percent (sample standard deviation, N − 1; just the value for one run).
 std::string meanStd(const std::vector<double>& values) {
-  double mean = 0;
-  for (double v : values) mean += v;
-  mean /= static_cast<double>(values.size());
+  const double mean = ::mean(values);
   char text[64];
   if (values.size() < 2) {
     std::snprintf(text, sizeof text, "%5.1f", 100 * mean);
@@ -361,26 +379,35 @@ int run(int argc, char** argv) {
   sim::Simulator simulator(world);
   std::vector<std::vector<double>> at(std::size(kCheckpoints));
   std::vector<double> finals;
+  roomba_rrt::tools::ProgressBar progress(o.seeds, "runs");
   const auto begin = std::chrono::steady_clock::now();
   for (int i = 0; i < o.seeds; ++i) {
-    const bool first = i == 0;
-    const Run result =
-        simulate(o, world, params, o.seed + static_cast<unsigned>(i),
-                 first && csv.is_open() ? &csv : nullptr, first && !o.png.empty(), simulator);
+    const Run result = simulate(o, world, params, o.seed + static_cast<unsigned>(i),
+                                i == 0 && csv.is_open() ? &csv : nullptr, false, simulator);
     for (std::size_t c = 0; c < result.coverage_at.size(); ++c) {
       at[c].push_back(result.coverage_at[c]);
     }
     finals.push_back(result.final_coverage);
-    if (first && !o.png.empty()) {
-      char title[160];
-      std::snprintf(title, sizeof title, "%s, seed %u, %.0f s: %.1f %% of the floor cleaned",
-                    o.behavior == "fsm" ? "FSM" : "BT", o.seed, o.duration,
-                    100 * result.final_coverage);
-      drawPng(o.png, simulator, result, title);
-    }
+    progress.update(i + 1);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  progress.finish(o.seeds);
+
+  // The picture: the typical run, simulated again (runs are deterministic by seed) with its path.
+  const unsigned drawn_seed = o.seed + static_cast<unsigned>(closestToMean(finals));
+  char title[200] = "";
+  if (!o.png.empty()) {
+    const Run drawn = simulate(o, world, params, drawn_seed, nullptr, true, simulator);
+    const int n = std::snprintf(
+        title, sizeof title, "%s, seed %u, %.0f s: %.1f %% of the floor cleaned",
+        o.behavior == "fsm" ? "FSM" : "BT", drawn_seed, o.duration, 100 * drawn.final_coverage);
+    if (o.seeds > 1) {
+      std::snprintf(title + n, sizeof title - n, " (closest to the mean of seeds %u–%u, %.1f %%)",
+                    o.seed, o.seed + o.seeds - 1, 100 * mean(finals));
+    }
+    drawPng(o.png, simulator, drawn, title);
+  }
 
   std::printf("roomba_coverage: %s, seed%s %u%s, %.0f s of robot time per run, world %s\n",
               o.behavior.c_str(), o.seeds > 1 ? "s" : "", o.seed,
@@ -396,7 +423,7 @@ int run(int argc, char** argv) {
   if (!final_is_checkpoint) std::printf("  %8.0f   %s\n", o.duration, meanStd(finals).c_str());
   std::printf("  simulated %d × %.0f s in %.3f s of wall time\n", o.seeds, o.duration, seconds);
   if (!o.csv.empty()) std::printf("  trajectory: %s\n", o.csv.c_str());
-  if (!o.png.empty()) std::printf("  picture: %s\n", o.png.c_str());
+  if (!o.png.empty()) std::printf("  picture: %s, %s\n", o.png.c_str(), title);
   return 0;
 }
 

@@ -6,8 +6,6 @@
 // Each scenario is one job: rng(seed) once, then the runs in sequence from that stream, exactly
 // as MATLAB's monteCarloRRT does. Jobs (scenarios) run on all cores; a job is never split, so
 // the numbers do not depend on the number of threads.
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -21,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "progress_bar.h"
 #include "roomba_rrt/planning/monte_carlo.h"
 #include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/tool_arguments.h"
@@ -87,13 +86,6 @@ void printTable(const std::vector<Job>& jobs, const rp::PlannerOptions& o, int r
   }
 }
 
-void drawProgress(int done, int total) {
-  constexpr int kWidth = 40;
-  const int filled = total > 0 ? done * kWidth / total : kWidth;
-  std::fprintf(stderr, "\r[%s%s] %d/%d runs", std::string(filled, '#').c_str(),
-               std::string(kWidth - filled, '.').c_str(), done, total);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -143,16 +135,13 @@ int main(int argc, char** argv) {
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < std::min<int>(threads, jobs.size()); ++t) pool.emplace_back(worker);
-  const bool show_progress = isatty(STDERR_FILENO);
-  while (show_progress && done < total) {
-    drawProgress(done, total);
+  roomba_rrt::tools::ProgressBar progress(total, "runs");
+  while (progress.shown() && done < total) {
+    progress.update(done);
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   for (std::thread& t : pool) t.join();
-  if (show_progress) {
-    drawProgress(done, total);
-    std::fputc('\n', stderr);
-  }
+  progress.finish(done);
 
   if (args.tool.count("--json")) {
     printJson(jobs, args.options, seed);

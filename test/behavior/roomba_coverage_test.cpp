@@ -1,0 +1,93 @@
+// roomba_coverage as a user runs it: the picture of a many-seed run shows a typical seed (the
+// one closest to the mean), and a progress bar appears on a terminal but never in a pipe.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "../common/run_node.h"
+
+namespace {
+
+using roomba_rrt::test::Outcome;
+using roomba_rrt::test::runCommand;
+using roomba_rrt::test::siblingExecutable;
+
+Outcome coverage(const std::string& args) {
+  return runCommand("timeout 60 " + siblingExecutable("roomba_coverage") + " " + args);
+}
+
+/// The coverage [%] the table prints for `seconds` ("       600    63.7 ± 13.3" → 63.7).
+double coverageAt(const std::string& output, int seconds) {
+  std::smatch m;
+  const std::regex row("\\n +" + std::to_string(seconds) + " +([0-9.]+)");
+  if (!std::regex_search(output, m, row)) return NAN;
+  return std::stod(m[1]);
+}
+
+TEST(RoombaCoverage, png_of_many_seeds_draws_the_seed_closest_to_the_mean) {
+  const std::string png = testing::TempDir() + "roomba_coverage_test.png";
+  std::remove(png.c_str());
+  const Outcome all = coverage("--behavior fsm --duration 600 --seed 1 --seeds 20 --png " + png);
+  ASSERT_EQ(all.exit_code, 0) << all.output;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      all.output, m,
+      std::regex("picture: .*, FSM, seed ([0-9]+), 600 s: ([0-9.]+) % of the floor cleaned "
+                 "\\(closest to the mean of seeds 1–20, ([0-9.]+) %\\)")))
+      << all.output;
+  const int drawn = std::stoi(m[1]);
+  const double drawn_coverage = std::stod(m[2]), mean_in_title = std::stod(m[3]);
+
+  // Each seed on its own (one decimal, as printed).
+  std::vector<double> each;
+  for (int seed = 1; seed <= 20; ++seed) {
+    const Outcome one = coverage("--behavior fsm --duration 600 --seed " + std::to_string(seed));
+    ASSERT_EQ(one.exit_code, 0) << one.output;
+    each.push_back(coverageAt(one.output, 600));
+    ASSERT_FALSE(std::isnan(each.back())) << one.output;
+  }
+  double mean = 0;
+  for (double c : each) mean += c / each.size();
+  double closest = INFINITY;
+  for (double c : each) closest = std::min(closest, std::abs(c - mean));
+
+  EXPECT_NEAR(mean_in_title, mean, 0.1);
+  EXPECT_NEAR(coverageAt(all.output, 600), mean, 0.1) << "the table's mean";
+  EXPECT_DOUBLE_EQ(drawn_coverage, each[drawn - 1]) << "the title gives the drawn seed's coverage";
+  EXPECT_LE(std::abs(each[drawn - 1] - mean), closest + 0.1)
+      << "seed " << drawn << " (" << each[drawn - 1] << " %) is not the closest to the mean "
+      << mean << " %";
+  EXPECT_GT(std::abs(each[0] - mean), 10) << "seed 1 is no longer far from the mean: the test "
+                                             "cannot tell a typical seed from the first";
+
+  std::ifstream file(png, std::ios::binary);
+  char magic[4] = {};
+  file.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG") << png << " is not a PNG";
+}
+
+TEST(RoombaCoverage, progress_bar_on_a_terminal_only) {
+  const std::string args = "--behavior bt --duration 60 --seeds 30";
+  // `script` runs the tool on a pseudo-terminal, as in a user's shell.
+  const Outcome terminal =
+      runCommand("timeout 60 script -qec '" + siblingExecutable("roomba_coverage") + " " + args +
+                 "' /dev/null");
+  ASSERT_EQ(terminal.exit_code, 0) << terminal.output;
+  EXPECT_NE(terminal.output.find("] 30/30 runs"), std::string::npos) << terminal.output;
+  EXPECT_NE(terminal.output.find("\r[#"), std::string::npos) << terminal.output;
+
+  const Outcome pipe = coverage(args);
+  ASSERT_EQ(pipe.exit_code, 0) << pipe.output;
+  EXPECT_EQ(pipe.output.find("/30 runs"), std::string::npos) << "a progress bar in a pipe";
+  EXPECT_EQ(pipe.output.find('\r'), std::string::npos) << "control characters in a pipe";
+  EXPECT_NEAR(coverageAt(pipe.output, 60), coverageAt(terminal.output, 60), 1e-9)
+      << "the same table either way";
+}
+
+}  // namespace
