@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct NodeDefaults {
   planning::Bounds bounds;           // the lab's [0, 10] x [0, 10]
   planning::PlannerOptions options;  // the lab's step, goal bias, iterations, tolerance, seed
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
+  std::optional<planning::Problem> room;  // scenario "room": the simulator's world (~world_file)
 };
 
 /// A request turned into the library's input, or the reason it cannot be.
@@ -35,7 +37,8 @@ struct ResolvedRequest {
 };
 
 /// Fills every field of `request` left at zero or empty from `defaults` (a named scenario fills
-/// start, goal, obstacles and bounds), then validates the result. Never throws on bad input: the
+/// start, goal, obstacles and bounds; scenario "room" fills all but start and goal, which the
+/// request must give), then validates the result. Never throws on bad input: the
 /// error message names the field ("scenario: unknown 'z' ...", "step: must be > 0", ...).
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
                                const std::map<std::string, planning::Problem>& scenarios);
@@ -58,7 +61,8 @@ struct MarkerScene {
 };
 
 /// The markers of one plan, first a DELETEALL so that nothing of the previous plan stays:
-/// namespace "bounds" (LINE_STRIP), "obstacles" (one CYLINDER each), "start" and "goal"
+/// namespace "bounds" (LINE_STRIP), "obstacles" (one CYLINDER each), "rectangles" (one CUBE
+/// each), "start" and "goal"
 /// (SPHEREs), "edges" (one LINE_LIST, two points per tree edge), "nodes" (POINTS) and "path"
 /// (LINE_STRIP). Empty point sets are left out (rviz rejects them).
 visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::string& frame_id,

@@ -93,14 +93,16 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
       progress(tree, iteration);
       continue;
     }
-    // 5. Choose the parent: the neighbour through which q_new is reached shortest.
+    // 5. Choose the parent: the neighbour through which q_new is reached shortest. Its edge can
+    //    be far longer than one step, so it is checked whole in both modes (points mode checks
+    //    only the single step from the nearest node by its end).
     parts.nearest.withinRadius(q_new, rewireRadius(problem.bounds, options.step, tree.size()),
                                near);
     int parent = nearest;
     double new_cost = cost(nearest) + distance(q_nearest, q_new);
     for (int n : near) {
       const double c = cost(n) + distance(tree.nodes[n], q_new);
-      if (c < new_cost && parts.checker.isMotionFree(tree.nodes[n], q_new)) {
+      if (c < new_cost && parts.checker.isSegmentFree(tree.nodes[n], q_new)) {
         parent = n;
         new_cost = c;
       }
@@ -108,11 +110,11 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     const int added = tree.add(q_new, parent);
     parts.nearest.add(q_new, added);
     cost.add(parent, new_cost);
-    // 6. Rewire: neighbours that get shorter through q_new take it as parent.
+    // 6. Rewire: neighbours that get shorter through q_new take it as parent (edge checked whole).
     for (int n : near) {
       const double via_new = new_cost + distance(q_new, tree.nodes[n]);
       if (n != parent && via_new + kImprovement < cost(n) &&
-          parts.checker.isMotionFree(q_new, tree.nodes[n])) {
+          parts.checker.isSegmentFree(q_new, tree.nodes[n])) {
         cost.reparent(tree, n, added, via_new);
       }
     }
