@@ -28,6 +28,12 @@ class CollisionChecker {
         margin_(margin),
         mode_(mode) {
     for (Circle& c : obstacles_) c.radius += margin;  // + 0 leaves the lab's discs bit-identical
+    // Each rectangle's box grown by margin, for the inline quick test of isSegmentFree().
+    grown_boxes_.reserve(rectangles_.size());
+    for (const Rectangle& r : rectangles_) {
+      grown_boxes_.push_back(
+          {r.min_x - margin, r.min_y - margin, r.max_x + margin, r.max_y + margin});
+    }
     // Each disc's part of the quick test's reach (see isSegmentFree()), computed once.
     reach_.reserve(obstacles_.size());
     for (const Circle& c : obstacles_) {
@@ -63,8 +69,15 @@ class CollisionChecker {
       if (squaredDistance(a, c.center) > clear * clear) continue;  // too far to touch the segment
       if (segmentMeets({a, b}, c)) return false;
     }
-    for (const Rectangle& box : rectangles_) {
-      if (segmentMeets({a, b}, box, margin_)) return false;
+    for (std::size_t i = 0; i < rectangles_.size(); ++i) {
+      // Quick test: the segment's bounding box misses the rectangle's grown box (the exact test's
+      // own first test, inline), so only nearby rectangles cost a call.
+      const Rectangle& g = grown_boxes_[i];
+      if (std::max(a.x, b.x) < g.min_x || std::min(a.x, b.x) > g.max_x ||
+          std::max(a.y, b.y) < g.min_y || std::min(a.y, b.y) > g.max_y) {
+        continue;
+      }
+      if (segmentMeets({a, b}, rectangles_[i], margin_)) return false;
     }
     return true;
   }
@@ -82,6 +95,7 @@ class CollisionChecker {
  private:
   std::vector<Circle> obstacles_;
   std::vector<Rectangle> rectangles_;
+  std::vector<Rectangle> grown_boxes_;  ///< per rectangle: its bounding box grown by margin_
   double margin_;
   std::vector<double> reach_;  ///< per disc: its radius plus its share of the quick test's slack
   CollisionCheck mode_;
