@@ -1,11 +1,13 @@
 // The lab's RRT (rrt_planning) against OMPL 1.5's stock geometric::RRT, on the same problems with
 // the same parameters and the same collision semantics, timed in the same process (CPU time of
-// the solving thread, median over many solves after a warm-up).
+// the solving thread less the clock reading's own cost, median over many solves after a warm-up).
 //
 //   ompl_comparison                      scenarios a-d x {points, segments} and the growth rows,
 //                                        as a Markdown table
 //   ompl_comparison --json               the same figures as JSON (read by scripts/bench)
 //   ompl_comparison --runs 500 --warmup 20 --growth 10000,100000,1000000 --growth-reps 3
+//   ompl_comparison --world config/roomba_world_furnished.yaml --room-runs 5
+//                                        the furnished-room rows' world and solves per pair
 //   ompl_comparison --plan-once ours|ompl --iterations 1000000
 //                                        one growth plan, nothing else (for peak-RSS figures)
 //
@@ -30,6 +32,8 @@
 #include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 #include <sys/resource.h>
@@ -46,6 +50,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "roomba_rrt/planning/collision_checker.h"
@@ -69,6 +74,24 @@ double threadCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// What a timing costs by itself: the smallest CPU time between two consecutive readings of the
+/// thread's clock, out of 1000 (a system call on some VMs: about 3 µs on the benchmark machine,
+/// a quarter of a room solve). Set once in main() and subtracted from every solve of both sides.
+double clockOverhead() {
+  double least = 1;
+  for (int i = 0; i < 1000; ++i) {
+    const double t0 = threadCpuSeconds();
+    least = std::min(least, threadCpuSeconds() - t0);
+  }
+  return least;
+}
+double g_clock_overhead = 0;
+
+/// CPU seconds since the reading `t0`, without the readings' own cost.
+double cpuSecondsSince(double t0) {
+  return std::max(0.0, threadCpuSeconds() - t0 - g_clock_overhead);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -128,17 +151,22 @@ struct Solve {
   double seconds = 0;  // CPU time of the solve call only
 };
 
-/// OMPL's RRT set up once for one problem; solve() runs a fresh tree each call.
-class OmplLabRrt {
+/// An OMPL planner (RRT by default; RRTConnect, RRTstar for the room rows) set up once for one
+/// problem; solve() runs a fresh tree each call. A robot with a size (problem.robot_radius +
+/// clearance) gets the grown world exactly as the library plans in it: the library's checker of
+/// the grown obstacles and the bounds shrunk by the margin.
+template <typename Planner = og::RRT>
+class OmplLab {
  public:
-  OmplLabRrt(const rp::Problem& problem, const rp::PlannerOptions& options)
-      : bounds_(problem.bounds), checker_(problem.obstacles, options.collision) {
+  OmplLab(const rp::Problem& problem, const rp::PlannerOptions& options)
+      : bounds_(rp::shrink(problem.bounds, rp::robotMargin(problem))),
+        checker_(rp::collisionChecker(problem, options.collision)) {
     auto space = std::make_shared<ob::RealVectorStateSpace>(2);
     ob::RealVectorBounds bounds(2);
-    bounds.setLow(0, problem.bounds.x_min);
-    bounds.setHigh(0, problem.bounds.x_max);
-    bounds.setLow(1, problem.bounds.y_min);
-    bounds.setHigh(1, problem.bounds.y_max);
+    bounds.setLow(0, bounds_.x_min);
+    bounds.setHigh(0, bounds_.x_max);
+    bounds.setLow(1, bounds_.y_min);
+    bounds.setHigh(1, bounds_.y_max);
     space->setBounds(bounds);
 
     si_ = std::make_shared<ob::SpaceInformation>(space);
@@ -162,33 +190,51 @@ class OmplLabRrt {
     goal_state->setThreshold(options.goal_tolerance);
     pdef_->setGoal(goal_state);
 
-    planner_ = std::make_shared<og::RRT>(si_);
+    planner_ = std::make_shared<Planner>(si_);
     planner_->setRange(options.step);
-    planner_->setGoalBias(options.goal_bias);
+    if constexpr (!std::is_same_v<Planner, og::RRTConnect>) {
+      planner_->setGoalBias(options.goal_bias);  // RRTConnect has none: the goal tree pulls
+    }
     planner_->setProblemDefinition(pdef_);
     planner_->setup();
   }
 
+  /// At most `iterations` iterations (stops at the first solution, except RRTstar).
   Solve solve(unsigned iterations) {
+    return solveUntil(
+        [iterations](double) { return ob::IterationTerminationCondition(iterations); });
+  }
+  /// Until the solving thread has used `seconds` of CPU time (RRTstar keeps improving until then;
+  /// CPU time, as our side is measured, so load on the machine does not shorten the budget).
+  Solve solveFor(double seconds) {
+    return solveUntil([seconds](double t0) {
+      const double deadline = t0 + seconds;
+      return ob::PlannerTerminationCondition([deadline] { return threadCpuSeconds() >= deadline; });
+    });
+  }
+
+ private:
+  /// Clears the previous run (not timed), then solves until make_stop(start time) says so.
+  template <typename MakeStop>
+  Solve solveUntil(const MakeStop& make_stop) {
     planner_->clear();
     pdef_->clearSolutionPaths();
-    ob::IterationTerminationCondition stop(iterations);
     const double t0 = threadCpuSeconds();
-    const ob::PlannerStatus status = planner_->solve(stop);
+    const ob::PlannerStatus status = planner_->solve(make_stop(t0));
     Solve out;
-    out.seconds = threadCpuSeconds() - t0;
+    out.seconds = cpuSecondsSince(t0);
     out.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
     if (out.solved) out.length = pdef_->getSolutionPath()->length();
     return out;
   }
 
- private:
   rp::Bounds bounds_;
   rp::CollisionChecker checker_;
   ob::SpaceInformationPtr si_;
   ob::ProblemDefinitionPtr pdef_;
-  std::shared_ptr<og::RRT> planner_;
+  std::shared_ptr<Planner> planner_;
 };
+using OmplLabRrt = OmplLab<og::RRT>;
 
 // ---------------------------------------------------------------------------------------------
 // Our side: rrt_planning's plan(), timed the same way.
@@ -200,7 +246,7 @@ Solve solveOurs(const rp::Problem& problem, rp::PlannerOptions options, unsigned
   const double t0 = threadCpuSeconds();
   const rp::PlanResult result = rp::plan(problem, options);
   Solve out;
-  out.seconds = threadCpuSeconds() - t0;
+  out.seconds = cpuSecondsSince(t0);
   out.solved = result.success;
   if (out.solved) out.length = result.length;
   return out;
@@ -271,6 +317,10 @@ struct Config {
   std::string plan_once;  // "ours" or "ompl"
   unsigned iterations = 1000000;
   std::string scenarios_file = rp::defaultScenarioFile();
+  std::string world_file = ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
+  int room_runs = 5;            // solves per start/goal pair and side in the room rows
+  int room_iterations = 20000;  // the room's RRT and RRT-Connect: max_iterations of both sides
+  bool room_only = false;       // only the room rows (--room-only)
 };
 
 const char* modeName(rp::CollisionCheck c) {
@@ -325,6 +375,120 @@ std::vector<GrowthRow> runGrowth(const rp::Problem& world, const Config& cfg) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The furnished room (issue 9): the simulator's world for a robot of radius 0.17 (the world's),
+// collision_check segments, 20 fixed start/goal pairs. Both sides plan in the same grown world
+// with the same checker (OmplLab above).
+
+constexpr int kRoomPairs = 20;
+
+/// 20 start/goal pairs drawn once from MATLAB's stream seeded 2024 in the shrunk bounds, each
+/// valid for the robot (not in grown furniture) and at least 3 m apart.
+std::vector<rp::Problem> roomQueries(const rp::Problem& room) {
+  rp::MatlabRandom random(2024);
+  const rp::Bounds b = rp::shrink(room.bounds, rp::robotMargin(room));
+  std::vector<rp::Problem> out;
+  while (out.size() < kRoomPairs) {
+    rp::Problem p = room;
+    p.start = {random.uniform(b.x_min, b.x_max), random.uniform(b.y_min, b.y_max)};
+    p.goal = {random.uniform(b.x_min, b.x_max), random.uniform(b.y_min, b.y_max)};
+    if (rp::distance(p.start, p.goal) >= 3 && rp::validate(p, {}).empty()) out.push_back(p);
+  }
+  return out;
+}
+
+struct RoomRow {
+  std::string name;     // rrt, rrt_connect, rrt_star_10ms, rrt_star_100ms
+  double budget_s = 0;  // RRT* rows: the CPU-time budget of each solve
+  Summary ours, ompl;
+};
+
+/// The lab's options for the room: segments, step 0.2, bias 0.1, eps 1e-3, and `iterations`
+/// (the same limit for OMPL; enough that every pair is solved).
+rp::PlannerOptions roomOptions(rp::Algorithm algorithm, int iterations = 20000) {
+  rp::PlannerOptions options;
+  options.algorithm = algorithm;
+  options.collision = rp::CollisionCheck::kSegments;
+  options.max_iterations = iterations;
+  return options;
+}
+
+/// Solve time of RRT (or RRT-Connect) against OMPL's, run `solve_i` for pair i % 20.
+template <typename OmplPlanner>
+RoomRow roomTimeRow(const std::string& name, const std::vector<rp::Problem>& queries,
+                    rp::Algorithm algorithm, const Config& cfg) {
+  const rp::PlannerOptions options = roomOptions(algorithm, cfg.room_iterations);
+  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl;
+  for (const rp::Problem& q : queries)
+    ompl.push_back(std::make_unique<OmplLab<OmplPlanner>>(q, options));
+  const int runs = kRoomPairs * cfg.room_runs;
+  RoomRow row{name, 0, {}, {}};
+  const auto iterations = static_cast<unsigned>(options.max_iterations);
+  row.ompl =
+      measure(kRoomPairs, runs, [&](int i) { return ompl[i % kRoomPairs]->solve(iterations); });
+  row.ours = measure(kRoomPairs, runs, [&](int i) {
+    return solveOurs(queries[i % kRoomPairs], options, iterations,
+                     42u + static_cast<std::uint32_t>(i));
+  });
+  return row;
+}
+
+/// The most iterations of our RRT* on `query` whose solve stays within `budget` seconds of CPU
+/// time (doubling, then the last count that fit): our planner stops by iterations, OMPL's by time.
+unsigned iterationsWithin(const rp::Problem& query, double budget) {
+  const rp::PlannerOptions options = roomOptions(rp::Algorithm::kRrtStar);
+  const auto within = [&](unsigned n) {
+    return solveOurs(query, options, n, 1u).seconds <= budget;
+  };
+  unsigned fits = 50, over = 100;
+  while (over < 5000000 && within(over)) {
+    fits = over;
+    over *= 2;
+  }
+  for (int step = 0; step < 4 && over - fits > 1; ++step) {  // bisect to within 1/16
+    const unsigned mid = fits + (over - fits) / 2;
+    (within(mid) ? fits : over) = mid;
+  }
+  return fits - fits / 16;  // a margin for the other seeds' spread
+}
+
+/// RRT*'s mean path length after the same CPU-time budget as OMPL's RRTstar.
+RoomRow roomStarRow(const std::vector<rp::Problem>& queries, double budget, const Config& cfg) {
+  const rp::PlannerOptions options = roomOptions(rp::Algorithm::kRrtStar);
+  std::vector<std::unique_ptr<OmplLab<og::RRTstar>>> ompl;
+  std::vector<unsigned> iterations;
+  for (const rp::Problem& q : queries) {
+    ompl.push_back(std::make_unique<OmplLab<og::RRTstar>>(q, options));
+    iterations.push_back(iterationsWithin(q, budget));
+  }
+  const int runs = kRoomPairs * cfg.room_runs;
+  RoomRow row{
+      "rrt_star_" + std::to_string(static_cast<int>(budget * 1000 + 0.5)) + "ms", budget, {}, {}};
+  row.ompl = measure(0, runs, [&](int i) { return ompl[i % kRoomPairs]->solveFor(budget); });
+  row.ours = measure(0, runs, [&](int i) {
+    const int pair = i % kRoomPairs;
+    return solveOurs(queries[pair], options, iterations[pair], 42u + static_cast<std::uint32_t>(i));
+  });
+  return row;
+}
+
+std::vector<RoomRow> runRoom(const Config& cfg) {
+  const rp::Problem room = rp::loadRoom(cfg.world_file);
+  const std::vector<rp::Problem> queries = roomQueries(room);
+  std::vector<RoomRow> rows;
+  rows.push_back(roomTimeRow<og::RRT>("rrt", queries, rp::Algorithm::kRrt, cfg));
+  rows.push_back(
+      roomTimeRow<og::RRTConnect>("rrt_connect", queries, rp::Algorithm::kRrtConnect, cfg));
+  for (double budget : {0.01, 0.1}) rows.push_back(roomStarRow(queries, budget, cfg));
+  for (const RoomRow& r : rows) {
+    std::cerr << "room " << r.name << ": ours " << r.ours.median_seconds * 1e6 << " us, L "
+              << r.ours.mean_length << ", " << r.ours.solved_percent << " %; OMPL "
+              << r.ompl.median_seconds * 1e6 << " us, L " << r.ompl.mean_length << ", "
+              << r.ompl.solved_percent << " %\n";
+  }
+  return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Output.
 
 std::string num(double v, int precision) {
@@ -337,7 +501,7 @@ std::string num(double v, int precision) {
 }
 
 void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
-               const Config& cfg) {
+               const std::vector<RoomRow>& room, const Config& cfg) {
   auto side = [](const Summary& s) {
     return "{\"solved_percent\": " + num(s.solved_percent, 2) +
            ", \"mean_length\": " + num(s.mean_length, 4) +
@@ -359,11 +523,18 @@ void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<Grow
               << ", \"ompl_ns_per_iteration\": " << num(g.ompl_ns_per_iteration, 1) << "}"
               << (i + 1 < growth.size() ? "," : "") << "\n";
   }
+  std::cout << "  ],\n  \"room_runs\": " << kRoomPairs * cfg.room_runs << ",\n  \"room\": [\n";
+  for (std::size_t i = 0; i < room.size(); ++i) {
+    const RoomRow& r = room[i];
+    std::cout << "    {\"row\": \"" << r.name << "\", \"budget_ms\": " << num(r.budget_s * 1e3, 1)
+              << ", \"ours\": " << side(r.ours) << ", \"ompl\": " << side(r.ompl) << "}"
+              << (i + 1 < room.size() ? "," : "") << "\n";
+  }
   std::cout << "  ]\n}\n";
 }
 
 void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
-                   const Config& cfg) {
+                   const std::vector<RoomRow>& room, const Config& cfg) {
   std::cout << "RRT vs OMPL " << kOmplVersion << " geometric::RRT (" << cfg.runs
             << " runs per row after " << cfg.warmup
             << " warm-up runs; median CPU time per solve)\n\n"
@@ -388,6 +559,21 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
   }
   std::cout << "\nOMPL samples the whole box and discards steps that end in an obstacle; the lab "
                "rejection-samples the free space, so success rates differ (mostly on d).\n";
+  std::cout << "\nFurnished room, robot radius 0.17, segments, " << kRoomPairs
+            << " start/goal pairs x " << cfg.room_runs
+            << " (RRT, RRT-Connect: median CPU time per solve; RRT*: mean length after the same "
+               "CPU-time budget)\n\n"
+            << "| row | solved % ours | solved % OMPL | mean length ours | mean length OMPL | "
+               "µs ours | µs OMPL | ours/OMPL time | ours/OMPL length |\n"
+            << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const RoomRow& r : room) {
+    std::cout << "| " << r.name << " | " << num(r.ours.solved_percent, 1) << " | "
+              << num(r.ompl.solved_percent, 1) << " | " << num(r.ours.mean_length, 3) << " | "
+              << num(r.ompl.mean_length, 3) << " | " << num(r.ours.median_seconds * 1e6, 1) << " | "
+              << num(r.ompl.median_seconds * 1e6, 1) << " | "
+              << num(r.ours.median_seconds / r.ompl.median_seconds, 3) << " | "
+              << num(r.ours.mean_length / r.ompl.mean_length, 3) << " |\n";
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -397,6 +583,8 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
   std::cerr << "ompl_comparison: " << error
             << "\nusage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
                " [--growth-reps N] [--scenarios FILE]\n"
+               "                       [--world FILE] [--room-runs N] [--room-iterations N]"
+               " [--room-only]\n"
                "       ompl_comparison --plan-once ours|ompl [--iterations N]\n";
   std::exit(2);
 }
@@ -440,6 +628,14 @@ Config parseArgs(int argc, char** argv) {
       cfg.iterations = parseCount(arg, value());
     } else if (arg == "--scenarios") {
       cfg.scenarios_file = value();
+    } else if (arg == "--world") {
+      cfg.world_file = value();
+    } else if (arg == "--room-only") {
+      cfg.room_only = true;
+    } else if (arg == "--room-iterations") {
+      cfg.room_iterations = static_cast<int>(parseCount(arg, value()));
+    } else if (arg == "--room-runs") {
+      cfg.room_runs = std::max(1, static_cast<int>(parseCount(arg, value())));
     } else {
       usage("unknown argument '" + arg + "'");
     }
@@ -473,6 +669,7 @@ int main(int argc, char** argv) {
   const Config cfg = parseArgs(argc, argv);
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   ompl::RNG::setSeed(42);  // before any planner exists: OMPL seeds every RNG from this one
+  g_clock_overhead = clockOverhead();
 
   std::map<std::string, rp::Problem> scenarios;
   try {
@@ -488,12 +685,21 @@ int main(int argc, char** argv) {
   const rp::Problem& growth_world = scenarios.at("d");
   if (!cfg.plan_once.empty()) return planOnce(growth_world, cfg);
 
-  const std::vector<ScenarioRow> rows = runScenarios(scenarios, cfg);
-  const std::vector<GrowthRow> growth = runGrowth(growth_world, cfg);
+  const std::vector<ScenarioRow> rows =
+      cfg.room_only ? std::vector<ScenarioRow>{} : runScenarios(scenarios, cfg);
+  const std::vector<GrowthRow> growth =
+      cfg.room_only ? std::vector<GrowthRow>{} : runGrowth(growth_world, cfg);
+  std::vector<RoomRow> room;
+  try {
+    room = runRoom(cfg);
+  } catch (const std::exception& e) {
+    std::cerr << "ompl_comparison: " << cfg.world_file << ": " << e.what() << "\n";
+    return 1;
+  }
   if (cfg.json) {
-    printJson(rows, growth, cfg);
+    printJson(rows, growth, room, cfg);
   } else {
-    printMarkdown(rows, growth, cfg);
+    printMarkdown(rows, growth, room, cfg);
   }
   return 0;
 }

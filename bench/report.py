@@ -152,6 +152,43 @@ def rrt_rows(t, results):
               fmt(g["ours_ns_per_iteration"]) + " ns", fmt(g["ompl_ns_per_iteration"]) + " ns")
 
 
+def room_rows(t, results):
+    """The furnished room (issue 9): robot radius 0.17, segments, 20 fixed start/goal pairs."""
+    try:
+        data = load(results, "ompl")
+    except Missing as e:
+        t.missing("room", "RRT family vs OMPL in the furnished room", str(e))
+        return
+    if "room" not in data:
+        t.missing("room", "RRT family vs OMPL in the furnished room", "no room rows in ompl.json")
+        return
+    peers = {"rrt": "RRT", "rrt_connect": "RRTConnect"}
+    for r in data["room"]:
+        ours, ompl = r["ours"], r["ompl"]
+
+        def cell(s):
+            length = "—" if s["mean_length"] is None else f"{s['mean_length']:.3f}"
+            return f"{fmt(s['median_us'])} µs · {s['solved_percent']:.1f} % · L {length}"
+
+        if r["row"] in peers:
+            ratio = ours["median_us"] / ompl["median_us"] if ompl["median_us"] else None
+            t.add(f"room_{r['row']}",
+                  f"{r['row']} vs OMPL {peers[r['row']]}, furnished room, radius 0.17, segments: "
+                  f"median CPU time per solve · solved · mean length ({data['room_runs']} solves, "
+                  "20 start/goal pairs)",
+                  ours["median_us"], ompl["median_us"], ratio, "≤ 0.1",
+                  ratio is not None and ratio <= 0.1, cell(ours), cell(ompl))
+        else:
+            lo, lp = ours["mean_length"], ompl["mean_length"]
+            ratio = lo / lp if lo is not None and lp else None
+            t.add(f"room_{r['row']}",
+                  f"rrt_star vs OMPL RRTstar, furnished room, radius 0.17, segments: mean path "
+                  f"length after {r['budget_ms']:g} ms of CPU time ({data['room_runs']} solves, "
+                  "20 pairs)",
+                  lo, lp, ratio, "≤ 1 (length)", ratio is not None and ratio <= 1,
+                  cell(ours), cell(ompl))
+
+
 def planning_rows(t, results):
     what = "RRT one iteration on a grown tree of {} nodes (d's world): CPU ns; peer: the lab's " \
            "brute-force nearest neighbour, same binary"
@@ -320,7 +357,7 @@ def main(argv):
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, planning_rows, behavior_rows, sim_rows, rtf_rows, service_rows,
+    for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, rtf_rows, service_rows,
                  memory_rows):
         try:
             rows(t, results)

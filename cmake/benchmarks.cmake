@@ -34,6 +34,8 @@ if(OMPL_FOUND AND TARGET rrt_planning)
   target_include_directories(ompl_comparison PRIVATE include)
   target_include_directories(ompl_comparison SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
   target_link_libraries(ompl_comparison PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
+  target_compile_definitions(ompl_comparison PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(benchmarks ompl_comparison)
 endif()
 

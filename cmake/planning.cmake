@@ -3,7 +3,6 @@
 
 add_library(rrt_planning
   src/planning/brute_force_nearest_neighbors.cpp
-  src/planning/geometry.cpp
   src/planning/grid_nearest_neighbors.cpp
   src/planning/monte_carlo.cpp
   src/planning/nearest_neighbors.cpp
@@ -20,9 +19,10 @@ add_library(rrt_planning
   src/planning/validate.cpp
 )
 target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
-target_link_libraries(rrt_planning PUBLIC yaml-cpp)
+target_link_libraries(rrt_planning PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
 target_compile_definitions(rrt_planning PRIVATE
   RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
+# The room scenario reads the simulator's world files (sim::loadWorld), ROS-free too.
 
 find_package(Threads REQUIRED)
 
@@ -43,9 +43,12 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/test_algorithms.cpp
     test/planning/test_validate.cpp
     test/planning/test_robustness.cpp
+    test/planning/test_room.cpp
   )
   if(TARGET test_rrt_planning)
     target_link_libraries(test_rrt_planning rrt_planning gtest_main)
+    target_compile_definitions(test_rrt_planning PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   endif()
 endif()
 
@@ -75,7 +78,8 @@ if(CATKIN_ENABLE_TESTING)
       plan_path_service:rrt_planner_service_test
       concurrent_clients:rrt_planner_concurrency_test
       animation:rrt_planner_animation_test
-      hostile_requests:rrt_planner_hostile_test)
+      hostile_requests:rrt_planner_hostile_test
+      room:rrt_planner_room_test)
     string(REPLACE ":" ";" planner_node_test ${planner_node_test})
     list(GET planner_node_test 0 launch_name)
     list(GET planner_node_test 1 test_target)

@@ -8,7 +8,7 @@ add_library(roomba_sim_core
   src/sim/simulator.cpp
 )
 target_include_directories(roomba_sim_core PUBLIC include)
-target_link_libraries(roomba_sim_core PUBLIC yaml-cpp)
+target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 

@@ -37,6 +37,7 @@ std::string explicitGeometryField(const PlanPath::Request& r) {
   if (!isUnset(r.start)) return "start";
   if (!isUnset(r.goal)) return "goal";
   if (!r.obstacles.empty()) return "obstacles";
+  if (!r.rectangles.empty()) return "rectangles";
   if (boundsGiven(r)) return "x_min/x_max/y_min/y_max";
   return "";
 }
@@ -53,10 +54,29 @@ std::string nonFiniteHeight(const PlanPath::Request& r) {
   return "";
 }
 
-std::string knownScenarios(const std::map<std::string, planning::Problem>& scenarios) {
+std::string knownScenarios(const std::map<std::string, planning::Problem>& scenarios,
+                           const NodeDefaults& defaults) {
   std::string names;
   for (const auto& entry : scenarios) names += (names.empty() ? "" : ", ") + entry.first;
+  if (defaults.room) names += names.empty() ? "room" : ", room";
   return names.empty() ? "none loaded" : names;
+}
+
+// Scenario "room": the simulator's world, with the request's start and goal (both required).
+std::string resolveRoom(const PlanPath::Request& r, const planning::Problem& room,
+                        planning::Problem* problem) {
+  for (const auto& [field, given] :
+       {std::pair<const char*, bool>{"start", !isUnset(r.start)}, {"goal", !isUnset(r.goal)}}) {
+    if (!given) return std::string(field) + ": required for scenario 'room' (where the robot is)";
+  }
+  if (!r.obstacles.empty() || !r.rectangles.empty() || boundsGiven(r)) {
+    return "scenario: 'room' cannot be combined with explicit obstacles, rectangles or bounds "
+           "(the world file gives them)";
+  }
+  *problem = room;
+  problem->start = toPoint2(r.start);
+  problem->goal = toPoint2(r.goal);
+  return "";
 }
 
 // Start, goal, obstacles and bounds: from the named scenario, or from the request with the
@@ -64,10 +84,12 @@ std::string knownScenarios(const std::map<std::string, planning::Problem>& scena
 std::string resolveGeometry(const PlanPath::Request& r, const NodeDefaults& defaults,
                             const std::map<std::string, planning::Problem>& scenarios,
                             planning::Problem* problem) {
+  if (r.scenario == "room" && defaults.room) return resolveRoom(r, *defaults.room, problem);
   if (!r.scenario.empty()) {
     const auto found = scenarios.find(r.scenario);
     if (found == scenarios.end()) {
-      return "scenario: unknown '" + r.scenario + "' (known: " + knownScenarios(scenarios) + ")";
+      return "scenario: unknown '" + r.scenario +
+             "' (known: " + knownScenarios(scenarios, defaults) + ")";
     }
     const std::string field = explicitGeometryField(r);
     if (!field.empty()) {
@@ -83,9 +105,19 @@ std::string resolveGeometry(const PlanPath::Request& r, const NodeDefaults& defa
   for (const auto& obstacle : r.obstacles) {
     problem->obstacles.push_back({toPoint2(obstacle.center), obstacle.radius});
   }
+  problem->rectangles.clear();
+  for (const auto& box : r.rectangles) {
+    problem->rectangles.push_back({box.min_x, box.min_y, box.max_x, box.max_y});
+  }
   problem->bounds =
       boundsGiven(r) ? planning::Bounds{r.x_min, r.x_max, r.y_min, r.y_max} : defaults.bounds;
   return "";
+}
+
+// The robot's size: the request's where given, otherwise the scenario's (the room's robot) or 0.
+void resolveRobot(const PlanPath::Request& r, planning::Problem* problem) {
+  problem->robot_radius = orDefault(r.robot_radius, problem->robot_radius);
+  problem->clearance = orDefault(r.clearance, problem->clearance);
 }
 
 // Planner options: the node's, overridden by every request field that is set.
@@ -190,6 +222,7 @@ ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefau
   resolved.error = nonFiniteHeight(request);
   if (resolved.error.empty()) {
     resolved.error = resolveGeometry(request, defaults, scenarios, &resolved.problem);
+    resolveRobot(request, &resolved.problem);
   }
   if (resolved.error.empty()) resolved.error = resolveOptions(request, defaults, &resolved.options);
   if (resolved.error.empty()) {
@@ -247,6 +280,17 @@ visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::s
     m.pose.position = toPointMsg(obstacle.center, -0.05);
     m.scale.x = m.scale.y = 2.0 * obstacle.radius;
     m.scale.z = 0.1;  // a flat disc just below the tree
+    array.markers.push_back(m);
+  }
+  for (std::size_t i = 0; i < problem.rectangles.size(); ++i) {
+    const planning::Rectangle& box = problem.rectangles[i];
+    Marker m = makeMarker(frame_id, stamp, "rectangles", static_cast<int>(i), Marker::CUBE,
+                          color(0.35f, 0.35f, 0.35f));
+    m.pose.position =
+        toPointMsg({0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)}, -0.05);
+    m.scale.x = box.max_x - box.min_x;
+    m.scale.y = box.max_y - box.min_y;
+    m.scale.z = 0.1;  // flat, as the discs
     array.markers.push_back(m);
   }
   array.markers.push_back(sphereMarker(

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct NodeDefaults {
   planning::PlannerOptions options;  // the lab's step, goal bias, iterations, tolerance, seed;
                                      // its max_planning_time is also the requests' limit
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
+  std::optional<planning::Problem> room;  // scenario "room": the simulator's world (~world_file)
 };
 
 /// A request turned into the library's input, or the reason it cannot be.
@@ -36,7 +38,8 @@ struct ResolvedRequest {
 };
 
 /// Fills every field of `request` left at zero or empty from `defaults` (a named scenario fills
-/// start, goal, obstacles and bounds), then validates the result. Never throws on bad input: the
+/// start, goal, obstacles and bounds; scenario "room" fills all but start and goal, which the
+/// request must give), then validates the result. Never throws on bad input: the
 /// error message names the field ("scenario: unknown 'z' ...", "step: must be in [...]", ...).
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
                                const std::map<std::string, planning::Problem>& scenarios);
@@ -59,7 +62,8 @@ struct MarkerScene {
 };
 
 /// The markers of one plan, first a DELETEALL so that nothing of the previous plan stays:
-/// namespace "bounds" (LINE_STRIP), "obstacles" (one CYLINDER each), "start" and "goal"
+/// namespace "bounds" (LINE_STRIP), "obstacles" (one CYLINDER each), "rectangles" (one CUBE
+/// each), "start" and "goal"
 /// (SPHEREs), "edges" (one LINE_LIST, two points per tree edge), "nodes" (POINTS) and "path"
 /// (LINE_STRIP). Empty point sets are left out (rviz rejects them).
 visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::string& frame_id,

@@ -295,8 +295,8 @@ class RoombaSimNode {
     int id = 0;
     for (const sim::Circle& c : w.circles) {
       auto m = makeMarker("furniture", id++, Marker::CYLINDER, kFurnitureColour);
-      m.pose.position.x = c.x;
-      m.pose.position.y = c.y;
+      m.pose.position.x = c.center.x;
+      m.pose.position.y = c.center.y;
       m.pose.position.z = 0.5 * kFurnitureHeight;
       m.scale.x = m.scale.y = 2 * c.radius;
       m.scale.z = kFurnitureHeight;

@@ -1,6 +1,7 @@
 // rrt_planner: the RRT planning library as a ROS service.
 //
-// Serves ~plan_path (roomba_rrt/PlanPath); after every plan publishes the tree, obstacles, start,
+// Serves ~plan_path (roomba_rrt/PlanPath), with the lab's scenarios and scenario "room" (the
+// simulator's ~world_file); after every plan publishes the tree, obstacles, start,
 // goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
 // (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
 // are served by several threads, so a long plan does not hold up other clients; beyond ~threads
@@ -92,9 +93,17 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
                                 std::to_string(planning::kDefaultMaxIterationsCap) + "]");
   }
   // The defaults must make a valid request on their own (the empty request plans with them).
-  const planning::Problem problem{d.start, d.goal, {}, d.bounds};
+  planning::Problem problem;
+  problem.start = d.start;
+  problem.goal = d.goal;
+  problem.bounds = d.bounds;
   const std::string error = planning::validate(problem, o, d.max_iterations_cap);
   if (!error.empty()) throw std::invalid_argument("parameter ~" + error);
+  // Scenario "room": the simulator's world file (its room, furniture and robot radius).
+  const std::string package = ros::package::getPath("roomba_rrt");
+  const std::string world_file = param<std::string>(
+      pnh, "world_file", package.empty() ? "" : package + "/config/roomba_world.yaml");
+  if (!world_file.empty()) d.room = planning::loadRoom(world_file);  // throws with the reason
   return d;
 }
 
@@ -132,9 +141,9 @@ class RrtPlannerNode {
     tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);
     path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
     service_ = pnh.advertiseService("plan_path", &RrtPlannerNode::planPath, this);
-    ROS_INFO_STREAM("rrt_planner: serving " << service_.getService() << " with "
-                                            << scenarios_.size() << " scenarios from "
-                                            << scenarios_file);
+    ROS_INFO_STREAM("rrt_planner: serving "
+                    << service_.getService() << " with " << scenarios_.size() << " scenarios from "
+                    << scenarios_file << (defaults_.room ? " and scenario room" : ""));
   }
 
   /// How many plans run at once (~threads, at least 2).

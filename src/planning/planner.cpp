@@ -30,21 +30,31 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRan
     return result;
   }
   StopCondition stop(options.max_planning_time, stop_requested);
+  // A robot of some size plans in the grown world: obstacles grown by the margin (the checker),
+  // walls moved in by it (the bounds the planners sample in). A point robot (the lab) plans in
+  // the problem as given, without a copy.
+  const double margin = robotMargin(problem);
+  Problem shrunk;
+  if (margin > 0) {
+    shrunk = problem;
+    shrunk.bounds = shrink(problem.bounds, margin);
+  }
+  const Problem& world = margin > 0 ? shrunk : problem;
   // The collaborators: collision checker, free-space sampler, nearest-neighbour structure.
-  const CollisionChecker checker(problem.obstacles, options.collision);
-  const FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
+  const CollisionChecker checker = collisionChecker(problem, options.collision);
+  const FreeSpaceSampler sampler(world.bounds, checker, options.max_rejection_tries);
   const auto nearest = makeNearestNeighbors(options.nearest);
   const PlannerParts parts{random, sampler, *nearest, checker, &stop};
   const ProgressCallback progress{on_progress, progress_every};
   switch (options.algorithm) {
     case Algorithm::kRrt:
-      result = solveRrt(problem, options, parts, progress);
+      result = solveRrt(world, options, parts, progress);
       break;
     case Algorithm::kRrtConnect:
-      result = solveRrtConnect(problem, options, parts, progress);
+      result = solveRrtConnect(world, options, parts, progress);
       break;
     case Algorithm::kRrtStar:
-      result = solveRrtStar(problem, options, parts, progress);
+      result = solveRrtStar(world, options, parts, progress);
       break;
   }
   if (result.success && options.smooth) {

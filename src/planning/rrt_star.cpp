@@ -79,10 +79,11 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
   StopCondition never;
   StopCondition& stop = parts.stop != nullptr ? *parts.stop : never;
 
+  bool stopped = false;  // by the time budget or a stop request: keep the best path so far
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     if (stop()) {
-      result.message = stop.reason();
-      return result;
+      stopped = true;
+      break;
     }
     result.iterations = iteration;
     // 1. Sample exactly as RRT does (goal bias, then rejection sampling).
@@ -99,14 +100,16 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
       progress(tree, iteration);
       continue;
     }
-    // 5. Choose the parent: the neighbour through which q_new is reached shortest.
+    // 5. Choose the parent: the neighbour through which q_new is reached shortest. Its edge can
+    //    be far longer than one step, so it is checked whole in both modes (points mode checks
+    //    only the single step from the nearest node by its end).
     parts.nearest.withinRadius(q_new, rewireRadius(problem.bounds, options.step, tree.size()),
                                near);
     int parent = nearest;
     double new_cost = cost(nearest) + distance(q_nearest, q_new);
     for (int n : near) {
       const double c = cost(n) + distance(tree.nodes[n], q_new);
-      if (c < new_cost && parts.checker.isMotionFree(tree.nodes[n], q_new)) {
+      if (c < new_cost && parts.checker.isSegmentFree(tree.nodes[n], q_new)) {
         parent = n;
         new_cost = c;
       }
@@ -114,11 +117,11 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     const int added = tree.add(q_new, parent);
     parts.nearest.add(q_new, added);
     cost.add(parent, new_cost);
-    // 6. Rewire: neighbours that get shorter through q_new take it as parent.
+    // 6. Rewire: neighbours that get shorter through q_new take it as parent (edge checked whole).
     for (int n : near) {
       const double via_new = new_cost + distance(q_new, tree.nodes[n]);
       if (n != parent && via_new + kImprovement < cost(n) &&
-          parts.checker.isMotionFree(q_new, tree.nodes[n])) {
+          parts.checker.isSegmentFree(q_new, tree.nodes[n])) {
         cost.reparent(tree, n, added, via_new);
       }
     }
@@ -139,8 +142,10 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     result.success = true;
     result.path = pathFromRoot(tree, best);
     result.length = pathLength(result.path);
-    result.message =
-        "path found (best of " + std::to_string(options.max_iterations) + " iterations)";
+    result.message = "path found (best of " + std::to_string(result.iterations) + " iterations" +
+                     (stopped ? "; " + stop.reason() + ")" : ")");
+  } else if (stopped) {
+    result.message = stop.reason();
   } else if (result.message.empty()) {
     result.message = "no path within " + std::to_string(options.max_iterations) + " iterations";
   }

@@ -1,8 +1,11 @@
 #include "roomba_rrt/planning/scenarios.h"
 
+#include <initializer_list>
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
+
+#include "roomba_rrt/sim/world.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -16,15 +19,19 @@ Point2 readPoint(const YAML::Node& node, const std::string& file, const std::str
   return {node[0].as<double>(), node[1].as<double>()};
 }
 
-Bounds readBounds(const YAML::Node& node, const std::string& file, const std::string& field) {
-  Bounds b;
-  for (const auto& [key, value] : {std::pair<const char*, double*>{"x_min", &b.x_min},
-                                   {"x_max", &b.x_max},
-                                   {"y_min", &b.y_min},
-                                   {"y_max", &b.y_max}}) {
+// Reads the required numbers `keys` of the map `node` (the field's name is node's).
+void readNumbers(const YAML::Node& node, const std::string& file, const std::string& field,
+                 std::initializer_list<std::pair<const char*, double*>> keys) {
+  for (const auto& [key, value] : keys) {
     if (!node[key]) fail(file, field + "." + key, "missing");
     *value = node[key].as<double>();
   }
+}
+
+Bounds readBounds(const YAML::Node& node, const std::string& file, const std::string& field) {
+  Bounds b;
+  readNumbers(node, file, field,
+              {{"x_min", &b.x_min}, {"x_max", &b.x_max}, {"y_min", &b.y_min}, {"y_max", &b.y_max}});
   return b;
 }
 
@@ -56,6 +63,19 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
         p.obstacles.push_back(
             {readPoint(o["center"], path, obstacle + ".center"), o["radius"].as<double>()});
       }
+      i = 0;
+      for (const auto& r : s["rectangles"]) {
+        const std::string rectangle = field + ".rectangles[" + std::to_string(i++) + "]";
+        Rectangle box;
+        readNumbers(r, path, rectangle,
+                    {{"min_x", &box.min_x},
+                     {"min_y", &box.min_y},
+                     {"max_x", &box.max_x},
+                     {"max_y", &box.max_y}});
+        p.rectangles.push_back(box);
+      }
+      if (s["robot_radius"]) p.robot_radius = s["robot_radius"].as<double>();
+      if (s["clearance"]) p.clearance = s["clearance"].as<double>();
       scenarios.emplace(name, std::move(p));
     }
   } catch (const YAML::Exception& e) {
@@ -65,5 +85,23 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
 }
 
 std::string defaultScenarioFile() { return RRT_SCENARIO_FILE; }
+
+Problem roomProblem(const sim::World& world) {
+  Problem p;
+  p.bounds = {0, world.width, 0, world.height};
+  p.obstacles = world.circles;
+  p.rectangles = world.rectangles;
+  p.robot_radius = world.robot_radius;
+  p.start = p.goal = {world.initial_pose.x, world.initial_pose.y};
+  return p;
+}
+
+Problem loadRoom(const std::string& world_file) {
+  try {
+    return roomProblem(sim::loadWorld(world_file));
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+}
 
 }  // namespace roomba_rrt::planning

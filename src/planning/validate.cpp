@@ -37,11 +37,71 @@ std::string checkPointFinite(const std::string& field, const Point2& p) {
 }
 
 std::string checkPlaceable(const std::string& field, const Point2& p, const Problem& problem) {
-  if (!contains(problem.bounds, p)) {
-    return field + ": (" + show(p.x) + ", " + show(p.y) + ") is outside the bounds";
+  const double margin = robotMargin(problem);
+  // " (grown by robot_radius + clearance 0.17)" when the robot has a size, "" for a point.
+  const auto grown = [&] {
+    return margin > 0 ? " (grown by robot_radius + clearance " + show(margin) + ")" : "";
+  };
+  if (!contains(shrink(problem.bounds, margin), p)) {
+    return field + ": (" + show(p.x) + ", " + show(p.y) + ") is outside the bounds" +
+           (margin > 0 ? " shrunk by robot_radius + clearance " + show(margin) : "");
   }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
-    if (contains(problem.obstacles[i], p)) return field + ": inside obstacle " + std::to_string(i);
+    if (geometry::withinMargin(problem.obstacles[i], p, margin)) {
+      return field + ": inside obstacle " + std::to_string(i) + grown();
+    }
+  }
+  for (std::size_t i = 0; i < problem.rectangles.size(); ++i) {
+    if (geometry::withinMargin(problem.rectangles[i], p, margin)) {
+      return field + ": inside rectangles[" + std::to_string(i) + "]" + grown();
+    }
+  }
+  return "";
+}
+
+// NaN, inverted or empty rectangles, named by field ("rectangles[2].max_x: ...").
+std::string checkRectangles(const std::vector<Rectangle>& rectangles) {
+  for (std::size_t i = 0; i < rectangles.size(); ++i) {
+    const Rectangle& r = rectangles[i];
+    if (withinCoordinateRange(r.min_x) && withinCoordinateRange(r.min_y) &&
+        withinCoordinateRange(r.max_x) && withinCoordinateRange(r.max_y) && r.min_x < r.max_x &&
+        r.min_y < r.max_y) {
+      continue;  // false for NaN
+    }
+    const std::string field = "rectangles[" + std::to_string(i) + "]";
+    for (const auto& [key, value] : {std::pair<const char*, double>{".min_x", r.min_x},
+                                     {".min_y", r.min_y},
+                                     {".max_x", r.max_x},
+                                     {".max_y", r.max_y}}) {
+      if (auto error = checkFinite(field + key, value); !error.empty()) return error;
+      const std::string name = field + key;
+      if (auto error = checkRange(name.c_str(), value, -kMaxCoordinate, kMaxCoordinate);
+          !error.empty()) {
+        return error;
+      }
+    }
+    if (!(r.min_x < r.max_x)) {
+      return field + ".max_x: must be > min_x (got " + show(r.max_x) + " <= " + show(r.min_x) +
+             ": an empty or inverted rectangle)";
+    }
+    return field + ".max_y: must be > min_y (got " + show(r.max_y) + " <= " + show(r.min_y) +
+           ": an empty or inverted rectangle)";
+  }
+  return "";
+}
+
+// The robot's size: finite, not negative, and small enough to fit in the bounds.
+std::string checkRobotSize(const Problem& problem) {
+  for (const auto& [field, value] :
+       {std::pair<const char*, double>{"robot_radius", problem.robot_radius},
+        {"clearance", problem.clearance}}) {
+    if (auto error = checkFinite(field, value); !error.empty()) return error;
+    if (auto error = checkRange(field, value, 0, kMaxLength); !error.empty()) return error;
+  }
+  const Bounds inner = shrink(problem.bounds, robotMargin(problem));
+  if (!(inner.x_min <= inner.x_max && inner.y_min <= inner.y_max)) {
+    return "robot_radius: a disc of robot_radius + clearance " + show(robotMargin(problem)) +
+           " does not fit in the bounds";
   }
   return "";
 }
@@ -64,9 +124,11 @@ std::string validateProblem(const Problem& problem) {
            show(kMinBoundsExtent) + " m (got " + show(b.x_max - b.x_min) + " x " +
            show(b.y_max - b.y_min) + ")";
   }
-  if (problem.obstacles.size() > static_cast<std::size_t>(kMaxObstacles)) {
-    return "obstacles: at most " + std::to_string(kMaxObstacles) + " (got " +
-           std::to_string(problem.obstacles.size()) + ")";
+  if (problem.obstacles.size() + problem.rectangles.size() >
+      static_cast<std::size_t>(kMaxObstacles)) {
+    return "obstacles: at most " + std::to_string(kMaxObstacles) +
+           " obstacles and rectangles together (got " + std::to_string(problem.obstacles.size()) +
+           " + " + std::to_string(problem.rectangles.size()) + ")";
   }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
     const Circle& c = problem.obstacles[i];
@@ -87,6 +149,8 @@ std::string validateProblem(const Problem& problem) {
     const std::string radius = field + ".radius";
     return checkRange(radius.c_str(), c.radius, 0, kMaxLength);
   }
+  if (auto error = checkRectangles(problem.rectangles); !error.empty()) return error;
+  if (auto error = checkRobotSize(problem); !error.empty()) return error;
   if (auto error = checkPointFinite("start", problem.start); !error.empty()) return error;
   if (auto error = checkPointFinite("goal", problem.goal); !error.empty()) return error;
   if (auto error = checkPlaceable("start", problem.start, problem); !error.empty()) return error;

@@ -14,12 +14,6 @@ const double kHeadOnLateral = std::sin(10.0 * M_PI / 180.0);
 /// Enough for any corner: each pass removes the deepest overlaps, two usually suffice.
 constexpr int kMaxResolvePasses = 8;
 
-/// The point of a rectangle closest to (x, y) (the point itself when inside).
-void closestPoint(const Rectangle& box, double x, double y, double& qx, double& qy) {
-  qx = std::clamp(x, box.min_x, box.max_x);
-  qy = std::clamp(y, box.min_y, box.max_y);
-}
-
 /// One pass over every surface; returns true when something was pushed.
 bool pushOutOnce(const World& world, double& x, double& y) {
   const double r = world.robot_radius;
@@ -34,29 +28,28 @@ bool pushOutOnce(const World& world, double& x, double& y) {
     pushed = true;
   }
   for (const Circle& c : world.circles) {
-    const double dx = x - c.x, dy = y - c.y;
+    const double dx = x - c.center.x, dy = y - c.center.y;
     const double reach = c.radius + r;
-    const double d2 = dx * dx + dy * dy;
+    const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, c.center);
     if (d2 >= (reach - kPenetrationTolerance) * (reach - kPenetrationTolerance)) continue;
     const double d = std::sqrt(d2);
     if (d > 0) {
-      x = c.x + dx * (reach / d);
-      y = c.y + dy * (reach / d);
+      x = c.center.x + dx * (reach / d);
+      y = c.center.y + dy * (reach / d);
     } else {
-      x = c.x - reach;  // exactly at the centre: no normal, leave towards −x
+      x = c.center.x - reach;  // exactly at the centre: no normal, leave towards −x
     }
     pushed = true;
   }
   for (const Rectangle& box : world.rectangles) {
-    double qx, qy;
-    closestPoint(box, x, y, qx, qy);
-    const double dx = x - qx, dy = y - qy;
-    const double d2 = dx * dx + dy * dy;
+    const geometry::Point2 q = geometry::closestPoint(box, geometry::Point2{x, y});
+    const double dx = x - q.x, dy = y - q.y;
+    const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, q);
     if (d2 >= (r - kPenetrationTolerance) * (r - kPenetrationTolerance)) continue;
     if (d2 > 0) {  // centre outside: along the normal through the closest point
       const double d = std::sqrt(d2);
-      x = qx + dx * (r / d);
-      y = qy + dy * (r / d);
+      x = q.x + dx * (r / d);
+      y = q.y + dy * (r / d);
     } else {  // centre inside: out through the nearest side
       const double left = x - box.min_x, right = box.max_x - x;
       const double bottom = y - box.min_y, top = box.max_y - y;
@@ -81,15 +74,13 @@ bool pushOutOnce(const World& world, double& x, double& y) {
 bool penetrates(const World& world, double x, double y) {
   const double r = world.robot_radius - kPenetrationTolerance;
   if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
+  const geometry::Point2 p{x, y};
   for (const Circle& c : world.circles) {
-    const double dx = x - c.x, dy = y - c.y, reach = c.radius + r;
-    if (dx * dx + dy * dy < reach * reach) return true;
+    const double reach = c.radius + r;
+    if (geometry::squaredDistance(p, c.center) < reach * reach) return true;
   }
   for (const Rectangle& box : world.rectangles) {
-    double qx, qy;
-    closestPoint(box, x, y, qx, qy);
-    const double dx = x - qx, dy = y - qy;
-    if (dx * dx + dy * dy < r * r) return true;
+    if (geometry::squaredDistance(box, p) < r * r) return true;
   }
   return false;
 }
@@ -122,15 +113,13 @@ BumperState senseBumper(const World& world, const Pose2D& pose) {
   if (x >= world.width - r) contact(1, 0);
   if (y <= r) contact(0, -1);
   if (y >= world.height - r) contact(0, 1);
+  const geometry::Point2 p{x, y};
   for (const Circle& c : world.circles) {
-    const double dx = c.x - x, dy = c.y - y, reach = c.radius + r;
-    if (dx * dx + dy * dy <= reach * reach) contact(dx, dy);
+    if (geometry::withinMargin(c, p, r)) contact(c.center.x - x, c.center.y - y);
   }
   for (const Rectangle& box : world.rectangles) {
-    double qx, qy;
-    closestPoint(box, x, y, qx, qy);
-    const double dx = qx - x, dy = qy - y;
-    if (dx * dx + dy * dy <= r * r) contact(dx, dy);
+    const geometry::Point2 q = geometry::closestPoint(box, p);
+    if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
   }
   return bumper;
 }

@@ -11,10 +11,10 @@ constexpr int kBitsPerWord = 64;
 
 bool insideFurniture(const World& world, double x, double y) {
   for (const Circle& c : world.circles) {
-    if (std::hypot(x - c.x, y - c.y) <= c.radius) return true;
+    if (std::hypot(x - c.center.x, y - c.center.y) <= c.radius) return true;
   }
   for (const Rectangle& box : world.rectangles) {
-    if (x >= box.min_x && x <= box.max_x && y >= box.min_y && y <= box.max_y) return true;
+    if (geometry::contains(box, {x, y})) return true;
   }
   return false;
 }

@@ -103,8 +103,8 @@ World readWorld(const YAML::Node& root) {
   {
     Section furniture(top.child("furniture"), "furniture");
     readList(furniture, "circles", world.circles, [](Section& s, Circle& c) {
-      s.read("x", c.x);
-      s.read("y", c.y);
+      s.read("x", c.center.x);
+      s.read("y", c.center.y);
       s.read("radius", c.radius);
     });
     readList(furniture, "rectangles", world.rectangles, [](Section& s, Rectangle& b) {
@@ -162,7 +162,7 @@ void validate(const World& world) {
   for (std::size_t i = 0; i < world.circles.size(); ++i) {
     const Circle& c = world.circles[i];
     const std::string name = "furniture/circles[" + std::to_string(i) + "]";
-    requireFinite(name, {{"x", c.x}, {"y", c.y}});
+    requireFinite(name, {{"x", c.center.x}, {"y", c.center.y}});
     requirePositive(name + "/radius", c.radius);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {

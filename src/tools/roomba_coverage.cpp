@@ -240,7 +240,7 @@ void drawPng(const std::string& file, const sim::Simulator& simulator, const Run
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
   for (const sim::Circle& circle : world.circles) {
     cairo_new_sub_path(cr);
-    cairo_arc(cr, px(circle.x), py(circle.y), circle.radius * scale, 0, 2 * kPi);
+    cairo_arc(cr, px(circle.center.x), py(circle.center.y), circle.radius * scale, 0, 2 * kPi);
   }
   for (const sim::Rectangle& r : world.rectangles) {
     cairo_rectangle(cr, px(r.min_x), py(r.max_y), (r.max_x - r.min_x) * scale,

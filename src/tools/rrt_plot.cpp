@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -102,6 +103,15 @@ void drawWorld(cairo_t* cr, const View& v, const rp::Problem& problem,
     outlinedDisc(cr, v.x(c.center.x), v.y(c.center.y), c.radius * v.scale, kObstacleColor,
                  {0.3, 0.3, 0.35});
   }
+  for (const rp::Rectangle& r : problem.rectangles) {
+    cairo_rectangle(cr, v.x(r.min_x), v.y(r.max_y), (r.max_x - r.min_x) * v.scale,
+                    (r.max_y - r.min_y) * v.scale);
+    setColor(cr, kObstacleColor);
+    cairo_fill_preserve(cr);
+    setColor(cr, {0.3, 0.3, 0.35});
+    cairo_set_line_width(cr, 1.2);
+    cairo_stroke(cr);
+  }
   // Tree: every edge, then the nodes.
   const rp::Tree& tree = result.tree;
   setColor(cr, kTreeColor, 0.8);
@@ -188,6 +198,17 @@ std::string title(const std::string& scenario, const rp::PlannerOptions& o,
          " nodes";
 }
 
+// "X,Y" of a flag (required with --world).
+rp::Point2 pointFlag(const std::string& flag, const std::string& value) {
+  std::istringstream in(value);
+  rp::Point2 p;
+  char comma = 0;
+  if (!(in >> p.x >> comma >> p.y) || comma != ',' || !in.eof()) {
+    throw std::invalid_argument(flag + ": expected X,Y (got '" + value + "')");
+  }
+  return p;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -199,22 +220,35 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
       if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
         std::cerr << "usage: rrt_plot --scenario a [--goal-bias P] [--seed S] -o file.png\n"
+                  << "       rrt_plot --world config/roomba_world_furnished.yaml --start 3.2,2.4"
+                     " --goal 3.0,4.55 -o room.png\n"
                   << rp::commonFlagsHelp() << "  -o FILE                  output PNG (required)\n"
-                  << "  --width PX               image width (default 900)\n";
+                  << "  --width PX               image width (default 900)\n"
+                  << "  --world FILE             plan in the simulator's room (scenario room:\n"
+                     "                           its furniture and robot radius), from --start\n"
+                     "                           X,Y to --goal X,Y\n";
         return 0;
       }
     }
-    args = rp::parseToolArguments(argc, argv, {"-o", "--output", "--width"}, {});
+    args = rp::parseToolArguments(
+        argc, argv, {"-o", "--output", "--width", "--world", "--start", "--goal"}, {});
     output = args.tool.count("-o") ? args.tool["-o"] : args.tool["--output"];
     if (output.empty()) throw std::invalid_argument("-o: an output file is required");
     if (args.tool.count("--width")) width = rp::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
-    const auto scenarios = rp::loadScenarios(args.scenario_file);
-    const auto found = scenarios.find(args.scenario);
-    if (found == scenarios.end()) {
-      throw std::invalid_argument("--scenario: unknown scenario '" + args.scenario + "'");
+    if (args.tool.count("--world")) {
+      problem = rp::loadRoom(args.tool["--world"]);
+      problem.start = pointFlag("--start", args.tool["--start"]);
+      problem.goal = pointFlag("--goal", args.tool["--goal"]);
+      args.scenario = "room";
+    } else {
+      const auto scenarios = rp::loadScenarios(args.scenario_file);
+      const auto found = scenarios.find(args.scenario);
+      if (found == scenarios.end()) {
+        throw std::invalid_argument("--scenario: unknown scenario '" + args.scenario + "'");
+      }
+      problem = found->second;
     }
-    problem = found->second;
   } catch (const std::exception& e) {
     std::cerr << "rrt_plot: " << e.what() << " (see --help)\n";
     return 2;

@@ -20,7 +20,7 @@ inline int firstCollidingEdge(const std::vector<Point2>& path,
                               const std::vector<Circle>& obstacles) {
   for (std::size_t i = 1; i < path.size(); ++i) {
     for (const Circle& c : obstacles) {
-      if (segmentMeetsCircle(path[i - 1], path[i], c)) return static_cast<int>(i - 1);
+      if (segmentMeets({path[i - 1], path[i]}, c)) return static_cast<int>(i - 1);
     }
   }
   return -1;

@@ -97,6 +97,26 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
+TEST(Ranges, rectangles_and_the_robot_size_have_the_same_ranges_as_circles) {
+  const PlannerOptions o = with(0.2);
+  Problem p = labScenario("a");
+  p.rectangles = {Rectangle{2, 2, 3, 3}, Rectangle{-2e6, 7, 8, 8}};
+  EXPECT_EQ(validate(p, o).rfind("rectangles[1].min_x: must be in [-1e+06, 1e+06] m", 0), 0u)
+      << validate(p, o);
+  p.rectangles = {Rectangle{2, 2, 3, 3}};
+  p.robot_radius = 1e300;
+  EXPECT_EQ(validate(p, o).rfind("robot_radius: must be in [0, 1e+06] m", 0), 0u) << validate(p, o);
+  p.robot_radius = 0;
+  p.clearance = 2e6;
+  EXPECT_EQ(validate(p, o).rfind("clearance: must be in [0, 1e+06] m", 0), 0u) << validate(p, o);
+  p.clearance = 0;
+  p.obstacles.assign(kMaxObstacles / 2, Circle{{50, 50}, 1});
+  p.rectangles.assign(kMaxObstacles / 2 + 1, Rectangle{50, 50, 51, 51});
+  EXPECT_EQ(validate(p, o).rfind("obstacles: at most 10000 obstacles and rectangles together", 0),
+            0u)
+      << validate(p, o);
+}
+
 TEST(Ranges, the_limits_themselves_are_accepted_and_just_beyond_them_refused) {
   Problem p = geometry({-kMaxCoordinate, kMaxCoordinate, 0, kMinBoundsExtent}, {0, 0},
                        {kMaxCoordinate, kMinBoundsExtent});
@@ -215,6 +235,20 @@ TEST(PlanningTime, stops_every_algorithm_with_a_message_naming_max_planning_time
     EXPECT_EQ(r.message.rfind("max_planning_time", 0), 0u) << toString(algorithm) << r.message;
     EXPECT_LT(r.iterations, kDefaultMaxIterationsCap);
   }
+}
+
+// RRT* is an anytime planner (as OMPL's RRTstar): stopped by its budget after it has reached the
+// goal, it answers with the best path found so far, and says that it was stopped.
+TEST(PlanningTime, rrt_star_stopped_by_the_budget_returns_its_best_path_so_far) {
+  PlannerOptions o = with(0.2, kDefaultMaxIterationsCap, 0.1, Algorithm::kRrtStar);
+  o.collision = CollisionCheck::kSegments;
+  o.max_planning_time = 0.2;
+  const PlanResult r = plan(labScenario("a"), o);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_LT(r.iterations, kDefaultMaxIterationsCap);
+  EXPECT_NE(r.message.find("max_planning_time"), std::string::npos) << r.message;
+  EXPECT_GE(r.path.size(), 2u);
+  EXPECT_LT(r.length, 16.0);  // a path around the disc (straight line: 11.31 m)
 }
 
 TEST(PlanningTime, a_stop_request_ends_the_plan_at_the_next_check) {

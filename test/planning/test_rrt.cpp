@@ -23,7 +23,7 @@ TEST(Extend, a_far_sample_gives_a_node_one_step_towards_it) {
   const Point2 q = steer({1, 1}, {4, 5}, 0.2);  // direction (0.6, 0.8)
   EXPECT_DOUBLE_EQ(q.x, 1.12);
   EXPECT_DOUBLE_EQ(q.y, 1.16);
-  EXPECT_NEAR(distance({1, 1}, q), 0.2, 1e-15);
+  EXPECT_NEAR(distance(Point2{1, 1}, q), 0.2, 1e-15);
 }
 
 TEST(Rrt, goal_bias_one_in_an_empty_world_reaches_the_goal_in_ceil_dist_over_step_iterations) {

@@ -1,4 +1,5 @@
-// Is a point, or a straight motion, free of the circular obstacles?
+// Is a point, or a straight motion, free of the obstacles (circles and rectangles, grown by the
+// robot's radius and clearance)?
 #pragma once
 
 #include <algorithm>
@@ -8,14 +9,31 @@
 
 #include "roomba_rrt/planning/geometry.h"
 #include "roomba_rrt/planning/planner_options.h"
+#include "roomba_rrt/planning/problem.h"
 
 namespace roomba_rrt::planning {
 
 /// Every member is inline: the planner asks it once or more per iteration.
+///
+/// The robot is a disc of radius `margin` (robot_radius + clearance; 0 = a point, the lab), so the
+/// checker works in the grown world: a disc's radius grows by margin, and a rectangle becomes the
+/// rounded rectangle of every point within margin of it (tested by the exact distance). The walls
+/// are the planner's business: it samples in the bounds shrunk by margin (see shrink()).
 class CollisionChecker {
  public:
-  CollisionChecker(std::vector<Circle> obstacles, CollisionCheck mode)
-      : obstacles_(std::move(obstacles)), mode_(mode) {
+  CollisionChecker(std::vector<Circle> obstacles, CollisionCheck mode,
+                   std::vector<Rectangle> rectangles = {}, double margin = 0)
+      : obstacles_(std::move(obstacles)),
+        rectangles_(std::move(rectangles)),
+        margin_(margin),
+        mode_(mode) {
+    for (Circle& c : obstacles_) c.radius += margin;  // + 0 leaves the lab's discs bit-identical
+    // Each rectangle's box grown by margin, for the inline quick test of isSegmentFree().
+    grown_boxes_.reserve(rectangles_.size());
+    for (const Rectangle& r : rectangles_) {
+      grown_boxes_.push_back(
+          {r.min_x - margin, r.min_y - margin, r.max_x + margin, r.max_y + margin});
+    }
     // Each disc's part of the quick test's reach (see isSegmentFree()), computed once.
     reach_.reserve(obstacles_.size());
     for (const Circle& c : obstacles_) {
@@ -25,14 +43,17 @@ class CollisionChecker {
     }
   }
 
-  /// True when p is outside every (closed) disc.
+  /// True when p is outside every (closed, grown) disc and rectangle.
   bool isFree(const Point2& p) const {
     for (const Circle& c : obstacles_) {
       if (contains(c, p)) return false;
     }
+    for (const Rectangle& box : rectangles_) {
+      if (geometry::withinMargin(box, p, margin_)) return false;
+    }
     return true;
   }
-  /// True when the whole segment a-b is outside every disc (exact segment-circle test).
+  /// True when the whole segment a-b is outside every grown obstacle (exact segment tests).
   bool isSegmentFree(const Point2& a, const Point2& b) const {
     // A quick test first, without the exact test's division: every point of the segment is
     // within its length L of a, so a disc farther than r + L from a cannot meet it. L is taken
@@ -46,7 +67,17 @@ class CollisionChecker {
       const Circle& c = obstacles_[i];
       const double clear = reach_[i] + segment_reach;
       if (squaredDistance(a, c.center) > clear * clear) continue;  // too far to touch the segment
-      if (segmentMeetsCircle(a, b, c)) return false;
+      if (segmentMeets({a, b}, c)) return false;
+    }
+    for (std::size_t i = 0; i < rectangles_.size(); ++i) {
+      // Quick test: the segment's bounding box misses the rectangle's grown box (the exact test's
+      // own first test, inline), so only nearby rectangles cost a call.
+      const Rectangle& g = grown_boxes_[i];
+      if (std::max(a.x, b.x) < g.min_x || std::min(a.x, b.x) > g.max_x ||
+          std::max(a.y, b.y) < g.min_y || std::min(a.y, b.y) > g.max_y) {
+        continue;
+      }
+      if (segmentMeets({a, b}, rectangles_[i], margin_)) return false;
     }
     return true;
   }
@@ -56,12 +87,23 @@ class CollisionChecker {
     return mode_ == CollisionCheck::kPoints ? isFree(b) : isSegmentFree(a, b);
   }
   CollisionCheck mode() const { return mode_; }
+  /// The discs, already grown by margin(); the rectangles as given (grown by margin() in tests).
   const std::vector<Circle>& obstacles() const { return obstacles_; }
+  const std::vector<Rectangle>& rectangles() const { return rectangles_; }
+  double margin() const { return margin_; }
 
  private:
   std::vector<Circle> obstacles_;
+  std::vector<Rectangle> rectangles_;
+  std::vector<Rectangle> grown_boxes_;  ///< per rectangle: its bounding box grown by margin_
+  double margin_;
   std::vector<double> reach_;  ///< per disc: its radius plus its share of the quick test's slack
   CollisionCheck mode_;
 };
+
+/// The checker of `problem`'s obstacles grown by its robot_radius + clearance.
+inline CollisionChecker collisionChecker(const Problem& problem, CollisionCheck mode) {
+  return CollisionChecker(problem.obstacles, mode, problem.rectangles, robotMargin(problem));
+}
 
 }  // namespace roomba_rrt::planning

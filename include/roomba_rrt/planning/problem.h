@@ -1,4 +1,5 @@
-// A planning query: where from, where to, what is in the way, where to sample.
+// A planning query: where from, where to, what is in the way, where to sample, how big the robot
+// is.
 #pragma once
 
 #include <vector>
@@ -12,6 +13,14 @@ struct Problem {
   Point2 goal;
   std::vector<Circle> obstacles;
   Bounds bounds;
+  std::vector<Rectangle> rectangles;  ///< axis-aligned obstacles (furniture)
+  double robot_radius = 0;            ///< the robot's disc (m); 0 = a point (the lab)
+  double clearance = 0;               ///< extra margin kept from obstacles and walls (m)
 };
+
+/// How far the robot's centre must stay from obstacles and walls: robot_radius + clearance.
+inline double robotMargin(const Problem& problem) {
+  return problem.robot_radius + problem.clearance;
+}
 
 }  // namespace roomba_rrt::planning

@@ -1,10 +1,11 @@
-// The lab's scenarios, read from config/rrt_scenarios.yaml.
+// The lab's scenarios, read from config/rrt_scenarios.yaml, and the simulator's room.
 #pragma once
 
 #include <map>
 #include <string>
 
 #include "roomba_rrt/planning/problem.h"
+#include "roomba_rrt/sim/world.h"
 
 namespace roomba_rrt::planning {
 
@@ -14,5 +15,14 @@ std::map<std::string, Problem> loadScenarios(const std::string& path);
 
 /// config/rrt_scenarios.yaml of the source tree this library was built from.
 std::string defaultScenarioFile();
+
+/// The simulator's room as a planning problem (scenario `room`): bounds = the room's walls,
+/// obstacles = its furniture (circles and rectangles), robot_radius = the world's robot, start and
+/// goal = the robot's initial position (callers set their own).
+Problem roomProblem(const sim::World& world);
+
+/// roomProblem() of a world file (config/roomba_world.yaml format). Throws std::runtime_error
+/// naming the file and the bad parameter.
+Problem loadRoom(const std::string& world_file);
 
 }  // namespace roomba_rrt::planning

@@ -11,8 +11,11 @@ namespace roomba_rrt::planning {
 
 /// Returns "" when the query can be planned, otherwise one message naming the field, e.g.
 /// "start: inside obstacle 0", "step: must be > 0 (got -1)", "obstacles[2].radius: negative".
-/// Checks: NaN/Inf anywhere; empty or inverted bounds; start/goal outside the bounds or inside an
-/// obstacle; goal_bias outside [0, 1]; max_iterations < 1 or above `max_iterations_cap`;
+/// Checks: NaN/Inf anywhere; empty or inverted bounds, or a span beyond the double range; negative
+/// radius; a rectangle with a NaN corner, or empty or inverted ("rectangles[2].max_x: must be >
+/// min_x"); robot_radius or clearance NaN, negative, or too big for the bounds; start/goal outside
+/// the bounds shrunk by robot_radius + clearance or inside an obstacle grown by it; step <= 0;
+/// goal_bias outside [0, 1]; max_iterations < 1 or above `max_iterations_cap`; goal_tolerance < 0;
 /// max_rejection_tries < 1; smoothing_tries < 0; and the supported ranges of limits.h (coordinates,
 /// bounds extent, step, goal_tolerance, radius, obstacle count, max_planning_time).
 std::string validate(const Problem& problem, const PlannerOptions& options,

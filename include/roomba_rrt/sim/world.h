@@ -5,24 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "roomba_rrt/geometry/geometry.h"
 #include "roomba_rrt/sim/robot_state.h"
 
 namespace roomba_rrt::sim {
 
-/// A round piece of furniture (a table leg, a bin), centre and radius in metres.
-struct Circle {
-  double x = 0;
-  double y = 0;
-  double radius = 0;
-};
-
-/// An axis-aligned rectangular piece of furniture (a sofa, a cupboard), corners in metres.
-struct Rectangle {
-  double min_x = 0;
-  double min_y = 0;
-  double max_x = 0;
-  double max_y = 0;
-};
+/// Furniture: round pieces (a table leg, a bin) and axis-aligned rectangular ones (a sofa, a
+/// cupboard), in metres; the shapes of the shared geometry module, which the planner uses too.
+using geometry::Circle;
+using geometry::Rectangle;
 
 /// Everything the simulator needs to know about the room and the robot. Defaults are the lab's
 /// simulation: a 6.4 m × 4.8 m empty room, a 0.17 m Roomba at the centre facing +x, 1.0 m/s and
