@@ -145,8 +145,8 @@ TEST(Room, bad_rectangles_and_robot_sizes_are_rejected_naming_the_field) {
       {[](Problem& p) { p.rectangles[0].max_y = p.rectangles[0].min_y; },
        "rectangles[0].max_y: must be > min_y"},
       {[&](Problem& p) { p.robot_radius = nan; }, "robot_radius: must be finite"},
-      {[](Problem& p) { p.robot_radius = -0.1; }, "robot_radius: must be >= 0"},
-      {[](Problem& p) { p.clearance = -0.1; }, "clearance: must be >= 0"},
+      {[](Problem& p) { p.robot_radius = -0.1; }, "robot_radius: must be in [0, 1e+06] m"},
+      {[](Problem& p) { p.clearance = -0.1; }, "clearance: must be in [0, 1e+06] m"},
       {[](Problem& p) { p.robot_radius = 3; }, "robot_radius: a disc of"},
       {[](Problem& p) {
          p.goal = {0.5, 0.3};
