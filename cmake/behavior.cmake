@@ -13,6 +13,9 @@ add_library(roomba_behavior_core
   src/bt/selector_node.cpp
   src/bt/reactive_sequence.cpp
   src/bt/reactive_selector.cpp
+  src/bt/pipeline_sequence.cpp
+  src/bt/rate_controller.cpp
+  src/bt/recovery_node.cpp
   src/bt/inverter_node.cpp
   src/bt/repeat_node.cpp
   src/bt/retry_node.cpp
@@ -53,6 +56,8 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/control_nodes_test.cpp
     test/behavior/decorators_test.cpp
     test/behavior/tree_factory_test.cpp
+    test/behavior/blackboard_ports_test.cpp
+    test/behavior/nav_control_nodes_test.cpp
     test/behavior/roomba_params_test.cpp
     test/behavior/roomba_behavior_test.cpp
     test/behavior/roomba_bt_test.cpp
