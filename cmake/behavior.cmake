@@ -88,3 +88,24 @@ if(benchmark_FOUND)
   add_executable(behavior_bench EXCLUDE_FROM_ALL bench/behavior_bench.cpp)
   target_link_libraries(behavior_bench roomba_behavior_core benchmark::benchmark)
 endif()
+
+# Navigation (issue 10): the path follower, the planner interface, the navigation leaves and
+# trees. ROS-free; a library of its own so the lab's behaviours do not depend on the planner.
+find_package(Threads REQUIRED)
+add_library(roomba_nav_core
+  src/behavior/path_follower.cpp
+)
+target_include_directories(roomba_nav_core PUBLIC include)
+target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
+  Threads::Threads)
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(nav_core_test
+    test/behavior/path_follower_test.cpp
+  )
+  if(TARGET nav_core_test)
+    target_link_libraries(nav_core_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_core_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+endif()
