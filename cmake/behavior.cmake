@@ -94,6 +94,7 @@ endif()
 find_package(Threads REQUIRED)
 add_library(roomba_nav_core
   src/behavior/path_follower.cpp
+  src/behavior/path_planner.cpp
 )
 target_include_directories(roomba_nav_core PUBLIC include)
 target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
