@@ -95,6 +95,8 @@ find_package(Threads REQUIRED)
 add_library(roomba_nav_core
   src/behavior/path_follower.cpp
   src/behavior/path_planner.cpp
+  src/behavior/nav_leaves.cpp
+  src/behavior/nav_bt.cpp
 )
 target_include_directories(roomba_nav_core PUBLIC include)
 target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
@@ -103,6 +105,7 @@ target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning r
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(nav_core_test
     test/behavior/path_follower_test.cpp
+    test/behavior/nav_bt_test.cpp
   )
   if(TARGET nav_core_test)
     target_link_libraries(nav_core_test roomba_nav_core gtest_main)

@@ -85,16 +85,30 @@ PlanReply InProcessPlanner::planNow(const Point2& start, const Point2& goal,
   PlanReply reply;
   const double margin = world_.robot_radius + world_.clearance;
   for (std::size_t i = 0; i < world_.rectangles.size(); ++i) {
-    const auto inside = [&](const Point2& p) {
-      return insideGrown(world_.rectangles[i], margin, p);
-    };
-    if (inside(start) || inside(goal)) {
-      reply.message = std::string(inside(goal) ? "goal" : "start") + ": inside rectangle " +
-                      std::to_string(i) + " (grown by the robot's radius and clearance)";
+    if (insideGrown(world_.rectangles[i], margin, goal)) {
+      reply.message = "goal: inside rectangle " + std::to_string(i) +
+                      " (grown by the robot's radius and clearance)";
       return reply;
     }
   }
-  planning::Problem problem{start, goal, grown_, shrunk_};
+  // A start inside the grown obstacles (the robot hugging furniture a little closer than the
+  // clearance, or pushed there by a bump) is planned from the nearest free point around it.
+  Point2 from = start;
+  if (!isPointFree(start)) {
+    bool found = false;
+    for (int ring = 1; ring <= 25 && !found; ++ring) {
+      const double r = 0.01 * ring;
+      for (int k = 0; k < 32 && !found; ++k) {
+        const double a = 2.0 * M_PI * k / 32;
+        const Point2 p{start.x + r * std::cos(a), start.y + r * std::sin(a)};
+        if (isPointFree(p)) {
+          from = p;
+          found = true;
+        }
+      }
+    }
+  }
+  planning::Problem problem{from, goal, grown_, shrunk_};
   planning::PlannerOptions options = options_;
   options.seed = seed;
   planning::PlanResult result = planning::plan(problem, options);
@@ -103,6 +117,7 @@ PlanReply InProcessPlanner::planNow(const Point2& start, const Point2& goal,
   reply.message = result.message;
   if (result.success) {
     reply.path = std::move(result.path);
+    if (from.x != start.x || from.y != start.y) reply.path.insert(reply.path.begin(), start);
     if (reply.path.empty() || planning::distance(reply.path.back(), goal) > 0) {
       reply.path.push_back(goal);
     }
@@ -158,6 +173,14 @@ void InProcessPlanner::work() {
     result_ = std::move(reply);
     done_.store(generation, std::memory_order_release);
   }
+}
+
+bool InProcessPlanner::isPointFree(const Point2& p) const {
+  if (!planning::contains(shrunk_, p)) return false;
+  for (const Circle& c : grown_) {
+    if (planning::contains(c, p)) return false;
+  }
+  return true;
 }
 
 bool InProcessPlanner::isPathFree(const Path& path, std::size_t from) const {

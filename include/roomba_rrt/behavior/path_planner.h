@@ -22,19 +22,20 @@ namespace roomba_rrt::behavior {
 ///
 /// Rectangles: until the planning library plans around rectangles itself (issue 9), the
 /// in-process planner stands for each rectangle's grown outline with discs along its edges
-/// (at most `rectangle_cover_step` / 2 more conservative than exact) and refuses a start or goal
-/// inside a grown rectangle itself.
+/// (at most `rectangle_cover_step` / 2 more conservative than exact) and refuses a goal inside a
+/// grown rectangle itself. A start inside a grown obstacle (a robot hugging furniture) is planned
+/// from the nearest free point within 0.25 m, the path starting with the real start.
 struct NavWorld {
   planning::Bounds bounds;                ///< the room (walls)
   std::vector<planning::Circle> circles;  ///< round obstacles
   std::vector<sim::Rectangle> rectangles;
   double robot_radius = 0;  ///< m, 0: a point
-  double clearance = 0.03;  ///< m, kept on top of the radius
-  double rectangle_cover_step = 0.1;
+  double clearance = 0.05;  ///< m, kept on top of the radius
+  double rectangle_cover_step = 0.04;
 };
 
 /// The simulator's world as a planning world (room, furniture, robot radius).
-NavWorld navWorldFrom(const sim::World& world, double clearance = 0.03);
+NavWorld navWorldFrom(const sim::World& world, double clearance = 0.05);
 
 /// A finished plan.
 struct PlanReply {
@@ -86,6 +87,9 @@ class InProcessPlanner final : public PathPlanner {
   PlanReply planNow(const planning::Point2& start, const planning::Point2& goal,
                     std::uint32_t seed) const;
   const NavWorld& world() const { return world_; }
+  /// Whether the robot's centre may be at `p` (inside the shrunk bounds, outside every grown
+  /// obstacle's discs).
+  bool isPointFree(const planning::Point2& p) const;
 
  private:
   void work();
