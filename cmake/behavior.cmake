@@ -106,6 +106,7 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(nav_core_test
     test/behavior/path_follower_test.cpp
     test/behavior/nav_bt_test.cpp
+    test/behavior/nav_leaves_test.cpp
   )
   if(TARGET nav_core_test)
     target_link_libraries(nav_core_test roomba_nav_core gtest_main)
