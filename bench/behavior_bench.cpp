@@ -9,9 +9,11 @@
 #include <cstdlib>
 #include <vector>
 
+#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/behavior/roomba_tree.h"
+#include "roomba_rrt/sim/unicycle.h"
 #include "roomba_switch.h"
 
 namespace {
@@ -73,6 +75,47 @@ void BM_BtBuildFromXml(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BtBuildFromXml)->Unit(benchmark::kMicrosecond);
+
+/// A navigation-tree tick while following a 9 m straight path (config/roomba_nav_tree.xml, an
+/// empty 10 m x 10 m room). The planner runs on its worker thread (replanning every 2 s), so the
+/// tick only polls it: planning is excluded, as in issue 10's target. The robot's pose comes from
+/// the exact unicycle step (about 20 ns of the time); goals are restarted outside the timing.
+void BM_NavTreeFollowing(benchmark::State& state) {
+  using namespace roomba_rrt::behavior;
+  NavWorld world;
+  world.bounds = {0, 10, 0, 10};
+  world.robot_radius = 0.17;
+  NavLeafConfig config;
+  config.planners = [world] {
+    return std::make_unique<InProcessPlanner>(world, defaultNavPlannerOptions());
+  };
+  config.checker = std::make_shared<InProcessPlanner>(world, defaultNavPlannerOptions(),
+                                                      InProcessPlanner::Mode::kInline);
+  NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
+  const sim::Pose2D start{0.5, 5.0, 0.0};
+  const sim::Pose2D goal{9.5, 5.0, 0.0};
+  sim::Pose2D pose = start;
+  const auto restart = [&] {
+    pose = start;
+    nav.setGoal(goal);
+    while (nav.stateName() != "FollowPath") nav.tick({}, pose);  // wait for the first plan
+  };
+  restart();
+  long following = 0;
+  for (auto _ : state) {
+    const sim::Velocity cmd = nav.tick({}, pose);
+    pose = sim::integrateArc(pose, cmd, 1.0 / 60.0);
+    following += nav.stateName() == "FollowPath";
+    if (nav.outcome() != GoalOutcome::kActive || pose.x > 8.5) {
+      state.PauseTiming();
+      restart();
+      state.ResumeTiming();
+    }
+  }
+  state.counters["following_pct"] = 100.0 * following / static_cast<double>(state.iterations());
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_NavTreeFollowing);
 
 /// The switch must be the FSM's logic, or the comparison means nothing: 10 minutes of ticks.
 bool switchAgreesWithFsm() {
