@@ -99,16 +99,24 @@ add_library(roomba_nav_core
   src/behavior/path_planner.cpp
   src/behavior/nav_leaves.cpp
   src/behavior/nav_bt.cpp
+  src/behavior/nav_eval.cpp
 )
 target_include_directories(roomba_nav_core PUBLIC include)
 target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
   Threads::Threads)
+
+# Navigation without ROS: random goals in one process (simulator, tree, planner).
+add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
+target_link_libraries(roomba_nav_eval roomba_nav_core)
+target_compile_definitions(roomba_nav_eval PRIVATE
+  ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(nav_core_test
     test/behavior/path_follower_test.cpp
     test/behavior/nav_bt_test.cpp
     test/behavior/nav_leaves_test.cpp
+    test/behavior/nav_eval_test.cpp
   )
   if(TARGET nav_core_test)
     target_link_libraries(nav_core_test roomba_nav_core gtest_main)

@@ -91,9 +91,13 @@ class ComputePath final : public NavLeaf {
       }
       planner_->request({start->x, start->y}, {goal->x, goal->y});
       requested_ = true;
+      report();
       return Status::kRunning;
     }
-    if (!planner_->poll(reply_)) return Status::kRunning;
+    if (!planner_->poll(reply_)) {
+      report();
+      return Status::kRunning;
+    }
     if (!reply_.success) {
       error_.set("no path: " + reply_.message);
       return Status::kFailure;
@@ -221,17 +225,31 @@ class IsBumped final : public bt::LeafNode {
 
 class IsPathValid final : public bt::LeafNode {
  public:
-  static PortList providedPorts() { return {inputPort<Path>("path", "the path to check")}; }
+  static PortList providedPorts() {
+    return {inputPort<Path>("path", "the path to check"),
+            outputPort<std::string>("error", "why the path is not valid", "{error}")};
+  }
   IsPathValid(const NodeSpec& spec, std::shared_ptr<const PathPlanner> checker)
-      : LeafNode(spec.name), path_(spec.input<Path>("path")), checker_(std::move(checker)) {}
+      : LeafNode(spec.name),
+        path_(spec.input<Path>("path")),
+        error_(spec.output<std::string>("error")),
+        checker_(std::move(checker)) {}
 
  private:
   Status onTick() override {
     const Path* path = path_.get();
-    if (!path) return Status::kFailure;
-    return !checker_ || checker_->isPathFree(*path, 0) ? Status::kSuccess : Status::kFailure;
+    if (!path) {
+      error_.set("no path to check");
+      return Status::kFailure;
+    }
+    if (checker_ && !checker_->isPathFree(*path, 0)) {
+      error_.set("the path is blocked");
+      return Status::kFailure;
+    }
+    return Status::kSuccess;
   }
   InputPort<Path> path_;
+  OutputPort<std::string> error_;
   std::shared_ptr<const PathPlanner> checker_;
 };
 

@@ -185,6 +185,8 @@ bool InProcessPlanner::isPointFree(const Point2& p) const {
 
 bool InProcessPlanner::isPathFree(const Path& path, std::size_t from) const {
   const double margin = world_.robot_radius + world_.clearance;
+  // A path planned from a start inside the grown obstacles begins with that start (planNow).
+  if (from == 0 && path.size() > 1 && !isPointFree(path[0])) from = 1;
   for (std::size_t i = from; i + 1 < path.size(); ++i) {
     for (const Circle& c : grown_) {
       if (planning::segmentMeetsCircle(path[i], path[i + 1], c)) return false;

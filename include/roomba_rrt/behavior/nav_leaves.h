@@ -77,7 +77,8 @@ struct NavLeafConfig {
 ///   since the previous tick, else FAILURE (Nav2's GoalUpdated).
 /// - HasGoal goal="{goal}": SUCCESS while a goal is set.
 /// - IsBumped: SUCCESS while the bumper is pressed.
-/// - IsPathValid path="{path}": SUCCESS when the path is free in the checker's world.
+/// - IsPathValid path="{path}" error="{error}": SUCCESS when the path is free in the checker's
+///   world, else FAILURE with "the path is blocked".
 /// - GoalSucceeded goal="{goal}": the goal is reached: clears it, outcome SUCCEEDED, SUCCESS.
 /// - GoalAborted goal="{goal}" error="{error}": clears the goal, outcome ABORTED with the
 ///   error's text, FAILURE.

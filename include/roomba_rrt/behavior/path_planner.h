@@ -58,7 +58,8 @@ class PathPlanner {
   /// Abandons the pending plan, if any.
   virtual void cancel() = 0;
   /// Whether the part of `path` from point `from` on is free for the robot (a replan is due
-  /// when it is not); the default says yes.
+  /// when it is not); the default says yes. A first point that is not free (the robot's own
+  /// start, a little inside the clearance) does not count.
   virtual bool isPathFree(const Path& path, std::size_t from) const {
     (void)path;
     (void)from;
