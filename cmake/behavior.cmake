@@ -123,4 +123,11 @@ if(CATKIN_ENABLE_TESTING)
     target_compile_definitions(nav_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
+  # Its own executable: it replaces operator new to count allocations.
+  catkin_add_gtest(nav_allocation_test test/behavior/nav_allocation_test.cpp)
+  if(TARGET nav_allocation_test)
+    target_link_libraries(nav_allocation_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_allocation_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
 endif()
