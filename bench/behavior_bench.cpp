@@ -85,13 +85,7 @@ void BM_NavTreeFollowing(benchmark::State& state) {
   NavWorld world;
   world.bounds = {0, 10, 0, 10};
   world.robot_radius = 0.17;
-  NavLeafConfig config;
-  config.planners = [world] {
-    return std::make_unique<InProcessPlanner>(world, defaultNavPlannerOptions());
-  };
-  config.checker = std::make_shared<InProcessPlanner>(world, defaultNavPlannerOptions(),
-                                                      InProcessPlanner::Mode::kInline);
-  NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
+  NavBt nav(inProcessNavConfig(world), 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
   const sim::Pose2D start{0.5, 5.0, 0.0};
   const sim::Pose2D goal{9.5, 5.0, 0.0};
   sim::Pose2D pose = start;

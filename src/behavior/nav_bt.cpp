@@ -41,6 +41,17 @@ planning::PlannerOptions defaultNavPlannerOptions() {
   return options;
 }
 
+NavLeafConfig inProcessNavConfig(const NavWorld& world, const planning::PlannerOptions& options,
+                                 InProcessPlanner::Mode mode) {
+  NavLeafConfig config;
+  config.planners = [world, options, mode] {
+    return std::make_unique<InProcessPlanner>(world, options, mode);
+  };
+  config.checker =
+      std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
+  return config;
+}
+
 NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& tree_file)
     : NavBt(config, seed, tree_file, tree_file, true) {}
 

@@ -40,13 +40,7 @@ TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating
   world.bounds = {0, 10, 0, 10};
   world.circles = {{{5, 5.6}, 0.3}};
   world.robot_radius = 0.17;
-  NavLeafConfig config;
-  config.planners = [world] {
-    return std::make_unique<InProcessPlanner>(world, defaultNavPlannerOptions());
-  };
-  config.checker = std::make_shared<InProcessPlanner>(world, defaultNavPlannerOptions(),
-                                                      InProcessPlanner::Mode::kInline);
-  NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
+  NavBt nav(inProcessNavConfig(world), 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
   sim::Pose2D pose{0.5, 5.0, 0.0};
   nav.setGoal({9.5, 5.0, 0.0});
   // Until the first plan arrives and the follower runs (allocations allowed: the first path).

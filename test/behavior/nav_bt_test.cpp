@@ -17,15 +17,8 @@ const std::string kNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
 const std::string kCleanNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_clean_nav_tree.xml";
 
 NavLeafConfig configFor(const sim::World& world) {
-  NavLeafConfig config;
-  const NavWorld nav = navWorldFrom(world);
-  const planning::PlannerOptions options = defaultNavPlannerOptions();
-  config.planners = [nav, options] {
-    return std::make_unique<InProcessPlanner>(nav, options, InProcessPlanner::Mode::kInline);
-  };
-  config.checker =
-      std::make_shared<InProcessPlanner>(nav, options, InProcessPlanner::Mode::kInline);
-  return config;
+  return inProcessNavConfig(navWorldFrom(world), defaultNavPlannerOptions(),
+                            InProcessPlanner::Mode::kInline);
 }
 
 /// The simulator and a navigation tree in one loop.

@@ -59,4 +59,10 @@ class NavBt {
 /// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.
 planning::PlannerOptions defaultNavPlannerOptions();
 
+/// Leaf configuration with the planning library in-process on `world`: one InProcessPlanner in
+/// `mode` per ComputePath, and an inline one as IsPathValid's checker.
+NavLeafConfig inProcessNavConfig(
+    const NavWorld& world, const planning::PlannerOptions& options = defaultNavPlannerOptions(),
+    InProcessPlanner::Mode mode = InProcessPlanner::Mode::kThread);
+
 }  // namespace roomba_rrt::behavior
