@@ -188,8 +188,17 @@ bool InProcessPlanner::isPathFree(const Path& path, std::size_t from) const {
   // A path planned from a start inside the grown obstacles begins with that start (planNow).
   if (from == 0 && path.size() > 1 && !isPointFree(path[0])) from = 1;
   for (std::size_t i = from; i + 1 < path.size(); ++i) {
+    const Point2& a = path[i];
+    const Point2& b = path[i + 1];
+    const double min_x = std::min(a.x, b.x), max_x = std::max(a.x, b.x);
+    const double min_y = std::min(a.y, b.y), max_y = std::max(a.y, b.y);
     for (const Circle& c : grown_) {
-      if (planning::segmentMeetsCircle(path[i], path[i + 1], c)) return false;
+      // A disc outside the segment's box grown by its radius cannot meet it (exact test after).
+      if (c.center.x + c.radius < min_x || c.center.x - c.radius > max_x ||
+          c.center.y + c.radius < min_y || c.center.y - c.radius > max_y) {
+        continue;
+      }
+      if (planning::segmentMeetsCircle(a, b, c)) return false;
     }
   }
   for (std::size_t i = from; i < path.size(); ++i) {
