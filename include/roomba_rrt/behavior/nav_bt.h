@@ -28,6 +28,9 @@ class NavBt {
   /// The tree in `xml`; `source` names it in error messages.
   NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& xml,
         const std::string& source);
+  // The leaves point into the context: neither copied nor moved.
+  NavBt(const NavBt&) = delete;
+  NavBt& operator=(const NavBt&) = delete;
 
   /// A new goal (std::invalid_argument naming the component when it is not finite).
   void setGoal(const sim::Pose2D& goal);

@@ -70,6 +70,11 @@ class PathPlanner {
 /// The planning library in-process: plan() on a worker thread (kThread), or, for deterministic
 /// simulations in one loop, inside request() with the result reported by the next poll()
 /// (kInline). Each request uses seed options.seed + (number of earlier requests).
+///
+/// kThread on the tick thread: poll() is one atomic load (and a swap of vectors when a result
+/// is ready, so the finished path's memory is freed by the worker, not the tick); request(), once
+/// per plan, takes the worker's mutex, which the worker holds only to pick up a job or publish a
+/// result, never while planning.
 class InProcessPlanner final : public PathPlanner {
  public:
   enum class Mode { kThread, kInline };
