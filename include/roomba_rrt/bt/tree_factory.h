@@ -100,8 +100,10 @@ enum class NodeKind {
 ///     </root>
 ///
 /// Built in: the control nodes Sequence, Selector (alias Fallback), ReactiveSequence,
-/// ReactiveSelector (alias ReactiveFallback) and the decorators Inverter, Repeat (`num_cycles`),
-/// Retry (`num_attempts`) and Timeout (`ticks`). Leaves are registered by the application.
+/// ReactiveSelector (alias ReactiveFallback), PipelineSequence, RecoveryNode
+/// (`number_of_retries`, two children) and the decorators Inverter, Repeat (`num_cycles`), Retry
+/// (`num_attempts`), Timeout (`ticks`) and RateController (`hz`). Leaves are registered by the
+/// application.
 ///
 /// Rejected with a TreeFileError naming the element and its line: malformed XML, an unknown
 /// element, a leaf with children, a composite without children, a decorator without exactly one
