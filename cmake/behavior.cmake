@@ -107,7 +107,7 @@ target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning r
 
 # Navigation without ROS: random goals in one process (simulator, tree, planner).
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
-target_link_libraries(roomba_nav_eval roomba_nav_core)
+target_link_libraries(roomba_nav_eval roomba_nav_core PkgConfig::CAIRO)
 target_compile_definitions(roomba_nav_eval PRIVATE
   ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 

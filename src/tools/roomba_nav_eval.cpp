@@ -6,12 +6,17 @@
 // the planning time. See README.md, "Navigation".
 #include <unistd.h>
 
+#include <cairo.h>
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
+#include "room_drawing.h"
 #include "roomba_rrt/behavior/nav_eval.h"
 #include "roomba_rrt/bt/tree_factory.h"
 
@@ -19,7 +24,7 @@ namespace {
 
 const char* const kUsage =
     "usage: roomba_nav_eval [--goals 20] [--seed 1] [--world FILE] [--tree FILE] [--json]\n"
-    "                       [--csv FILE] [--timeout 120]\n"
+    "                       [--csv FILE] [--png FILE] [--timeout 120]\n"
     "  --goals    random reachable goals, one after another (default 20)\n"
     "  --seed     seed of the goals and the planner (default 1)\n"
     "  --world    world YAML (default config/roomba_world_furnished.yaml)\n"
@@ -28,7 +33,54 @@ const char* const kUsage =
     "             mean_length_ratio, planning_ms_p50\n"
     "  --csv      per goal: goal,start_x,start_y,goal_x,goal_y,goal_theta,reached,bumps,time_s,\n"
     "             driven_m,shortest_m,message\n"
+    "  --png      picture: room, traces (green reached, red not), goals as arrows\n"
     "  --timeout  robot seconds per goal before it counts as not reached (default 120)\n";
+
+/// The room, every run's trace (green: reached, red: not) and each goal as an arrow.
+void drawPng(const std::string& file, const roomba_rrt::sim::World& world,
+             const roomba_rrt::behavior::NavEvalReport& report, const std::string& title) {
+  const roomba_rrt::tools::RoomCanvas c{world.height};
+  const int width = static_cast<int>(world.width * c.scale + 2 * c.margin);
+  const int height = static_cast<int>(world.height * c.scale + 2 * c.margin + c.header);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);  // floor
+  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
+  cairo_fill(cr);
+  roomba_rrt::tools::drawFurnitureAndWalls(cr, world, c);
+  cairo_set_line_width(cr, 1.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const auto& run : report.runs) {
+    if (run.reached) {
+      cairo_set_source_rgba(cr, 0.1, 0.55, 0.2, 0.6);
+    } else {
+      cairo_set_source_rgba(cr, 0.85, 0.1, 0.1, 0.9);
+    }
+    cairo_move_to(cr, c.px(run.start.x), c.py(run.start.y));
+    for (const auto& p : run.trace) cairo_line_to(cr, c.px(p.x), c.py(p.y));
+    cairo_stroke(cr);
+    // The goal: a short arrow along its heading.
+    const double gx = c.px(run.goal.x), gy = c.py(run.goal.y);
+    const double ex = gx + 12 * std::cos(run.goal.theta), ey = gy - 12 * std::sin(run.goal.theta);
+    cairo_set_source_rgb(cr, 0.1, 0.2, 0.7);
+    cairo_move_to(cr, gx, gy);
+    cairo_line_to(cr, ex, ey);
+    cairo_stroke(cr);
+    cairo_arc(cr, gx, gy, 2.5, 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 13);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_move_to(cr, c.margin, 24);
+  cairo_show_text(cr, title.c_str());
+  const cairo_status_t status = cairo_surface_write_to_png(surface, file.c_str());
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + file);
+}
 
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr << "roomba_nav_eval: " << problem << "\n" << kUsage;
@@ -52,7 +104,7 @@ int main(int argc, char** argv) {
   NavEvalOptions options;
   std::string world_file = ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
   std::string tree_file = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
-  std::string csv;
+  std::string csv, png;
   bool json = false;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -72,6 +124,8 @@ int main(int argc, char** argv) {
       tree_file = value();
     } else if (flag == "--csv") {
       csv = value();
+    } else if (flag == "--png") {
+      png = value();
     } else if (flag == "--json") {
       json = true;
     } else if (flag == "-h" || flag == "--help") {
@@ -103,6 +157,14 @@ int main(int argc, char** argv) {
             << r.driven_m << ',' << r.shortest_m << ",\"" << r.message << "\"\n";
       }
       if (!out) throw std::runtime_error("cannot write " + csv);
+    }
+    if (!png.empty()) {
+      char title[200];
+      std::snprintf(title, sizeof title,
+                    "%zu goals, seed %u: %.1f %% reached, %d bumper presses, length ratio %.3f",
+                    report.runs.size(), options.seed, report.reached_pct, report.bumps,
+                    report.mean_length_ratio);
+      drawPng(png, world, report, title);
     }
     if (json) {
       std::cout << toJson(report) << "\n";
