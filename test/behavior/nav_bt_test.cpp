@@ -154,6 +154,27 @@ TEST(NavBt, a_bump_backs_up_spins_and_replans) {
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
 }
 
+TEST(NavBt, a_robot_pushed_off_its_path_replans_from_where_it_is) {
+  Loop loop(kNavTree);
+  const sim::Pose2D goal{5.0, 2.4, 0.0};
+  loop.nav.setGoal(goal);
+  for (int i = 0; i < 120; ++i) loop.step();
+  ASSERT_EQ(loop.nav.stateName(), "FollowPath");
+  const Path first = *loop.nav.path();
+  loop.sim.setPose({4.0, 1.2, 0.0});  // carried 1.2 m off the straight path
+  loop.step();                        // FollowPath: strayed
+  EXPECT_NE(loop.nav.tree().blackboard().get<std::string>("error")->find("strayed"),
+            std::string::npos);
+  for (int i = 0; i < 60 && loop.nav.stateName() != "FollowPath"; ++i) loop.step();
+  ASSERT_EQ(loop.nav.stateName(), "FollowPath");       // replanned, no back-up (it was not bumped)
+  EXPECT_NEAR(loop.nav.path()->front().x, 4.0, 0.05);  // from where it was put
+  EXPECT_NEAR(loop.nav.path()->front().y, 1.2, 0.05);
+  EXPECT_NE(loop.nav.path()->front().y, first.front().y);
+  loop.run(60);
+  EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
+  EXPECT_LE(distanceTo(loop.sim.pose(), goal), 0.05 + 1e-6);
+}
+
 TEST(NavBt, the_cleaning_tree_cleans_until_a_goal_and_resumes_after_it) {
   Loop loop(kCleanNavTree);
   for (int i = 0; i < 30; ++i) loop.step();
