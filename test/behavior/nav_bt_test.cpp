@@ -175,6 +175,26 @@ TEST(NavBt, a_robot_pushed_off_its_path_replans_from_where_it_is) {
   EXPECT_LE(distanceTo(loop.sim.pose(), goal), 0.05 + 1e-6);
 }
 
+TEST(NavBt, a_blocked_path_is_noticed_within_half_a_second_and_replanned) {
+  Loop loop(kNavTree);
+  const sim::Pose2D goal{5.0, 2.4, 0.0};
+  loop.nav.setGoal(goal);
+  for (int i = 0; i < 60; ++i) loop.step();
+  // The path changes under the robot to one through the bin (as a moved obstacle would make it).
+  const sim::Pose2D here = loop.sim.pose();
+  loop.nav.tree().blackboard().set<Path>("path", {{here.x, here.y}, {4.9, 3.3}, {5.0, 2.4}});
+  bool noticed = false;
+  for (int i = 0; i < 31 && !noticed; ++i) {
+    loop.step();
+    const std::string* error = loop.nav.tree().blackboard().get<std::string>("error");
+    noticed = error && *error == "the path is blocked";
+  }
+  EXPECT_TRUE(noticed);
+  loop.run(60);
+  EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
+  EXPECT_EQ(loop.bumps, 0);
+}
+
 TEST(NavBt, the_cleaning_tree_cleans_until_a_goal_and_resumes_after_it) {
   Loop loop(kCleanNavTree);
   for (int i = 0; i < 30; ++i) loop.step();
