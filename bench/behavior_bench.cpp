@@ -9,9 +9,12 @@
 #include <cstdlib>
 #include <vector>
 
+#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/behavior/roomba_tree.h"
+#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/sim/world.h"
 #include "roomba_switch.h"
 
 namespace {
@@ -73,6 +76,75 @@ void BM_BtBuildFromXml(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BtBuildFromXml)->Unit(benchmark::kMicrosecond);
+
+/// The in-process planner with its planning left out of the timing: the benchmark ticks about a
+/// million times faster than 60 Hz, so a worker thread's plan would arrive far too late (the
+/// robot would have driven on for thousands of ticks); this plans inline with the clock paused.
+class UntimedPlanner final : public roomba_rrt::behavior::PathPlanner {
+ public:
+  /// Pauses `state` while planning when `*timed` is true (inside the timed loop).
+  UntimedPlanner(const roomba_rrt::behavior::NavWorld& world, benchmark::State& state,
+                 const bool& timed)
+      : inner_(world, roomba_rrt::behavior::defaultNavPlannerOptions(),
+               roomba_rrt::behavior::InProcessPlanner::Mode::kInline),
+        state_(state),
+        timed_(timed) {}
+  void request(const roomba_rrt::planning::Point2& start,
+               const roomba_rrt::planning::Point2& goal) override {
+    if (timed_) state_.PauseTiming();
+    inner_.request(start, goal);
+    if (timed_) state_.ResumeTiming();
+  }
+  bool poll(roomba_rrt::behavior::PlanReply& reply) override { return inner_.poll(reply); }
+  void cancel() override { inner_.cancel(); }
+
+ private:
+  roomba_rrt::behavior::InProcessPlanner inner_;
+  benchmark::State& state_;
+  const bool& timed_;
+};
+
+/// A navigation-tree tick while following a 4.7 m path across the furnished room
+/// (config/roomba_nav_tree.xml, replanning every 2 s; IsPathValid checks the path against all
+/// furniture twice a second). Planning is excluded (UntimedPlanner), as in issue 10's target.
+/// The robot's pose comes from the exact unicycle step (about 20 ns of the time); goals are
+/// restarted outside the timing.
+void BM_NavTreeFollowing(benchmark::State& state) {
+  using namespace roomba_rrt::behavior;
+  const NavWorld world =
+      navWorldFrom(sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
+  NavLeafConfig config = inProcessNavConfig(world);
+  bool timed = false;
+  config.planners = [&world, &state, &timed] {
+    return std::make_unique<UntimedPlanner>(world, state, timed);
+  };
+  NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
+  const sim::Pose2D start{0.5, 2.4, 0.0};
+  const sim::Pose2D goal{5.2, 2.4, 0.0};
+  sim::Pose2D pose = start;
+  const auto restart = [&] {
+    timed = false;
+    pose = start;
+    nav.setGoal(goal);
+    while (nav.stateName() != "FollowPath") nav.tick({}, pose);  // wait for the first plan
+    timed = true;
+  };
+  restart();
+  long following = 0;
+  for (auto _ : state) {
+    const sim::Velocity cmd = nav.tick({}, pose);
+    pose = sim::integrateArc(pose, cmd, 1.0 / 60.0);
+    following += nav.stateName() == "FollowPath";
+    if (nav.outcome() != GoalOutcome::kActive || pose.x > 4.6) {
+      state.PauseTiming();
+      restart();
+      state.ResumeTiming();
+    }
+  }
+  state.counters["following_pct"] = 100.0 * following / static_cast<double>(state.iterations());
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_NavTreeFollowing);
 
 /// The switch must be the FSM's logic, or the comparison means nothing: 10 minutes of ticks.
 bool switchAgreesWithFsm() {

@@ -13,6 +13,9 @@ add_library(roomba_behavior_core
   src/bt/selector_node.cpp
   src/bt/reactive_sequence.cpp
   src/bt/reactive_selector.cpp
+  src/bt/pipeline_sequence.cpp
+  src/bt/rate_controller.cpp
+  src/bt/recovery_node.cpp
   src/bt/inverter_node.cpp
   src/bt/repeat_node.cpp
   src/bt/retry_node.cpp
@@ -53,6 +56,8 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/control_nodes_test.cpp
     test/behavior/decorators_test.cpp
     test/behavior/tree_factory_test.cpp
+    test/behavior/blackboard_ports_test.cpp
+    test/behavior/nav_control_nodes_test.cpp
     test/behavior/roomba_params_test.cpp
     test/behavior/roomba_behavior_test.cpp
     test/behavior/roomba_bt_test.cpp
@@ -98,5 +103,48 @@ endif()
 find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(behavior_bench EXCLUDE_FROM_ALL bench/behavior_bench.cpp)
-  target_link_libraries(behavior_bench roomba_behavior_core benchmark::benchmark)
+  target_link_libraries(behavior_bench roomba_nav_core benchmark::benchmark)
+  target_compile_definitions(behavior_bench PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+endif()
+
+# Navigation (issue 10): the path follower, the planner interface, the navigation leaves and
+# trees. ROS-free; a library of its own so the lab's behaviours do not depend on the planner.
+find_package(Threads REQUIRED)
+add_library(roomba_nav_core
+  src/behavior/path_follower.cpp
+  src/behavior/path_planner.cpp
+  src/behavior/nav_leaves.cpp
+  src/behavior/nav_bt.cpp
+  src/behavior/nav_eval.cpp
+)
+target_include_directories(roomba_nav_core PUBLIC include)
+target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
+  Threads::Threads)
+
+# Navigation without ROS: random goals in one process (simulator, tree, planner).
+add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
+target_link_libraries(roomba_nav_eval roomba_nav_core PkgConfig::CAIRO)
+target_compile_definitions(roomba_nav_eval PRIVATE
+  ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(nav_core_test
+    test/behavior/path_follower_test.cpp
+    test/behavior/nav_bt_test.cpp
+    test/behavior/nav_leaves_test.cpp
+    test/behavior/nav_eval_test.cpp
+  )
+  if(TARGET nav_core_test)
+    target_link_libraries(nav_core_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_core_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+  # Its own executable: it replaces operator new to count allocations.
+  catkin_add_gtest(nav_allocation_test test/behavior/nav_allocation_test.cpp)
+  if(TARGET nav_allocation_test)
+    target_link_libraries(nav_allocation_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_allocation_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
 endif()

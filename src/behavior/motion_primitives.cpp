@@ -10,8 +10,8 @@ double Rotate::drawAngle(std::mt19937& rng) {
   return -kPi + 2.0 * kPi * u;
 }
 
-void Rotate::enter() {
-  angle_ = drawAngle(rng_);
+void TurnInPlace::start(double angle) {
+  angle_ = angle;
   const double magnitude = std::fabs(angle_);
   const double per_tick = speed_ * dt_;
   const long n = static_cast<long>(std::ceil(magnitude / per_tick));

@@ -8,6 +8,7 @@ namespace {
 bt::Tree buildTree(const RoombaParams& params, RoombaContext& context, const std::string& xml,
                    bool from_file) {
   bt::TreeFactory factory;
+  factory.setTickRate(params.rate);  // RateController hz= in a tree file counts these ticks
   registerRoombaLeaves(factory, params, context);
   return from_file ? factory.buildFromFile(xml) : factory.buildFromText(xml, "kLabTreeXml");
 }

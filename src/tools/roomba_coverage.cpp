@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "progress_bar.h"
+#include "room_drawing.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/sim/simulator.h"
@@ -236,21 +237,7 @@ void drawPng(const std::string& file, const sim::Simulator& simulator, const Run
   }
   cairo_fill(cr);
 
-  // Furniture and walls.
-  cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
-  for (const sim::Circle& circle : world.circles) {
-    cairo_new_sub_path(cr);
-    cairo_arc(cr, px(circle.center.x), py(circle.center.y), circle.radius * scale, 0, 2 * kPi);
-  }
-  for (const sim::Rectangle& r : world.rectangles) {
-    cairo_rectangle(cr, px(r.min_x), py(r.max_y), (r.max_x - r.min_x) * scale,
-                    (r.max_y - r.min_y) * scale);
-  }
-  cairo_fill(cr);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_set_line_width(cr, 3);
-  cairo_rectangle(cr, px(0), py(world.height), world.width * scale, world.height * scale);
-  cairo_stroke(cr);
+  roomba_rrt::tools::drawFurnitureAndWalls(cr, world, {world.height, scale, margin, header});
 
   // The path, one polyline per stretch in the same state; Rotate (in place) as dots.
   cairo_set_line_width(cr, 1.2);

@@ -113,36 +113,75 @@ class GoBack : public StraightMotion<false> {
       : StraightMotion(p.backward_speed, p.ticks(p.go_back_time)) {}
 };
 
-/// Rotate: on enter, draws dθ ∈ [−π, π) (drawAngle); turns in place at angular_speed with the
-/// sign of dθ for n = ⌈|dθ| / (angular_speed·Δt)⌉ ticks, the last one slowed down so that the
-/// n ticks turn exactly dθ. The bumper is ignored; the timer ends it (→ MoveForward).
-class Rotate {
+/// Turning in place through a given angle dθ: at `speed` with the sign of dθ for
+/// n = ⌈|dθ| / (speed·Δt)⌉ ticks, the last one slowed down so that the n ticks turn exactly dθ.
+/// The bumper is ignored; the timer ends it. Rotate draws dθ, Spin is given it.
+class TurnInPlace {
  public:
-  Rotate(const RoombaParams& p, std::mt19937& rng)
-      : speed_(p.angular_speed), dt_(p.sampleTime()), rng_(rng), timer_(0) {}
+  TurnInPlace(double speed, double dt) : speed_(speed), dt_(dt), timer_(0) {}
 
-  /// The documented draw, identical in the FSM and the BT: one 32-bit output u of the
-  /// std::mt19937 (fully specified by the C++ standard), dθ = −π + 2π·u / 2³².
-  static double drawAngle(std::mt19937& rng);
-
-  void enter();
+  /// Starts a turn through `angle` (rad).
+  void start(double angle);
   MotionEvent check(const sim::BumperState&) const { return timerOnly(timer_); }
   sim::Velocity execute() {
     const long k = timer_.next();
     return {0.0, k + 1 < timer_.length() ? full_ : last_};
   }
-
-  /// The angle drawn by the last enter().
+  /// The angle of the last start().
   double angle() const { return angle_; }
 
  private:
   double speed_;
   double dt_;
-  std::mt19937& rng_;
   TickCounter timer_;
   double angle_ = 0;
   double full_ = 0;  ///< ω of every tick but the last
   double last_ = 0;  ///< ω of the last tick
+};
+
+/// Rotate: on enter, draws dθ ∈ [−π, π) (drawAngle) and turns in place through it at
+/// angular_speed (TurnInPlace). The bumper is ignored; the timer ends it (→ MoveForward).
+class Rotate {
+ public:
+  Rotate(const RoombaParams& p, std::mt19937& rng)
+      : turn_(p.angular_speed, p.sampleTime()), rng_(rng) {}
+
+  /// The documented draw, identical in the FSM and the BT: one 32-bit output u of the
+  /// std::mt19937 (fully specified by the C++ standard), dθ = −π + 2π·u / 2³².
+  static double drawAngle(std::mt19937& rng);
+
+  void enter() { turn_.start(drawAngle(rng_)); }
+  MotionEvent check(const sim::BumperState& bumper) const { return turn_.check(bumper); }
+  sim::Velocity execute() { return turn_.execute(); }
+
+  /// The angle drawn by the last enter().
+  double angle() const { return turn_.angle(); }
+
+ private:
+  TurnInPlace turn_;
+  std::mt19937& rng_;
+};
+
+/// Spin (navigation recovery, Nav2's name): turns in place through a fixed `angle` at `speed`
+/// (TurnInPlace) each time it is entered. The bumper is ignored; the timer ends it.
+class Spin {
+ public:
+  Spin(double angle, double speed, double dt) : turn_(speed, dt), angle_(angle) {}
+  void enter() { turn_.start(angle_); }
+  MotionEvent check(const sim::BumperState& bumper) const { return turn_.check(bumper); }
+  sim::Velocity execute() { return turn_.execute(); }
+
+ private:
+  TurnInPlace turn_;
+  double angle_;
+};
+
+/// BackUp (navigation recovery, Nav2's name): GoBack's straight motion, `distance` backwards at
+/// `speed` (> 0) for round(distance / speed · rate) ticks. The bumper is ignored.
+class BackUp : public StraightMotion<false> {
+ public:
+  BackUp(double distance, double speed, double rate)
+      : StraightMotion(-speed, std::lround(distance / speed * rate)) {}
 };
 
 }  // namespace roomba_rrt::behavior

@@ -19,6 +19,9 @@ class ControlNode : public TreeNode {
   void addChild(std::unique_ptr<TreeNode> child);
   std::size_t childCount() const { return children_.size(); }
   TreeNode& child(std::size_t i) { return *children_[i]; }
+  /// How many children the node needs: 0 for "one or more" (the default), else exactly that
+  /// many (the tree factory checks it).
+  virtual std::size_t requiredChildren() const { return 0; }
 
  protected:
   /// Halts every running child from index `first` on (halting a child that is not running does

@@ -1,7 +1,10 @@
 // Repeat: run its child a number of times, as long as it succeeds.
 #pragma once
 
+#include <limits>
+
 #include "roomba_rrt/bt/decorator_node.h"
+#include "roomba_rrt/bt/ports.h"
 
 namespace roomba_rrt::bt {
 
@@ -15,6 +18,11 @@ namespace roomba_rrt::bt {
 /// - RUNNING: Repeat returns RUNNING.
 class RepeatNode final : public DecoratorNode {
  public:
+  /// `num_cycles` (int, required): repetitions, or -1 for forever.
+  static PortList providedPorts() {
+    return {inputPort<int>("num_cycles", "repetitions, or -1 for forever")
+                .range(-1, std::numeric_limits<int>::max())};
+  }
   /// `num_cycles` ≥ 1, or −1 for forever (std::invalid_argument otherwise).
   RepeatNode(std::string name, int num_cycles);
 

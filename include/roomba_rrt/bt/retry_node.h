@@ -1,7 +1,10 @@
 // Retry: run its child again after a failure, up to a number of attempts.
 #pragma once
 
+#include <limits>
+
 #include "roomba_rrt/bt/decorator_node.h"
+#include "roomba_rrt/bt/ports.h"
 
 namespace roomba_rrt::bt {
 
@@ -15,6 +18,11 @@ namespace roomba_rrt::bt {
 /// - RUNNING: Retry returns RUNNING.
 class RetryNode final : public DecoratorNode {
  public:
+  /// `num_attempts` (int, required): attempts, or -1 for unlimited.
+  static PortList providedPorts() {
+    return {inputPort<int>("num_attempts", "attempts, or -1 for unlimited")
+                .range(-1, std::numeric_limits<int>::max())};
+  }
   /// `num_attempts` ≥ 1, or −1 for unlimited (std::invalid_argument otherwise).
   RetryNode(std::string name, int num_attempts);
 

@@ -1,7 +1,10 @@
 // Timeout: give its child a fixed number of ticks to finish.
 #pragma once
 
+#include <limits>
+
 #include "roomba_rrt/bt/decorator_node.h"
+#include "roomba_rrt/bt/ports.h"
 
 namespace roomba_rrt::bt {
 
@@ -15,6 +18,11 @@ namespace roomba_rrt::bt {
 ///   then the child is halted and Timeout returns FAILURE.
 class TimeoutNode final : public DecoratorNode {
  public:
+  /// `ticks` (long, required): ticks the child may run, >= 1.
+  static PortList providedPorts() {
+    return {inputPort<long>("ticks", "ticks the child may run")
+                .range(1, static_cast<double>(std::numeric_limits<long>::max()))};
+  }
   /// `ticks` ≥ 1 (std::invalid_argument otherwise).
   TimeoutNode(std::string name, long ticks);
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "roomba_rrt/bt/blackboard.h"
 #include "roomba_rrt/bt/tree_node.h"
 
 namespace roomba_rrt::bt {
@@ -16,16 +17,26 @@ namespace roomba_rrt::bt {
 /// an output on every tick must say what that tick means (RoombaBt commands zero velocity).
 class Tree {
  public:
-  explicit Tree(std::unique_ptr<TreeNode> root) : root_(std::move(root)) {
+  explicit Tree(std::unique_ptr<TreeNode> root, std::shared_ptr<Blackboard> blackboard = nullptr)
+      : blackboard_(blackboard ? std::move(blackboard) : std::make_shared<Blackboard>()),
+        root_(std::move(root)) {
     if (!root_) throw std::invalid_argument("bt::Tree: the root node is null");
   }
 
-  Status tick() { return root_->tick(); }
+  /// Advances the blackboard's tick clock, then ticks the root.
+  Status tick() {
+    blackboard_->advanceTick();
+    return root_->tick();
+  }
   /// Halts every running node (e.g. when the robot is stopped from outside).
   void halt() { root_->halt(); }
   TreeNode& root() { return *root_; }
+  /// The blackboard the tree's ports read and write.
+  Blackboard& blackboard() { return *blackboard_; }
 
  private:
+  // The nodes point into the blackboard: it is destroyed after them.
+  std::shared_ptr<Blackboard> blackboard_;
   std::unique_ptr<TreeNode> root_;
 };
 

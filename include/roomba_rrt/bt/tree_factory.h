@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "roomba_rrt/bt/control_node.h"
+#include "roomba_rrt/bt/decorator_node.h"
+#include "roomba_rrt/bt/ports.h"
 #include "roomba_rrt/bt/tree.h"
 
 namespace tinyxml2 {
@@ -28,13 +31,53 @@ class TreeFileError : public std::runtime_error {
 };
 
 /// One element of the tree file, as a builder sees it.
+///
+/// For a node type registered with ports, the factory has already checked every attribute
+/// before the builder runs (required ports present, literals of the right type and range, keys
+/// of the right type), so input(), output() and literal() only fail when the builder asks for a
+/// port under another type than it declared (a programming error: std::invalid_argument).
 struct NodeSpec {
-  std::string type;                               ///< the element name, e.g. "Sequence"
-  std::string name;                               ///< its `name` attribute, or `type`
-  std::map<std::string, std::string> attributes;  ///< every other attribute
+  std::string type;  ///< the element name, e.g. "Sequence"
+  std::string name;  ///< its `name` attribute, or `type`
+  /// Every other attribute, and the defaults of the ports the file leaves out.
+  std::map<std::string, std::string> attributes;
+  Blackboard* blackboard = nullptr;  ///< the tree's blackboard
+  const PortList* ports = nullptr;   ///< the node type's ports (empty for plain attributes)
+  double tick_rate = 60.0;           ///< the factory's tick rate (Hz)
+
   /// The value of attribute `key` as an integer; std::invalid_argument naming it when it is
   /// missing or not an integer.
   long integer(const std::string& key) const;
+
+  /// The literal value of port `port` (attribute or default).
+  template <class T>
+  T literal(const std::string& port) const {
+    T value{};
+    const std::string error = LiteralParser<T>::parse(text(port), value);
+    if (!error.empty()) throw std::invalid_argument("port '" + port + "' " + error);
+    return value;
+  }
+  /// Input port `port`: its literal, or its blackboard entry.
+  template <class T>
+  InputPort<T> input(const std::string& port) const {
+    std::string key;
+    if (parseBlackboardKey(text(port), key)) return InputPort<T>::key(board().declare<T>(key));
+    return InputPort<T>::literal(literal<T>(port));
+  }
+  /// Output port `port`: its blackboard entry.
+  template <class T>
+  OutputPort<T> output(const std::string& port) const {
+    std::string key;
+    if (!parseBlackboardKey(text(port), key)) {
+      throw std::invalid_argument("output port '" + port + "' needs a blackboard key like {" +
+                                  port + "}");
+    }
+    return OutputPort<T>(board().declare<T>(key));
+  }
+
+ private:
+  const std::string& text(const std::string& port) const;
+  Blackboard& board() const;
 };
 
 /// Which children an element takes.
@@ -57,44 +100,83 @@ enum class NodeKind {
 ///     </root>
 ///
 /// Built in: the control nodes Sequence, Selector (alias Fallback), ReactiveSequence,
-/// ReactiveSelector (alias ReactiveFallback) and the decorators Inverter, Repeat (`num_cycles`),
-/// Retry (`num_attempts`) and Timeout (`ticks`). Leaves are registered by the application.
+/// ReactiveSelector (alias ReactiveFallback), PipelineSequence, RecoveryNode
+/// (`number_of_retries`, two children) and the decorators Inverter, Repeat (`num_cycles`), Retry
+/// (`num_attempts`), Timeout (`ticks`) and RateController (`hz`). Leaves are registered by the
+/// application.
 ///
 /// Rejected with a TreeFileError naming the element and its line: malformed XML, an unknown
 /// element, a leaf with children, a composite without children, a decorator without exactly one
-/// child, an unknown or invalid attribute, a missing or ambiguous <BehaviorTree>.
+/// child, an unknown or invalid attribute, a missing or ambiguous <BehaviorTree>, two
+/// <BehaviorTree> elements with the same ID, nesting deeper than kMaxDepth, more than kMaxNodes
+/// nodes; and for ports: a missing required port, a literal of the wrong type or out of its
+/// range (e.g. num_cycles="4294967295"), a literal where an output needs a key, a key used
+/// with two types (by two ports, or by a port and the application), and a key that an input
+/// reads but that no output port of the tree writes and the application did not declare.
 class TreeFactory {
  public:
   using Builder = std::function<std::unique_ptr<TreeNode>(const NodeSpec&)>;
 
+  /// Deepest nesting of nodes below <BehaviorTree> (the root node is at depth 1).
+  static constexpr int kMaxDepth = 64;
+  /// Most nodes in one tree.
+  static constexpr int kMaxNodes = 10000;
+
   /// A factory that knows the built-in control nodes and decorators.
   TreeFactory();
 
-  /// Registers element `type`. `attributes` lists the attributes it accepts besides `name`.
-  /// Registering a type twice throws std::invalid_argument.
+  /// Registers element `type`. `attributes` lists the attributes it accepts besides `name`
+  /// (passed to the builder as text). Registering a type twice throws std::invalid_argument.
   void registerNode(const std::string& type, NodeKind kind, Builder builder,
                     std::vector<std::string> attributes = {});
+  /// Registers element `type` with the ports `ports` (see NodeSpec and ports.h).
+  void registerNodeWithPorts(const std::string& type, NodeKind kind, Builder builder,
+                             PortList ports);
+  /// Registers node class `Node` as element `type`: its kind from its base class (ControlNode,
+  /// DecoratorNode, else a leaf), its ports from `Node::providedPorts()`.
+  template <class Node>
+  void registerNodeType(const std::string& type, Builder builder) {
+    constexpr NodeKind kind = std::is_base_of_v<ControlNode, Node>     ? NodeKind::kControl
+                              : std::is_base_of_v<DecoratorNode, Node> ? NodeKind::kDecorator
+                                                                       : NodeKind::kLeaf;
+    registerNodeWithPorts(type, kind, std::move(builder), Node::providedPorts());
+  }
   /// Shorthand for a leaf without attributes.
   void registerLeaf(const std::string& type, Builder builder);
 
+  /// Tick rate of the trees built (Hz, default 60): RateController turns its `hz` into ticks
+  /// with it. Must be finite and > 0 (std::invalid_argument).
+  void setTickRate(double hz);
+  double tickRate() const { return tick_rate_; }
+
+  /// Builds a tree with a fresh blackboard.
   Tree buildFromFile(const std::string& path) const;
   /// `source` names the text in error messages.
   Tree buildFromText(const std::string& xml, const std::string& source = "<string>") const;
+  /// Builds a tree on `blackboard`, whose keys the application declared (and may have written)
+  /// beforehand; the tree keeps it.
+  Tree buildFromFile(const std::string& path, std::shared_ptr<Blackboard> blackboard) const;
+  Tree buildFromText(const std::string& xml, const std::string& source,
+                     std::shared_ptr<Blackboard> blackboard) const;
 
   /// Registered element names, sorted.
   std::vector<std::string> types() const;
+  /// The ports of element `type` (std::invalid_argument when it is unknown).
+  const PortList& ports(const std::string& type) const;
 
  private:
   struct Entry {
     NodeKind kind;
     Builder builder;
-    std::vector<std::string> attributes;
+    PortList ports;
   };
-  /// Builds `element` and, recursively, its children.
-  std::unique_ptr<TreeNode> buildNode(const tinyxml2::XMLElement& element,
-                                      const std::string& source) const;
+  struct BuildState;
+  /// Builds `element` at `depth` and, recursively, its children.
+  std::unique_ptr<TreeNode> buildNode(const tinyxml2::XMLElement& element, int depth,
+                                      BuildState& state) const;
 
   std::map<std::string, Entry> entries_;
+  double tick_rate_ = 60.0;
 };
 
 }  // namespace roomba_rrt::bt

@@ -1,0 +1,71 @@
+// Navigation as a behavior tree: goal in, (v, ω) out, from a tree file (config/roomba_nav_tree.xml,
+// config/roomba_clean_nav_tree.xml). ROS-free: the roomba_bt node and roomba_nav_eval are thin
+// adapters around it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "roomba_rrt/behavior/nav_leaves.h"
+#include "roomba_rrt/bt/tree.h"
+
+namespace roomba_rrt::behavior {
+
+/// A tree of navigation leaves (nav_leaves.h) and the lab's leaves (roomba_tree.h), on a
+/// blackboard with the keys the application writes: `goal` (Pose2D, unset: no goal) and `pose`
+/// (Pose2D, every tick). The tree writes `path` and `error`.
+///
+/// Goals: setGoal() preempts the current one (the tree is halted, so the new goal is planned at
+/// once, as Nav2's navigator does); cancelGoal() halts the tree and clears the goal. The outcome
+/// is kActive until a GoalSucceeded / GoalAborted leaf ends the goal; a tree without them ends
+/// it when the root finishes with a goal set (SUCCESS: succeeded, FAILURE: aborted with `error`).
+class NavBt {
+ public:
+  /// The tree in `tree_file` (bt::TreeFileError naming the element and line when invalid;
+  /// std::invalid_argument naming the field for bad parameters).
+  NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& tree_file);
+  /// The tree in `xml`; `source` names it in error messages.
+  NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& xml,
+        const std::string& source);
+  // The leaves point into the context: neither copied nor moved.
+  NavBt(const NavBt&) = delete;
+  NavBt& operator=(const NavBt&) = delete;
+
+  /// A new goal (std::invalid_argument naming the component when it is not finite).
+  void setGoal(const sim::Pose2D& goal);
+  void cancelGoal();
+
+  /// One tick: the bumper and pose of this step in, the command out (zero when no leaf runs).
+  sim::Velocity tick(const sim::BumperState& bumper, const sim::Pose2D& pose);
+
+  GoalOutcome outcome() const { return context_.outcome; }
+  /// Why the last goal was aborted.
+  const std::string& message() const { return context_.message; }
+  /// The current plan (nullptr before the first).
+  const Path* path() const { return board_->get<Path>("path"); }
+  /// The active leaf's name (for ~state), "Idle" before any leaf ran.
+  const std::string& stateName() const { return *context_.state_name; }
+  bt::Tree& tree() { return tree_; }
+
+ private:
+  NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& text,
+        const std::string& source, bool from_file);
+
+  NavContext context_;
+  std::shared_ptr<bt::Blackboard> board_;
+  bt::Blackboard::Entry<sim::Pose2D>* goal_;
+  bt::Blackboard::Entry<sim::Pose2D>* pose_;
+  bt::Tree tree_;
+};
+
+/// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.
+planning::PlannerOptions defaultNavPlannerOptions();
+
+/// Leaf configuration with the planning library in-process on `world`: one InProcessPlanner in
+/// `mode` per ComputePath, and an inline one as IsPathValid's checker.
+NavLeafConfig inProcessNavConfig(
+    const NavWorld& world, const planning::PlannerOptions& options = defaultNavPlannerOptions(),
+    InProcessPlanner::Mode mode = InProcessPlanner::Mode::kThread);
+
+}  // namespace roomba_rrt::behavior

@@ -1,0 +1,69 @@
+// roomba_nav_eval's core: the simulator, a navigation tree and the in-process planner in one
+// loop, deterministic by seed; random reachable goals one after another; what a user notices
+// (reached, bumps, time, detour, planning time). ROS-free.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "roomba_rrt/behavior/nav_bt.h"
+#include "roomba_rrt/sim/world.h"
+
+namespace roomba_rrt::behavior {
+
+/// Length of a shortest path from `start` to `goal` for the world's robot disc (every point of
+/// it at least robot_radius from walls and furniture), computed independently of the planner:
+/// Dijkstra on a `cell`-sized grid with 16 neighbours over cells whose centre is free, then the
+/// grid path pulled taut with exact segment tests (a segment is kept when its distance to every
+/// circle and rectangle is at least the radius). The result is a feasible path, so it is never
+/// shorter than the true shortest; it exceeds it by less than about 1 % plus a cell near tight
+/// passages (16 neighbours alone: ≤ 2.7 %, the taut pull removes most of it). +inf when the
+/// grid finds no way (start or goal not free, or a passage narrower than a cell).
+double shortestDiscPathLength(const sim::World& world, const sim::Pose2D& start,
+                              const sim::Pose2D& goal, double cell = 0.02);
+
+struct NavEvalOptions {
+  int goals = 20;
+  std::uint32_t seed = 1;
+  double timeout_s = 120;          ///< robot seconds per goal before it counts as not reached
+  double min_goal_distance = 0.5;  ///< m from the robot, so each goal is a real trip
+  double clearance = 0.05;         ///< planner clearance on top of the robot radius
+  bool threaded_planner = false;   ///< plan on a worker thread (not deterministic)
+};
+
+/// One goal's run.
+struct GoalRun {
+  sim::Pose2D start, goal;
+  bool reached = false;
+  int bumps = 0;                   ///< ticks with the bumper pressed
+  double time_s = 0;               ///< robot seconds from the goal to its end
+  double driven_m = 0;             ///< length driven
+  double shortest_m = 0;           ///< shortestDiscPathLength
+  std::string message;             ///< why it was aborted
+  std::vector<sim::Pose2D> trace;  ///< poses, every 6th tick
+};
+
+struct NavEvalReport {
+  std::vector<GoalRun> runs;
+  std::vector<double> planning_ms;  ///< every plan's time (in-process)
+  double reached_pct = 0;
+  int bumps = 0;
+  double mean_time_s = 0;        ///< over reached goals
+  double mean_length_ratio = 0;  ///< driven ÷ shortest, over reached goals
+  double planning_ms_p50 = 0;
+};
+
+/// Runs `options.goals` random reachable goals (a free pose for the robot's disc with a finite
+/// shortest path, at least min_goal_distance away) one after another from the world's initial
+/// pose. `progress(done, total)` is called after each goal.
+NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tree_file,
+                                 const NavEvalOptions& options,
+                                 const std::function<void(int, int)>& progress = {});
+
+/// {"goals": N, "reached_pct": …, "bumps": …, "mean_time_s": …, "mean_length_ratio": …,
+///  "planning_ms_p50": …}
+std::string toJson(const NavEvalReport& report);
+
+}  // namespace roomba_rrt::behavior

@@ -1,0 +1,89 @@
+// The navigation tree's leaves (Nav2's names where the meaning is the same): ComputePath,
+// FollowPath, BackUp, Spin, GoalUpdated, and the conditions and goal-bookkeeping leaves the tree
+// files use. ROS-free; NavBt (nav_bt.h) is the behaviour around them.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "roomba_rrt/behavior/path_follower.h"
+#include "roomba_rrt/behavior/path_planner.h"
+#include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/behavior/roomba_state.h"
+#include "roomba_rrt/bt/tree_factory.h"
+
+namespace roomba_rrt::bt {
+template <>
+struct TypeName<sim::Pose2D> {
+  static std::string get() { return "Pose2D"; }
+};
+template <>
+struct TypeName<behavior::Path> {
+  static std::string get() { return "Path"; }
+};
+/// A literal pose: "x;y;theta" (three finite numbers).
+template <>
+struct LiteralParser<sim::Pose2D> {
+  static constexpr bool kParsable = true;
+  static std::string parse(const std::string& text, sim::Pose2D& out);
+};
+}  // namespace roomba_rrt::bt
+
+namespace roomba_rrt::behavior {
+
+/// How a navigation goal ended (what a move_base client is told).
+enum class GoalOutcome : std::uint8_t { kNone, kActive, kSucceeded, kAborted };
+const char* toString(GoalOutcome outcome);
+
+/// The data the navigation leaves share besides the blackboard: the lab's context (bumper in,
+/// command out, the leaf's name), the previous tick's command (the follower's acceleration
+/// limits start from it), and the outcome of the current goal.
+struct NavContext : RoombaContext {
+  explicit NavContext(std::uint32_t seed) : RoombaContext(seed) {}
+  sim::Velocity previous_cmd;
+  GoalOutcome outcome = GoalOutcome::kNone;
+  std::string message;  ///< why the goal was aborted
+};
+
+/// Makes one planner per ComputePath leaf (each leaf has its own pending plan).
+using PlannerFactory = std::function<std::unique_ptr<PathPlanner>()>;
+
+/// What the navigation leaves need to be built.
+struct NavLeafConfig {
+  RoombaParams params;      ///< rate (ticks per second) and the Spin's default speed
+  FollowerParams follower;  ///< FollowPath's limits and tolerances
+  PlannerFactory planners;  ///< ComputePath's planners
+  std::shared_ptr<const PathPlanner> checker;  ///< IsPathValid's world (may be null: always valid)
+};
+
+/// Registers, on `factory`:
+///
+/// - ComputePath start="{pose}" goal="{goal}" path="{path}" error="{error}": on entering,
+///   requests a plan from start to goal (a missing start or goal: FAILURE); RUNNING while it is
+///   computed off the tick thread (a tick only polls); SUCCESS with the path written, or FAILURE
+///   with the planner's message in `error`. Halting it abandons the plan.
+/// - FollowPath path="{path}" goal="{goal}" pose="{pose}" error="{error}": the PathFollower;
+///   a new path (written by ComputePath while it drives) is taken up at once. RUNNING with the
+///   command; SUCCESS when arrived (within the tolerances at the goal heading); FAILURE when the
+///   bumper is pressed ("bumped"), the robot strayed ("strayed ... m from the path") or there is
+///   no path, with the reason in `error`.
+/// - BackUp backup_dist="0.15" backup_speed="0.1": GoBack's motion, `backup_dist` m backwards.
+/// - Spin spin_dist="1.57" spin_speed="1.0": a turn in place through `spin_dist` rad.
+///   (BackUp and Spin ignore the bumper, RUNNING then SUCCESS, like GoBack and Rotate.)
+/// - GoalUpdated goal="{goal}": the first tick of a run (it was not ticked on the previous tick)
+///   records the goal and returns FAILURE; later ticks return SUCCESS when the goal was written
+///   since the previous tick, else FAILURE (Nav2's GoalUpdated).
+/// - HasGoal goal="{goal}": SUCCESS while a goal is set.
+/// - IsBumped: SUCCESS while the bumper is pressed.
+/// - IsPathValid path="{path}" error="{error}": SUCCESS when the path is free in the checker's
+///   world, else FAILURE with "the path is blocked".
+/// - GoalSucceeded goal="{goal}": the goal is reached: clears it, outcome SUCCEEDED, SUCCESS.
+/// - GoalAborted goal="{goal}" error="{error}": clears the goal, outcome ABORTED with the
+///   error's text, FAILURE.
+///
+/// `context` and the planners must outlive the trees built.
+void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, NavContext& context);
+
+}  // namespace roomba_rrt::behavior

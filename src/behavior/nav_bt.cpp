@@ -1,0 +1,109 @@
+#include "roomba_rrt/behavior/nav_bt.h"
+
+#include <cmath>
+
+#include "roomba_rrt/behavior/roomba_tree.h"
+
+namespace roomba_rrt::behavior {
+namespace {
+
+const std::string kIdle = "Idle";
+
+std::shared_ptr<bt::Blackboard> makeBoard() {
+  auto board = std::make_shared<bt::Blackboard>();
+  board->declare<sim::Pose2D>("goal");
+  board->declare<sim::Pose2D>("pose");
+  return board;
+}
+
+bt::Tree buildTree(const NavLeafConfig& config, NavContext& context, const std::string& text,
+                   const std::string& source, bool from_file,
+                   std::shared_ptr<bt::Blackboard> board) {
+  bt::TreeFactory factory;
+  factory.setTickRate(config.params.rate);
+  registerRoombaLeaves(factory, config.params, context);
+  registerNavLeaves(factory, config, context);
+  return from_file ? factory.buildFromFile(text, std::move(board))
+                   : factory.buildFromText(text, source, std::move(board));
+}
+
+}  // namespace
+
+planning::PlannerOptions defaultNavPlannerOptions() {
+  planning::PlannerOptions options;
+  options.algorithm = planning::Algorithm::kRrtConnect;
+  options.collision = planning::CollisionCheck::kSegments;
+  options.step = 0.2;
+  options.max_iterations = 20000;
+  options.goal_tolerance = 1e-3;
+  options.smooth = true;
+  options.smoothing_tries = 300;
+  return options;
+}
+
+NavLeafConfig inProcessNavConfig(const NavWorld& world, const planning::PlannerOptions& options,
+                                 InProcessPlanner::Mode mode) {
+  NavLeafConfig config;
+  config.planners = [world, options, mode] {
+    return std::make_unique<InProcessPlanner>(world, options, mode);
+  };
+  config.checker =
+      std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
+  return config;
+}
+
+NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& tree_file)
+    : NavBt(config, seed, tree_file, tree_file, true) {}
+
+NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& xml,
+             const std::string& source)
+    : NavBt(config, seed, xml, source, false) {}
+
+NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& text,
+             const std::string& source, bool from_file)
+    : context_(seed),
+      board_(makeBoard()),
+      goal_(&board_->declare<sim::Pose2D>("goal")),
+      pose_(&board_->declare<sim::Pose2D>("pose")),
+      tree_(buildTree(config, context_, text, source, from_file, board_)) {
+  context_.state_name = &kIdle;
+}
+
+void NavBt::setGoal(const sim::Pose2D& goal) {
+  if (!std::isfinite(goal.x)) throw std::invalid_argument("goal.x must be finite");
+  if (!std::isfinite(goal.y)) throw std::invalid_argument("goal.y must be finite");
+  if (!std::isfinite(goal.theta)) throw std::invalid_argument("goal.theta must be finite");
+  tree_.halt();
+  goal_->set(goal);
+  context_.outcome = GoalOutcome::kActive;
+  context_.message.clear();
+}
+
+void NavBt::cancelGoal() {
+  tree_.halt();
+  goal_->clear();
+  if (context_.outcome == GoalOutcome::kActive) context_.outcome = GoalOutcome::kNone;
+}
+
+sim::Velocity NavBt::tick(const sim::BumperState& bumper, const sim::Pose2D& pose) {
+  context_.bumper = bumper;
+  pose_->set(pose);
+  context_.cmd = sim::Velocity{};
+  const bt::Status status = tree_.tick();
+  if (status != bt::Status::kRunning && context_.outcome == GoalOutcome::kActive && goal_->get()) {
+    goal_->clear();
+    if (status == bt::Status::kSuccess) {
+      context_.outcome = GoalOutcome::kSucceeded;
+    } else {
+      const bt::Blackboard::EntryBase* entry = board_->find("error");
+      const std::string* error =
+          entry && entry->type == typeid(std::string) ? board_->get<std::string>("error") : nullptr;
+      context_.outcome = GoalOutcome::kAborted;
+      context_.message = error ? *error : "the navigation tree failed";
+    }
+  }
+  context_.previous_cmd = context_.cmd;
+  return context_.cmd;
+}
+
+}  // namespace roomba_rrt::behavior

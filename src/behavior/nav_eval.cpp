@@ -1,0 +1,291 @@
+#include "roomba_rrt/behavior/nav_eval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <queue>
+#include <random>
+
+#include "roomba_rrt/sim/simulator.h"
+
+namespace roomba_rrt::behavior {
+namespace {
+
+using planning::Point2;
+
+double pointSegmentDistance(const Point2& p, const Point2& a, const Point2& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length_sq, 0.0, 1.0);
+  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+}
+
+double pointRectangleDistance(const Point2& p, const sim::Rectangle& r) {
+  const double dx = std::max({r.min_x - p.x, 0.0, p.x - r.max_x});
+  const double dy = std::max({r.min_y - p.y, 0.0, p.y - r.max_y});
+  return std::hypot(dx, dy);
+}
+
+/// Whether segment a-b meets the rectangle (Liang–Barsky clipping).
+bool segmentMeetsRectangle(const Point2& a, const Point2& b, const sim::Rectangle& r) {
+  double t0 = 0, t1 = 1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - r.min_x, r.max_x - a.x, a.y - r.min_y, r.max_y - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+    } else {
+      const double t = q[i] / p[i];
+      if (p[i] < 0) {
+        t0 = std::max(t0, t);
+      } else {
+        t1 = std::min(t1, t);
+      }
+      if (t0 > t1) return false;
+    }
+  }
+  return true;
+}
+
+double segmentRectangleDistance(const Point2& a, const Point2& b, const sim::Rectangle& r) {
+  if (segmentMeetsRectangle(a, b, r)) return 0;
+  double d = std::min(pointRectangleDistance(a, r), pointRectangleDistance(b, r));
+  const Point2 corners[4] = {
+      {r.min_x, r.min_y}, {r.max_x, r.min_y}, {r.max_x, r.max_y}, {r.min_x, r.max_y}};
+  for (const Point2& c : corners) d = std::min(d, pointSegmentDistance(c, a, b));
+  return d;
+}
+
+/// Whether the disc of radius `margin` around p is inside the room and clear of the furniture.
+bool discFree(const sim::World& w, const Point2& p, double margin) {
+  if (p.x < margin || p.x > w.width - margin || p.y < margin || p.y > w.height - margin) {
+    return false;
+  }
+  for (const sim::Circle& c : w.circles) {
+    if (std::hypot(p.x - c.center.x, p.y - c.center.y) < c.radius + margin) return false;
+  }
+  for (const sim::Rectangle& r : w.rectangles) {
+    if (pointRectangleDistance(p, r) < margin) return false;
+  }
+  return true;
+}
+
+/// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).
+bool sweepFree(const sim::World& w, const Point2& a, const Point2& b, double margin) {
+  if (!discFree(w, a, margin) || !discFree(w, b, margin)) return false;
+  for (const sim::Circle& c : w.circles) {
+    if (pointSegmentDistance(c.center, a, b) < c.radius + margin) return false;
+  }
+  for (const sim::Rectangle& r : w.rectangles) {
+    if (segmentRectangleDistance(a, b, r) < margin) return false;
+  }
+  return true;
+}
+
+/// Records every finished plan's time.
+class TimedPlanner final : public PathPlanner {
+ public:
+  TimedPlanner(std::unique_ptr<PathPlanner> inner, std::vector<double>& times)
+      : inner_(std::move(inner)), times_(times) {}
+  void request(const Point2& start, const Point2& goal) override { inner_->request(start, goal); }
+  bool poll(PlanReply& reply) override {
+    if (!inner_->poll(reply)) return false;
+    times_.push_back(reply.planning_ms);
+    return true;
+  }
+  void cancel() override { inner_->cancel(); }
+  bool isPathFree(const Path& path, std::size_t from) const override {
+    return inner_->isPathFree(path, from);
+  }
+
+ private:
+  std::unique_ptr<PathPlanner> inner_;
+  std::vector<double>& times_;
+};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace
+
+double shortestDiscPathLength(const sim::World& world, const sim::Pose2D& start,
+                              const sim::Pose2D& goal, double cell) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double r = world.robot_radius;
+  const Point2 s{start.x, start.y}, g{goal.x, goal.y};
+  if (!discFree(world, s, r - 1e-9) || !discFree(world, g, r - 1e-9)) return inf;
+  if (sweepFree(world, s, g, r)) return std::hypot(g.x - s.x, g.y - s.y);
+  const int nx = static_cast<int>(std::ceil(world.width / cell));
+  const int ny = static_cast<int>(std::ceil(world.height / cell));
+  const auto centre = [&](int i, int j) { return Point2{(i + 0.5) * cell, (j + 0.5) * cell}; };
+  std::vector<char> free(static_cast<std::size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) free[j * nx + i] = discFree(world, centre(i, j), r);
+  }
+  // The free cells nearest to start and goal that the disc reaches in a straight line.
+  const auto anchor = [&](const Point2& p) {
+    int best = -1;
+    double best_d = inf;
+    const int ci = static_cast<int>(p.x / cell), cj = static_cast<int>(p.y / cell);
+    for (int j = std::max(0, cj - 3); j <= std::min(ny - 1, cj + 3); ++j) {
+      for (int i = std::max(0, ci - 3); i <= std::min(nx - 1, ci + 3); ++i) {
+        const double d = std::hypot(centre(i, j).x - p.x, centre(i, j).y - p.y);
+        if (free[j * nx + i] && d < best_d && sweepFree(world, p, centre(i, j), r - 1e-9)) {
+          best = j * nx + i;
+          best_d = d;
+        }
+      }
+    }
+    return best;
+  };
+  const int from = anchor(s), to = anchor(g);
+  if (from < 0 || to < 0) return inf;
+  static const int kMoves[16][2] = {{1, 0},  {-1, 0},  {0, 1},   {0, -1}, {1, 1},  {1, -1},
+                                    {-1, 1}, {-1, -1}, {1, 2},   {2, 1},  {-1, 2}, {-2, 1},
+                                    {1, -2}, {2, -1},  {-1, -2}, {-2, -1}};
+  std::vector<double> dist(free.size(), inf);
+  std::vector<int> parent(free.size(), -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  dist[from] = 0;
+  open.push({0, from});
+  while (!open.empty()) {
+    const auto [d, c] = open.top();
+    open.pop();
+    if (d > dist[c]) continue;
+    if (c == to) break;
+    const int ci = c % nx, cj = c / nx;
+    for (const auto& m : kMoves) {
+      const int i = ci + m[0], j = cj + m[1];
+      if (i < 0 || j < 0 || i >= nx || j >= ny || !free[j * nx + i]) continue;
+      // Knight moves pass between two cells: both must be free.
+      if (std::abs(m[0]) + std::abs(m[1]) == 3) {
+        const int sx = m[0] > 0 ? 1 : -1, sy = m[1] > 0 ? 1 : -1;
+        const bool wide = std::abs(m[0]) == 2;
+        const int ai = wide ? ci + sx : ci, aj = wide ? cj : cj + sy;
+        if (!free[aj * nx + ai] || !free[(cj + sy) * nx + ci + sx]) continue;
+      }
+      const double nd = d + cell * std::hypot(m[0], m[1]);
+      const int n = j * nx + i;
+      if (nd < dist[n]) {
+        dist[n] = nd;
+        parent[n] = c;
+        open.push({nd, n});
+      }
+    }
+  }
+  if (dist[to] == inf) return inf;
+  std::vector<Point2> path{g};
+  for (int c = to; c >= 0; c = parent[c]) path.push_back(centre(c % nx, c / nx));
+  path.push_back(s);
+  std::reverse(path.begin(), path.end());
+  // Pull taut: from each kept point, jump to the farthest point visible to the disc.
+  double length = 0;
+  std::size_t i = 0;
+  while (i + 1 < path.size()) {
+    std::size_t j = path.size() - 1;
+    while (j > i + 1 && !sweepFree(world, path[i], path[j], r)) --j;
+    length += std::hypot(path[j].x - path[i].x, path[j].y - path[i].y);
+    i = j;
+  }
+  return length;
+}
+
+NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tree_file,
+                                 const NavEvalOptions& options,
+                                 const std::function<void(int, int)>& progress) {
+  NavEvalReport report;
+  const NavWorld nav_world = navWorldFrom(world, options.clearance);
+  planning::PlannerOptions planner_options = defaultNavPlannerOptions();
+  planner_options.seed = options.seed;
+  const auto mode =
+      options.threaded_planner ? InProcessPlanner::Mode::kThread : InProcessPlanner::Mode::kInline;
+  NavLeafConfig config;
+  std::vector<double>* times = &report.planning_ms;
+  config.planners = [nav_world, planner_options, mode, times] {
+    return std::make_unique<TimedPlanner>(
+        std::make_unique<InProcessPlanner>(nav_world, planner_options, mode), *times);
+  };
+  config.checker = std::make_shared<InProcessPlanner>(nav_world, planner_options,
+                                                      InProcessPlanner::Mode::kInline);
+  config.params.rate = 1.0 / world.step;
+  config.follower.rate = config.params.rate;
+  NavBt nav(config, options.seed, tree_file);
+  sim::Simulator simulator(world);
+  std::mt19937 rng(options.seed);
+  std::uniform_real_distribution<double> ux(0, world.width), uy(0, world.height), ut(-M_PI, M_PI);
+  const double margin = world.robot_radius + options.clearance;
+  const long max_ticks = std::lround(options.timeout_s / world.step);
+
+  for (int n = 0; n < options.goals; ++n) {
+    GoalRun run;
+    run.start = simulator.pose();
+    for (int tries = 0; tries < 100000; ++tries) {
+      const sim::Pose2D candidate{ux(rng), uy(rng), ut(rng)};
+      if (!discFree(world, {candidate.x, candidate.y}, margin + 0.02)) continue;
+      if (std::hypot(candidate.x - run.start.x, candidate.y - run.start.y) <
+          options.min_goal_distance) {
+        continue;
+      }
+      run.shortest_m = shortestDiscPathLength(world, run.start, candidate);
+      if (!std::isfinite(run.shortest_m)) continue;
+      run.goal = candidate;
+      break;
+    }
+    nav.setGoal(run.goal);
+    long tick = 0;
+    for (; tick < max_ticks && nav.outcome() == GoalOutcome::kActive; ++tick) {
+      const sim::BumperState bumper = simulator.senseContact();
+      run.bumps += bumper.pressed ? 1 : 0;
+      const sim::Pose2D before = simulator.pose();
+      simulator.move(nav.tick(bumper, before));
+      run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
+      if (tick % 6 == 0) run.trace.push_back(simulator.pose());
+    }
+    run.time_s = static_cast<double>(tick) * world.step;
+    run.reached = nav.outcome() == GoalOutcome::kSucceeded;
+    if (nav.outcome() == GoalOutcome::kActive) {
+      nav.cancelGoal();
+      run.message = "timeout";
+    } else if (!run.reached) {
+      run.message = nav.message();
+    }
+    report.runs.push_back(std::move(run));
+    if (progress) progress(n + 1, options.goals);
+  }
+
+  int reached = 0;
+  double time_sum = 0, ratio_sum = 0;
+  for (const GoalRun& run : report.runs) {
+    report.bumps += run.bumps;
+    if (!run.reached) continue;
+    ++reached;
+    time_sum += run.time_s;
+    ratio_sum += run.shortest_m > 0 ? run.driven_m / run.shortest_m : 1.0;
+  }
+  const int total = static_cast<int>(report.runs.size());
+  report.reached_pct = total ? 100.0 * reached / total : 0;
+  report.mean_time_s = reached ? time_sum / reached : 0;
+  report.mean_length_ratio = reached ? ratio_sum / reached : 0;
+  report.planning_ms_p50 = median(report.planning_ms);
+  return report;
+}
+
+std::string toJson(const NavEvalReport& r) {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "{\"goals\": %zu, \"reached_pct\": %.2f, \"bumps\": %d, \"mean_time_s\": %.3f, "
+                "\"mean_length_ratio\": %.4f, \"planning_ms_p50\": %.3f}",
+                r.runs.size(), r.reached_pct, r.bumps, r.mean_time_s, r.mean_length_ratio,
+                r.planning_ms_p50);
+  return text;
+}
+
+}  // namespace roomba_rrt::behavior
