@@ -21,6 +21,7 @@
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/planning/planner.h>
 
+#include "master_watch.h"
 #include "planner_ros.h"
 
 namespace roomba_rrt::planner_node {
@@ -189,6 +190,7 @@ class RrtPlannerNode {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rrt_planner");
   ros::NodeHandle pnh("~");
+  roomba_rrt::nodes::MasterWatch master_watch;
   try {
     roomba_rrt::planner_node::RrtPlannerNode node(pnh);
     // Several threads: each request is planned in its own callback, so a long plan leaves the
@@ -201,5 +203,5 @@ int main(int argc, char** argv) {
     ROS_FATAL_STREAM("rrt_planner: " << e.what());
     return 1;
   }
-  return 0;
+  return master_watch.exitCode();
 }
