@@ -1,9 +1,12 @@
 // libFuzzer harness: a PlanPath request built from the input → the rrt_planner node's own
 // conversion (resolveRequest: defaults, scenarios, validation) → plan → the response, exactly as
-// the node does it, without a master. Iterations are capped at kMaxIterations inside the harness
-// (libFuzzer's -timeout catches a plan that ignores them). Checks what a client relies on: a
-// refusal names a field, an answer holds finite points.
+// the node does it, without a master. An input that starts with '{' is the request in YAML, as
+// `rosservice call` takes it ({start: {x: 1, y: 1}, step: 1e308, ...}): reproducers stay readable
+// and the fuzzer mutates their numbers; any other input drives a FuzzedDataProvider. Iterations are
+// capped at kMaxIterations inside the harness (libFuzzer's -timeout catches a plan that ignores
+// them). Checks what a client relies on: a refusal names a field, an answer holds finite points.
 #include <fuzzer/FuzzedDataProvider.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,9 +93,52 @@ PlanPath::Request makeRequest(FuzzedDataProvider& in) {
   return r;
 }
 
+void readPoint(const YAML::Node& node, geometry_msgs::Point& point) {
+  if (node["x"]) point.x = node["x"].as<double>();
+  if (node["y"]) point.y = node["y"].as<double>();
+}
+
+/// The request in YAML (the fields of PlanPath.srv); throws YAML::Exception on anything else.
+PlanPath::Request parseRequest(const std::string& text) {
+  const YAML::Node root = YAML::Load(text);
+  PlanPath::Request r;
+  if (!root.IsMap()) return r;
+  for (const auto& entry : root) {
+    const std::string key = entry.first.as<std::string>();
+    const YAML::Node& v = entry.second;
+    if (key == "scenario") r.scenario = v.as<std::string>();
+    if (key == "start") readPoint(v, r.start);
+    if (key == "goal") readPoint(v, r.goal);
+    if (key == "obstacles") {
+      for (const auto& item : v) {
+        roomba_rrt::CircleObstacle o;
+        if (item["center"]) readPoint(item["center"], o.center);
+        if (item["radius"]) o.radius = item["radius"].as<double>();
+        r.obstacles.push_back(o);
+      }
+    }
+    const std::pair<const char*, double*> numbers[] = {{"x_min", &r.x_min},
+                                                       {"x_max", &r.x_max},
+                                                       {"y_min", &r.y_min},
+                                                       {"y_max", &r.y_max},
+                                                       {"step", &r.step},
+                                                       {"goal_bias", &r.goal_bias},
+                                                       {"goal_tolerance", &r.goal_tolerance}};
+    for (const auto& [name, field] : numbers) {
+      if (key == name) *field = v.as<double>();
+    }
+    if (key == "max_iterations") r.max_iterations = v.as<std::int32_t>();
+    if (key == "seed") r.seed = v.as<std::uint32_t>();
+    if (key == "algorithm") r.algorithm = v.as<std::string>();
+    if (key == "collision_check") r.collision_check = v.as<std::string>();
+    if (key == "smooth") r.smooth = v.as<bool>();
+  }
+  return r;
+}
+
 void require(bool ok, const char* what) {
   if (!ok) {
-    std::fprintf(stderr, "plan_path_fuzzer: %s\n", what);
+    std::fprintf(stderr, "plan_path_fuzzer: check failed: %s\n", what);
     std::abort();
   }
 }
@@ -102,8 +148,17 @@ void require(bool ok, const char* what) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::map<std::string, planning::Problem> scenarios =
       planning::loadScenarios(planning::defaultScenarioFile());
-  FuzzedDataProvider in(data, size);
-  PlanPath::Request request = makeRequest(in);
+  PlanPath::Request request;
+  if (size > 0 && data[0] == '{') {
+    try {
+      request = parseRequest(std::string(reinterpret_cast<const char*>(data), size));
+    } catch (const YAML::Exception&) {
+      return 0;
+    }
+  } else {
+    FuzzedDataProvider in(data, size);
+    request = makeRequest(in);
+  }
   // The harness's cap: a plan of at most kMaxIterations (the node's cap is 5,000,000).
   if (request.max_iterations > kMaxIterations) request.max_iterations = kMaxIterations;
   roomba_rrt::planner_node::NodeDefaults defaults;
