@@ -3,10 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+
+#include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -89,11 +90,7 @@ RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& 
 }
 
 RoombaParams loadRoombaParams(const std::string& yaml_path) {
-  std::ifstream file(yaml_path);
-  if (!file) throw std::invalid_argument(yaml_path + ": cannot read the file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseRoombaParams(text.str(), yaml_path);
+  return parseRoombaParams(util::readTextFile(yaml_path, 1 << 20, "parameter file"), yaml_path);
 }
 
 }  // namespace roomba_rrt::behavior

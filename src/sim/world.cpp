@@ -4,16 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::sim {
 
@@ -246,26 +244,8 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
 }
 
 World loadWorld(const std::string& yaml_path) {
-  // Refuse what is not a small regular file before reading it: a directory, a device or a
-  // 50 MB file must give a message, not an exception from the stream or minutes of parsing.
-  std::error_code error;
-  const auto status = std::filesystem::status(yaml_path, error);
-  if (error || !std::filesystem::exists(status)) {
-    throw std::invalid_argument(yaml_path + ": cannot read the world file (no such file)");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw std::invalid_argument(yaml_path + ": cannot read the world file (not a regular file)");
-  }
-  const auto bytes = std::filesystem::file_size(yaml_path, error);
-  if (!error && bytes > WorldLimits::kMaxFileBytes) {
-    throw std::invalid_argument(yaml_path + ": the world file has " + std::to_string(bytes) +
-                                " bytes; at most " + std::to_string(WorldLimits::kMaxFileBytes) +
-                                " are supported");
-  }
-  std::ifstream file(yaml_path, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (!file && !file.eof()) throw std::invalid_argument(yaml_path + ": cannot read the world file");
-  return parseWorld(text, yaml_path);
+  return parseWorld(util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file"),
+                    yaml_path);
 }
 
 }  // namespace roomba_rrt::sim

@@ -82,5 +82,15 @@ TEST(RoombaParams, an_unreadable_file_is_named) {
   EXPECT_THROW(loadRoombaParams("/nonexistent.yaml"), std::invalid_argument);
 }
 
+// Issue 11: a directory read as an empty file, so it silently gave the defaults.
+TEST(RoombaParams, a_directory_is_refused_not_read_as_empty) {
+  try {
+    loadRoombaParams("/tmp");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "/tmp: cannot read the parameter file (not a regular file)");
+  }
+}
+
 }  // namespace
 }  // namespace roomba_rrt::behavior
