@@ -8,6 +8,7 @@ if(ROOMBA_RRT_SANITIZE)
   endif()
   set(RR_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all
                     -fno-omit-frame-pointer)
-  add_compile_options(${RR_SANITIZERS} -fsanitize=fuzzer-no-link -g)
+  # -O1: the sanitizers' usual level (readable reports, half the compile time of -O2).
+  add_compile_options(${RR_SANITIZERS} -fsanitize=fuzzer-no-link -g -O1)
   add_link_options(${RR_SANITIZERS})
 endif()

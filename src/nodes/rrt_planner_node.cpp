@@ -5,12 +5,15 @@
 // (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
 // are served by several threads, so a long plan does not hold up other clients. Parameters and
 // examples: README.md, "The rrt_planner node".
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nav_msgs/Path.h>
@@ -187,6 +190,10 @@ class RrtPlannerNode {
 }  // namespace
 }  // namespace roomba_rrt::planner_node
 
+namespace {
+constexpr double kShutdownGrace = 0.5;  // s a running plan may delay the exit after Ctrl-C
+}  // namespace
+
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rrt_planner");
   ros::NodeHandle pnh("~");
@@ -199,6 +206,14 @@ int main(int argc, char** argv) {
     ros::AsyncSpinner spinner(threads);
     spinner.start();
     ros::waitForShutdown();
+    // A plan cannot be interrupted from outside: do not let one (up to minutes long) hold up
+    // Ctrl-C. The spinner's destructor waits for its callbacks; give them kShutdownGrace.
+    std::thread([code = master_watch.exitCode()] {
+      std::this_thread::sleep_for(std::chrono::duration<double>(kShutdownGrace));
+      ROS_WARN("rrt_planner: a plan was still running %.1f s after shutdown; exiting without it",
+               kShutdownGrace);
+      std::_Exit(code);
+    }).detach();
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM("rrt_planner: " << e.what());
     return 1;
