@@ -33,7 +33,7 @@ target_include_directories(roomba_behavior_core PUBLIC include)
 target_link_libraries(roomba_behavior_core PUBLIC yaml-cpp PRIVATE PkgConfig::TINYXML2)
 
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
-add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp)
+add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/master_watch.cpp)
 target_include_directories(roomba_behavior_node PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core ${catkin_LIBRARIES})
 add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}

@@ -62,7 +62,8 @@ endif()
 # --- rrt_planner node (owned by the node helper) ---
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
-add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp)
+add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
+  src/nodes/master_watch.cpp)
 target_include_directories(rrt_planner PRIVATE include ${catkin_INCLUDE_DIRS})
 target_link_libraries(rrt_planner rrt_planning ${catkin_LIBRARIES})
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})

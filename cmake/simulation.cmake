@@ -12,7 +12,7 @@ target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
-add_executable(roomba_sim src/nodes/roomba_sim_node.cpp)
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/master_watch.cpp)
 target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
@@ -54,6 +54,17 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/sim_invalid_world_test.cpp)
   # What a user sees in rviz: Xvfb, programs on it, screen grabs (imagemagick); also behavior.cmake.
   add_library(roomba_screen_capture STATIC EXCLUDE_FROM_ALL test/common/screen_capture.cpp)
+  # Issue 11: master restarted, then roomba_sim restarted, under scripts/run's supervision: the
+  # robot drives again within 5 s (a bash script; it starts its own roscore on a free port).
+  add_test(NAME master_restart_test
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/master_restart_test.bash)
+  set_tests_properties(master_restart_test PROPERTIES
+    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 180)
+  # Issue 11: node parameters out of range stop the node naming them; Ctrl-C stops within 1 s.
+  add_test(NAME node_parameters_test
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/node_parameters_test.bash)
+  set_tests_properties(node_parameters_test PROPERTIES
+    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 300)
   # rviz on a virtual X server (xvfb, imagemagick): the config shows robot, walls, coverage map.
   roomba_sim_rostest(sim_rviz_screenshot_test test/sim/sim_rviz.test
     test/sim/sim_rviz_screenshot_test.cpp)

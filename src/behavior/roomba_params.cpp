@@ -3,10 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+
+#include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -26,6 +27,7 @@ void require(bool ok, const char* field, const char* rule, double value) {
 }  // namespace
 
 void validate(const RoombaParams& p) {
+  using L = RoombaParamLimits;
   const std::pair<const char*, double> all[] = {{"move_forward_time", p.move_forward_time},
                                                 {"move_in_spiral_time", p.move_in_spiral_time},
                                                 {"go_back_time", p.go_back_time},
@@ -36,15 +38,20 @@ void validate(const RoombaParams& p) {
                                                 {"spiral_factor", p.spiral_factor},
                                                 {"rate", p.rate}};
   for (const auto& [field, value] : all) require(std::isfinite(value), field, "finite", value);
-  require(p.move_forward_time >= 0, "move_forward_time", ">= 0", p.move_forward_time);
-  require(p.move_in_spiral_time >= 0, "move_in_spiral_time", ">= 0", p.move_in_spiral_time);
-  require(p.go_back_time >= 0, "go_back_time", ">= 0", p.go_back_time);
-  require(p.forward_speed > 0, "forward_speed", "> 0", p.forward_speed);
-  require(p.backward_speed < 0, "backward_speed", "< 0 (it drives backwards)", p.backward_speed);
-  require(p.angular_speed > 0, "angular_speed", "> 0", p.angular_speed);
-  require(p.initial_radius_spiral > 0, "initial_radius_spiral", "> 0", p.initial_radius_spiral);
-  require(p.spiral_factor >= 0, "spiral_factor", ">= 0", p.spiral_factor);
-  require(p.rate > 0, "rate", "> 0", p.rate);
+  for (const auto& [field, value] : {all[0], all[1], all[2]}) {
+    require(value >= 0 && value <= L::kMaxTime, field, "in [0, 1e6] s", value);
+  }
+  require(p.forward_speed > 0 && p.forward_speed <= L::kMaxSpeed, "forward_speed", "in (0, 100]",
+          p.forward_speed);
+  require(p.backward_speed < 0 && p.backward_speed >= -L::kMaxSpeed, "backward_speed",
+          "in [-100, 0) (it drives backwards)", p.backward_speed);
+  require(p.angular_speed > 0 && p.angular_speed <= L::kMaxSpeed, "angular_speed", "in (0, 100]",
+          p.angular_speed);
+  require(p.initial_radius_spiral > 0 && p.initial_radius_spiral <= L::kMaxSpiral,
+          "initial_radius_spiral", "in (0, 1000]", p.initial_radius_spiral);
+  require(p.spiral_factor >= 0 && p.spiral_factor <= L::kMaxSpiral, "spiral_factor", "in [0, 1000]",
+          p.spiral_factor);
+  require(p.rate >= L::kMinRate && p.rate <= L::kMaxRate, "rate", "in [1, 1000] Hz", p.rate);
 }
 
 RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& source) {
@@ -83,11 +90,7 @@ RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& 
 }
 
 RoombaParams loadRoombaParams(const std::string& yaml_path) {
-  std::ifstream file(yaml_path);
-  if (!file) throw std::invalid_argument(yaml_path + ": cannot read the file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseRoombaParams(text.str(), yaml_path);
+  return parseRoombaParams(util::readTextFile(yaml_path, 1 << 20, "parameter file"), yaml_path);
 }
 
 }  // namespace roomba_rrt::behavior

@@ -1,5 +1,7 @@
 #include "behavior_node.h"
 
+#include "master_watch.h"
+
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
@@ -137,6 +139,7 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
   ros::init(argc, argv, node_name);
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
+  MasterWatch master_watch;
   try {
     const std::string config_file =
         pnh.param<std::string>("config_file", packageConfigFile("roomba_behavior.yaml"));
@@ -144,9 +147,15 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
     params.rate = pnh.param("rate", params.rate);
     const int seed = pnh.param("seed", 1);
     const double bumper_timeout = pnh.param("bumper_timeout", 0.5);
-    if (!(bumper_timeout > 0)) throw std::invalid_argument("~bumper_timeout must be > 0");
+    if (!(bumper_timeout > 0 && bumper_timeout <= 1e6)) {
+      throw std::invalid_argument("~bumper_timeout must be in (0, 1e6] s");
+    }
     if (seed < 0) throw std::invalid_argument("~seed must be >= 0, got " + std::to_string(seed));
-    behavior::validate(params);  // ~rate may have changed
+    try {
+      behavior::validate(params);  // ~rate may have changed
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("~") + e.what());
+    }
 
     BehaviorNode node(nh, pnh, make_behavior(pnh, params, static_cast<std::uint32_t>(seed)),
                       params.rate, bumper_timeout);
@@ -157,7 +166,7 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
     ROS_FATAL("%s: %s", node_name.c_str(), e.what());
     return 1;
   }
-  return 0;
+  return master_watch.exitCode();
 }
 
 }  // namespace roomba_rrt::nodes

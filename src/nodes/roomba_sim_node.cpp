@@ -19,6 +19,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -27,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "master_watch.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/world.h"
 
@@ -43,6 +45,7 @@ constexpr double kTrailSpacing = 0.02;       // m between trail points
 constexpr std::size_t kTrailLength = 5000;   // points kept (100 m of path)
 constexpr std::uint32_t kStateQueue = 1000;  // /odom and /bumper publisher queues
 constexpr double kMaxLag = 0.25;             // wall s behind schedule before the schedule resets
+constexpr std::chrono::duration<double> kMaxSleep(0.05);  // longest uninterrupted sleep, wall s
 constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
 constexpr double kWallThickness = 0.05;
 
@@ -158,7 +161,7 @@ class RoombaSimNode {
       next_step += std::chrono::duration_cast<Clock::duration>(wall_step);
       const auto wall_now = Clock::now();
       if (wall_now < next_step) {
-        std::this_thread::sleep_until(next_step);
+        waitUntil(next_step);
       } else if (wall_now - next_step > std::chrono::duration<double>(kMaxLag)) {
         ROS_WARN_STREAM_THROTTLE(5.0, "roomba_sim cannot keep real_time_factor "
                                           << factor << "; simulated time is running slower");
@@ -168,6 +171,16 @@ class RoombaSimNode {
   }
 
  private:
+  /// Sleeps until `deadline`, but in slices of at most kMaxSleep so that a slow real-time factor
+  /// (one step every 166 s at 1e-4) still answers ~reset and stops promptly on Ctrl-C.
+  void waitUntil(Clock::time_point deadline) {
+    const auto slice = std::chrono::duration_cast<Clock::duration>(kMaxSleep);
+    for (auto now = Clock::now(); now < deadline && ros::ok(); now = Clock::now()) {
+      std::this_thread::sleep_until(std::min(deadline, now + slice));
+      if (deadline - Clock::now() > slice / 2) ros::spinOnce();  // a long wait: serve callbacks
+    }
+  }
+
   /// The simulator owns time when /use_sim_time is true: steps × step since start.
   ros::Time currentTime() const {
     return use_sim_time_ ? ros::Time(steps_ * sim_.world().step) : ros::Time::now();
@@ -400,10 +413,11 @@ int main(int argc, char** argv) {
     ROS_WARN("roomba_sim: ~real_time_factor %g needs /use_sim_time true; running in real time",
              world.real_time_factor);
   }
+  roomba_rrt::nodes::MasterWatch master_watch;
   roomba_rrt::RoombaSimNode node(world, use_sim_time);
   ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %s", world.width, world.height,
            world.circles.size() + world.rectangles.size(),
            use_sim_time ? "publishing /clock" : "wall-clock time");
   node.run();
-  return 0;
+  return master_watch.exitCode();
 }

@@ -8,12 +8,15 @@
 // plans at once a request is answered "busy" at once, and every plan stops after
 // ~max_planning_time seconds (or less, if the request asks). Parameters and
 // examples: README.md, "The rrt_planner node".
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nav_msgs/Path.h>
@@ -24,6 +27,7 @@
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/planning/planner.h>
 
+#include "master_watch.h"
 #include "plan_slots.h"
 #include "planner_ros.h"
 
@@ -231,9 +235,14 @@ class RrtPlannerNode {
 }  // namespace
 }  // namespace roomba_rrt::planner_node
 
+namespace {
+constexpr double kShutdownGrace = 0.5;  // s a running plan may delay the exit after Ctrl-C
+}  // namespace
+
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rrt_planner");
   ros::NodeHandle pnh("~");
+  roomba_rrt::nodes::MasterWatch master_watch;
   try {
     roomba_rrt::planner_node::RrtPlannerNode node(pnh);
     // Several threads: each request is planned in its own callback, so a long plan leaves the
@@ -242,9 +251,17 @@ int main(int argc, char** argv) {
     ros::AsyncSpinner spinner(node.planThreads() + 2);
     spinner.start();
     ros::waitForShutdown();
+    // A plan cannot be interrupted from outside: do not let one (up to minutes long) hold up
+    // Ctrl-C. The spinner's destructor waits for its callbacks; give them kShutdownGrace.
+    std::thread([code = master_watch.exitCode()] {
+      std::this_thread::sleep_for(std::chrono::duration<double>(kShutdownGrace));
+      ROS_WARN("rrt_planner: a plan was still running %.1f s after shutdown; exiting without it",
+               kShutdownGrace);
+      std::_Exit(code);
+    }).detach();
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM("rrt_planner: " << e.what());
     return 1;
   }
-  return 0;
+  return master_watch.exitCode();
 }

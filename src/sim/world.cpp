@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <set>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::sim {
 
@@ -25,17 +27,24 @@ std::string show(double value) {
   return out.str();
 }
 
-void requirePositive(const std::string& name, double value) {
-  if (!(std::isfinite(value) && value > 0))
-    fail(name, "must be a finite number > 0, got " + show(value));
+/// value ∈ (0, max].
+void requirePositiveAtMost(const std::string& name, double value, double max) {
+  if (!(std::isfinite(value) && value > 0 && value <= max))
+    fail(name, "must be a finite number in (0, " + show(max) + "], got " + show(value));
+}
+
+/// value ∈ [min, max].
+void requireRange(const std::string& name, double value, double min, double max) {
+  if (!(value >= min && value <= max))
+    fail(name, "must be a number in [" + show(min) + ", " + show(max) + "], got " + show(value));
 }
 
 /// Every named value under `prefix` ("initial_pose" + "/x") must be finite.
 void requireFinite(const std::string& prefix,
                    std::initializer_list<std::pair<const char*, double>> values) {
   for (const auto& [key, value] : values) {
-    if (!std::isfinite(value))
-      fail(prefix + "/" + key, "must be a finite number, got " + show(value));
+    requireRange(prefix + "/" + key, value, -WorldLimits::kMaxCoordinate,
+                 WorldLimits::kMaxCoordinate);
   }
 }
 
@@ -82,6 +91,10 @@ void readList(Section& parent, const std::string& key, std::vector<Item>& items,
   const YAML::Node list = parent.child(key);
   if (!list || list.IsNull()) return;
   if (!list.IsSequence()) fail(parent.name(key), "must be a list");
+  if (list.size() > WorldLimits::kMaxFurniture) {
+    fail(parent.name(key), "has " + std::to_string(list.size()) + " entries; at most " +
+                               std::to_string(WorldLimits::kMaxFurniture) + " are supported");
+  }
   for (std::size_t i = 0; i < list.size(); ++i) {
     Section section(list[i], parent.name(key) + "[" + std::to_string(i) + "]");
     Item item;
@@ -140,15 +153,34 @@ World readWorld(const YAML::Node& root) {
 }  // namespace
 
 void validate(const World& world) {
-  requirePositive("room/width", world.width);
-  requirePositive("room/height", world.height);
-  requirePositive("robot/radius", world.robot_radius);
-  requirePositive("robot/max_linear_speed", world.max_linear_speed);
-  requirePositive("robot/max_angular_speed", world.max_angular_speed);
-  requirePositive("step", world.step);
-  requirePositive("coverage_cell_size", world.coverage_cell_size);
-  requirePositive("command_timeout", world.command_timeout);
-  requirePositive("real_time_factor", world.real_time_factor);
+  using L = WorldLimits;
+  requirePositiveAtMost("room/width", world.width, L::kMaxRoomSize);
+  requirePositiveAtMost("room/height", world.height, L::kMaxRoomSize);
+  requirePositiveAtMost("robot/radius", world.robot_radius, L::kMaxRobotRadius);
+  requirePositiveAtMost("robot/max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
+  requirePositiveAtMost("robot/max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
+  requireRange("step", world.step, L::kMinStep, L::kMaxStep);
+  requireRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
+  requirePositiveAtMost("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
+  requireRange("real_time_factor", world.real_time_factor, L::kMinRealTimeFactor,
+               L::kMaxRealTimeFactor);
+  const std::size_t furniture = world.circles.size() + world.rectangles.size();
+  if (furniture > L::kMaxFurniture) {
+    fail("furniture", "has " + std::to_string(furniture) + " pieces; at most " +
+                          std::to_string(L::kMaxFurniture) + " are supported");
+  }
+  // The coverage grid holds two bits per cell and tests every cell against every piece of
+  // furniture once at start: both must stay small.
+  const double cells = std::ceil(world.width / world.coverage_cell_size) *
+                       std::ceil(world.height / world.coverage_cell_size);
+  if (cells > L::kMaxCoverageCells || cells * (1.0 + furniture) > L::kMaxGridWork) {
+    fail("coverage_cell_size",
+         "(" + show(world.coverage_cell_size) + ") is too small for a " + show(world.width) +
+             " x " + show(world.height) + " m room with " + std::to_string(furniture) +
+             " pieces of furniture: " + show(cells) + " cells, at most " +
+             show(std::min(L::kMaxCoverageCells, L::kMaxGridWork / (1.0 + furniture))) +
+             " are supported");
+  }
   for (const auto& [name, size] :
        {std::pair{"room/width", world.width}, {"room/height", world.height}}) {
     const double diameter = 2 * world.robot_radius;
@@ -163,7 +195,7 @@ void validate(const World& world) {
     const Circle& c = world.circles[i];
     const std::string name = "furniture/circles[" + std::to_string(i) + "]";
     requireFinite(name, {{"x", c.center.x}, {"y", c.center.y}});
-    requirePositive(name + "/radius", c.radius);
+    requirePositiveAtMost(name + "/radius", c.radius, WorldLimits::kMaxRoomSize);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
     const Rectangle& b = world.rectangles[i];
@@ -174,7 +206,7 @@ void validate(const World& world) {
     if (!(b.max_y > b.min_y)) fail(name + "/max_y", "must be greater than min_y");
   }
   const Pose2D& p = world.initial_pose;
-  requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
+  requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
   if (penetrates(world, p.x, p.y)) {
     fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
                              ") puts the robot's disc inside a wall or a piece of furniture");
@@ -197,6 +229,11 @@ World buildWorld(const YAML::Node& root, const std::string& source) {
 }  // namespace
 
 World parseWorld(const std::string& yaml_text, const std::string& source) {
+  if (yaml_text.size() > WorldLimits::kMaxFileBytes) {
+    throw std::invalid_argument(source + ": the world has " + std::to_string(yaml_text.size()) +
+                                " bytes; at most " + std::to_string(WorldLimits::kMaxFileBytes) +
+                                " are supported");
+  }
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
@@ -207,15 +244,8 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
 }
 
 World loadWorld(const std::string& yaml_path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::BadFile&) {
-    throw std::invalid_argument(yaml_path + ": cannot read the world file");
-  } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(yaml_path + ": not valid YAML: " + e.what());
-  }
-  return buildWorld(root, yaml_path);
+  return parseWorld(util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file"),
+                    yaml_path);
 }
 
 }  // namespace roomba_rrt::sim

@@ -51,6 +51,27 @@ TEST(SimInvalidWorld, parameter_of_the_wrong_type_exits_naming_it) {
   expectRefused(runSim("sim_word_factor", "_real_time_factor:=fast"), "real_time_factor");
 }
 
+// Issue 11: these aborted with std::bad_alloc or std::ios_failure, or ran for minutes.
+TEST(SimInvalidWorld, a_room_too_large_for_the_coverage_grid_exits_naming_room_width) {
+  expectRefused(runSim("sim_huge_room", "_room/width:=1e5 _room/height:=1e5"), "room/width");
+}
+
+TEST(SimInvalidWorld, a_coverage_cell_too_small_exits_naming_coverage_cell_size) {
+  expectRefused(runSim("sim_tiny_cell", "_coverage_cell_size:=1e-9"), "coverage_cell_size");
+  expectRefused(runSim("sim_many_cells",
+                       "_room/width:=1000 _room/height:=1000 "
+                       "_coverage_cell_size:=0.001"),
+                "coverage_cell_size");
+}
+
+TEST(SimInvalidWorld, a_huge_robot_exits_naming_robot_radius) {
+  expectRefused(runSim("sim_huge_robot", "_robot/radius:=1e300"), "robot/radius");
+}
+
+TEST(SimInvalidWorld, a_directory_as_world_file_exits_naming_it) {
+  expectRefused(runSim("sim_directory", "_world_file:=/tmp"), "/tmp: cannot read the world file");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using roomba_rrt::sim::loadWorld;
@@ -89,4 +92,84 @@ TEST(World, messages_start_with_the_source_and_unreadable_files_are_named) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/world.yaml"), std::string::npos);
   }
+}
+
+// Issue 11: these aborted with std::bad_alloc, hung for minutes or threw std::ios_failure.
+TEST(World, sizes_that_the_coverage_grid_cannot_hold_are_named) {
+  EXPECT_NE(errorFor("room: {width: 1e5, height: 1e5}")
+                .find("room/width must be a finite number "
+                      "in (0, 1000], got 100000"),
+            std::string::npos);
+  EXPECT_NE(errorFor("room: {width: 6.4, height: 1e300}").find("room/height"), std::string::npos);
+  EXPECT_NE(errorFor("coverage_cell_size: 1e-9")
+                .find("coverage_cell_size must be a number in "
+                      "[0.001, 1], got 1e-09"),
+            std::string::npos);
+  EXPECT_NE(errorFor("coverage_cell_size: 5e-324").find("coverage_cell_size"), std::string::npos);
+  // In range on its own, but 1e12 cells together: the message says why.
+  const std::string error =
+      errorFor("room: {width: 1000, height: 1000}\ncoverage_cell_size: 0.001");
+  EXPECT_NE(error.find("coverage_cell_size (0.001) is too small"), std::string::npos) << error;
+  EXPECT_NE(errorFor("robot: {radius: 1e300}")
+                .find("robot/radius must be a finite number in "
+                      "(0, 10], got 1e+300"),
+            std::string::npos);
+}
+
+TEST(World, a_large_room_within_the_limits_loads) {
+  const World world = parseWorld(
+      "room: {width: 1000, height: 1000}\ncoverage_cell_size: 0.5\n"
+      "initial_pose: {x: 500, y: 500}");
+  EXPECT_EQ(world.width, 1000);
+}
+
+TEST(World, node_parameters_outside_their_ranges_are_named) {
+  EXPECT_NE(errorFor("real_time_factor: 1e-300")
+                .find("real_time_factor must be a number in "
+                      "[0.0001, 10000], got 1e-300"),
+            std::string::npos);
+  EXPECT_NE(errorFor("real_time_factor: 1e5").find("real_time_factor"), std::string::npos);
+  EXPECT_NE(errorFor("step: 1e-300").find("step must be a number in [0.0001, 1], got 1e-300"),
+            std::string::npos);
+  EXPECT_NE(errorFor("robot: {max_linear_speed: 1e9}").find("robot/max_linear_speed"),
+            std::string::npos);
+  EXPECT_NE(errorFor("command_timeout: 1e300").find("command_timeout"), std::string::npos);
+  EXPECT_NE(errorFor("initial_pose: {x: 3.2, y: 2.4, theta: 1e300}").find("initial_pose/theta"),
+            std::string::npos);
+  EXPECT_EQ(errorFor("real_time_factor: 1e-4"), "");
+  EXPECT_EQ(errorFor("real_time_factor: 1e4"), "");
+}
+
+TEST(World, too_much_furniture_is_named) {
+  std::string yaml = "furniture:\n  circles:\n";
+  for (int i = 0; i < 1001; ++i) yaml += "  - {x: 0.1, y: 0.1, radius: 0.01}\n";
+  EXPECT_NE(errorFor(yaml).find("furniture/circles has 1001 entries; at most 1000"),
+            std::string::npos);
+  EXPECT_NE(errorFor("furniture: {circles: [{x: 1e300, y: 1, radius: 0.1}]}")
+                .find("furniture/circles[0]/x"),
+            std::string::npos);
+}
+
+TEST(World, a_path_that_is_not_a_small_regular_file_is_named) {
+  const auto message = [](const std::string& path) {
+    try {
+      loadWorld(path);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string directory = std::filesystem::temp_directory_path().string();
+  EXPECT_NE(message(directory).find("not a regular file"), std::string::npos);
+  const std::string big = directory + "/roomba_rrt_world_test_big.yaml";
+  {
+    std::ofstream out(big);
+    out << "# " << std::string(2 << 20, 'x') << "\n";
+  }
+  EXPECT_NE(message(big).find("at most 1048576"), std::string::npos) << message(big);
+  std::remove(big.c_str());
+  const std::string empty = directory + "/roomba_rrt_world_test_empty.yaml";
+  std::ofstream(empty).close();
+  EXPECT_EQ(message(empty), "");  // an empty file keeps every default
+  std::remove(empty.c_str());
 }

@@ -25,9 +25,18 @@ struct RoombaParams {
   long ticks(double seconds) const { return std::lround(seconds * rate); }
 };
 
-/// Throws std::invalid_argument naming the first bad field (e.g. "angular_speed must be > 0,
-/// got 0"): non-finite values, non-positive times (except 0 s), speeds of the wrong sign, a
-/// non-positive rate, spiral radius or spiral factor < 0.
+/// The supported ranges: they keep tick counts within `long` and the node's timer sane.
+struct RoombaParamLimits {
+  static constexpr double kMaxTime = 1e6;    ///< every *_time in [0, 1e6] s
+  static constexpr double kMaxSpeed = 100;   ///< |speeds| in (0, 100] m/s or rad/s
+  static constexpr double kMaxSpiral = 1e3;  ///< initial_radius_spiral (0, 1e3] m, factor [0, 1e3]
+  static constexpr double kMinRate = 1;      ///< rate in [1, 1000] Hz
+  static constexpr double kMaxRate = 1000;
+};
+
+/// Throws std::invalid_argument naming the first bad field (e.g. "angular_speed must be in
+/// (0, 100], got 0"): non-finite values, values outside RoombaParamLimits, speeds of the wrong
+/// sign.
 void validate(const RoombaParams& params);
 
 /// Reads the parameters from a YAML file (format: config/roomba_behavior.yaml); missing keys keep

@@ -2,6 +2,7 @@
 // robot's physical parameters, loaded from YAML (config/roomba_world.yaml documents the format).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -35,14 +36,35 @@ struct World {
   double real_time_factor = 1.0;      ///< node: simulated seconds per wall-clock second
 };
 
-/// Throws std::invalid_argument naming the first bad parameter (e.g. "robot.radius must be > 0,
-/// got -1"): non-positive sizes, speeds or step, a room smaller than the robot, furniture with a
-/// non-positive size, an initial pose that is not finite or puts the disc into a wall or furniture.
+/// The supported ranges (validate() refuses anything outside them, naming the parameter). They
+/// keep every computation finite and the coverage grid's memory and set-up time small.
+struct WorldLimits {
+  static constexpr double kMaxRoomSize = 1000;        ///< room/width, room/height ≤ this, m
+  static constexpr double kMaxRobotRadius = 10;       ///< m
+  static constexpr double kMaxSpeed = 100;            ///< m/s and rad/s
+  static constexpr double kMinStep = 1e-4;            ///< s
+  static constexpr double kMaxStep = 1;               ///< s
+  static constexpr double kMinCellSize = 1e-3;        ///< coverage_cell_size ≥ this, m
+  static constexpr double kMaxCoverageCells = 1e7;    ///< cells in the grid (2.5 MB of bits)
+  static constexpr double kMaxGridWork = 5e7;         ///< cells × (1 + furniture) at start
+  static constexpr std::size_t kMaxFurniture = 1000;  ///< circles + rectangles
+  static constexpr double kMaxCoordinate = 1e4;       ///< |furniture, pose coordinates|, m
+  static constexpr double kMaxCommandTimeout = 1e6;   ///< s
+  static constexpr double kMinRealTimeFactor = 1e-4;
+  static constexpr double kMaxRealTimeFactor = 1e4;
+  static constexpr std::size_t kMaxFileBytes = 1 << 20;  ///< a world file is at most 1 MiB
+};
+
+/// Throws std::invalid_argument naming the first bad parameter (e.g. "robot/radius must be a
+/// finite number in (0, 10], got -1"): values outside WorldLimits, a room smaller than the robot,
+/// furniture with a non-positive size, a coverage grid too large for its limits, an initial pose
+/// that is not finite or puts the disc into a wall or furniture.
 void validate(const World& world);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
-/// defaults above. Throws std::invalid_argument naming the file and the bad parameter, for an
-/// unreadable file, a value of the wrong type, an unknown key or a world that fails validate().
+/// defaults above. Throws std::invalid_argument naming the file and the bad parameter, for a
+/// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
+/// of the wrong type, an unknown key or a world that fails validate().
 World loadWorld(const std::string& yaml_path);
 
 /// Same as loadWorld, from YAML text (used by tests); `source` names it in error messages.

@@ -1,0 +1,55 @@
+# libFuzzer harnesses (test/fuzz/*_fuzzer.cpp), built only with ROOMBA_RRT_SANITIZE=ON; seed
+# corpora in test/fuzz/corpus/<harness>/. scripts/fuzz builds and runs them.
+if(ROOMBA_RRT_SANITIZE)
+  add_custom_target(fuzzers)
+  function(roomba_rrt_fuzzer name)
+    add_executable(${name} EXCLUDE_FROM_ALL test/fuzz/${name}.cpp ${ARGN})
+    target_link_options(${name} PRIVATE -fsanitize=fuzzer)
+    add_dependencies(fuzzers ${name})
+  endfunction()
+
+  roomba_rrt_fuzzer(world_fuzzer)
+  target_link_libraries(world_fuzzer roomba_sim_core)
+  roomba_rrt_fuzzer(roomba_params_fuzzer)
+  target_link_libraries(roomba_params_fuzzer roomba_behavior_core)
+  roomba_rrt_fuzzer(tree_fuzzer)
+  target_link_libraries(tree_fuzzer roomba_behavior_core)
+  # The planning library uses GCC's vector built-ins (__builtin_shuffle, target_clones) that clang
+  # cannot compile: rrt_planning_sanitized is rrt_planning with those files compiled by g++
+  # (-O2, not instrumented: ASan still catches their wild accesses as SEGVs, not their overflows
+  # inside the heap), everything else by clang with the sanitizers.
+  set(RR_GCC_ONLY_SOURCES src/planning/grid_nearest_neighbors.cpp)
+  get_target_property(RR_PLANNING_SOURCES rrt_planning SOURCES)
+  list(REMOVE_ITEM RR_PLANNING_SOURCES ${RR_GCC_ONLY_SOURCES})
+  set(RR_GCC_OBJECTS)
+  foreach(source ${RR_GCC_ONLY_SOURCES})
+    get_filename_component(stem ${source} NAME_WE)
+    set(object ${CMAKE_CURRENT_BINARY_DIR}/gcc_objects/${stem}.o)
+    add_custom_command(OUTPUT ${object}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/gcc_objects
+      COMMAND g++ -std=c++17 -O2 -g -fPIC -I${PROJECT_SOURCE_DIR}/include
+              -c ${PROJECT_SOURCE_DIR}/${source} -o ${object}
+      DEPENDS ${PROJECT_SOURCE_DIR}/${source} IMPLICIT_DEPENDS CXX ${PROJECT_SOURCE_DIR}/${source}
+      COMMENT "g++ (GCC-only vector code) ${source}")
+    list(APPEND RR_GCC_OBJECTS ${object})
+  endforeach()
+  add_library(rrt_planning_sanitized STATIC EXCLUDE_FROM_ALL ${RR_PLANNING_SOURCES}
+    ${RR_GCC_OBJECTS})
+  target_include_directories(rrt_planning_sanitized PUBLIC ${PROJECT_SOURCE_DIR}/include)
+  target_link_libraries(rrt_planning_sanitized PUBLIC yaml-cpp)
+  target_compile_definitions(rrt_planning_sanitized PRIVATE
+    RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
+
+  # The node's own request conversion (src/nodes/planner_ros.cpp) in front of the library.
+  roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp)
+  target_include_directories(plan_path_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
+  target_link_libraries(plan_path_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
+  add_dependencies(plan_path_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
+  # The planning unit tests on that library (scripts/fuzz --unit).
+  if(TARGET test_rrt_planning)
+    get_target_property(RR_PLANNING_TESTS test_rrt_planning SOURCES)
+    add_executable(test_rrt_planning_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
+    target_link_libraries(test_rrt_planning_sanitized rrt_planning_sanitized gtest gtest_main)
+  endif()
+endif()

@@ -1,0 +1,27 @@
+// libFuzzer harness: behaviour-parameter text → parseRoombaParams → (if accepted) the FSM ticks
+// through its motions with the bumper pressed now and then.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "roomba_rrt/behavior/roomba_fsm.h"
+#include "roomba_rrt/behavior/roomba_params.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace roomba_rrt;
+  behavior::RoombaParams params;
+  try {
+    params = behavior::parseRoombaParams(std::string(reinterpret_cast<const char*>(data), size),
+                                         "fuzz.yaml");
+  } catch (const std::invalid_argument&) {
+    return 0;
+  }
+  behavior::RoombaFsm fsm(params, 1);
+  sim::BumperState bumper;
+  for (int i = 0; i < 200; ++i) {
+    bumper.pressed = bumper.left = (i % 37 == 0);
+    fsm.tick(bumper);
+  }
+  return 0;
+}

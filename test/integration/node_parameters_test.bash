@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Issue 11, item 6: node parameters outside their ranges stop the node at start (exit 1) with a
+# message naming the parameter; a node stops within 1 s of Ctrl-C, roomba_sim also at
+# real_time_factor 1e-4 (where one step lasts 166 s of wall time) and still answers ~reset there,
+# rrt_planner also while it is planning.
+set -euo pipefail
+# shellcheck source=ros_test_env.bash
+source "$(dirname "$0")/ros_test_env.bash"
+trap cleanup_env EXIT
+start_master
+rosparam set /use_sim_time true
+failures=0
+say() { echo "[node_parameters_test] $*"; }
+
+refuses() {  # refuses TEXT NODE ARGS...: exits 1 within 20 s, its output contains TEXT
+  local text=$1 rc=0
+  shift
+  rosparam delete "/$1" 2>/dev/null || true  # rosrun's _name:= values stay on the master
+  timeout 20 rosrun roomba_rrt "$@" >"$work/out" 2>&1 || rc=$?
+  if [ "$rc" = 1 ] && grep -qF -- "$text" "$work/out"; then
+    say "ok: $* -> exit 1, '$text'"
+  else
+    say "FAIL: $* -> exit $rc, wanted 1 and '$text':"; cat "$work/out"; failures=$((failures + 1))
+  fi
+}
+refuses "real_time_factor must be a number in [0.0001, 10000], got 1e-300" roomba_sim _real_time_factor:=1e-300
+refuses "real_time_factor" roomba_sim _real_time_factor:=1e9
+refuses "step must be a number in [0.0001, 1], got 1e-300" roomba_sim _step:=1e-300
+refuses "coverage_cell_size" roomba_sim _coverage_cell_size:=1e-9
+refuses "room/width" roomba_sim _room/width:=1e5
+refuses "not a regular file" roomba_sim _world_file:=/tmp
+refuses "~rate must be in [1, 1000] Hz, got 1e+09" roomba_fsm _rate:=1e9
+refuses "~rate must be in [1, 1000] Hz, got 1e-300" roomba_bt _rate:=1e-300
+refuses "~bumper_timeout" roomba_fsm _bumper_timeout:=1e300
+
+stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends it within 1 s
+  rosparam delete "/$1" 2>/dev/null || true
+  rosrun roomba_rrt "$@" >"$work/out" 2>&1 &
+  local pid=$! t0 elapsed
+  sleep 3
+  if [ "$1" = rrt_planner ]; then  # a plan of minutes in progress must not hold up Ctrl-C
+    timeout 10 rosservice call /rrt_planner/plan_path \
+      "{scenario: 'a', algorithm: 'rrt_star', max_iterations: 5000000}" >/dev/null 2>&1 &
+    sleep 1
+  fi
+  if [ "$1" = roomba_sim ] && ! timeout 5 rosservice call /roomba_sim/reset >/dev/null; then
+    say "FAIL: $* does not answer ~reset"; failures=$((failures + 1))
+  fi
+  t0=$(date +%s.%N)
+  kill -INT "$pid"
+  wait "$pid" || true
+  elapsed=$(python3 -c "print(round($(date +%s.%N) - $t0, 2))")
+  if python3 -c "import sys; sys.exit(0 if $elapsed < 1.0 else 1)"; then
+    say "ok: $* stopped $elapsed s after SIGINT"
+  else
+    say "FAIL: $* took $elapsed s to stop after SIGINT"; failures=$((failures + 1))
+  fi
+}
+stops_quickly roomba_sim _real_time_factor:=1e-4
+stops_quickly roomba_sim _real_time_factor:=100
+stops_quickly roomba_fsm _rate:=1000
+stops_quickly rrt_planner
+[ "$failures" = 0 ] && say PASS || { say "$failures failures"; exit 1; }
