@@ -111,13 +111,13 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   return d;
 }
 
-// ~threads: plans at once, at least 2 (a smaller value is raised to 2), at most kMaxThreads.
+// ~threads: plans at once, in [1, kMaxThreads]; 1 is raised to 2.
 int threadsParam(const ros::NodeHandle& pnh) {
   constexpr int kMaxThreads = 64;
   const int threads = param(pnh, "threads", 4);
-  if (threads > kMaxThreads) {
-    throw std::invalid_argument("~threads: must be <= " + std::to_string(kMaxThreads) + " (got " +
-                                std::to_string(threads) + ")");
+  if (threads < 1 || threads > kMaxThreads) {
+    throw std::invalid_argument("~threads: must be in [1, " + std::to_string(kMaxThreads) +
+                                "] (got " + std::to_string(threads) + ")");
   }
   return std::max(2, threads);
 }
@@ -137,9 +137,17 @@ class RrtPlannerNode {
     animate_ = param(pnh, "animate", false);
     animate_every_ = param(pnh, "animate_every", 10);
     const double animate_rate = param(pnh, "animate_rate", 20.0);
-    if (max_marker_nodes_ < 0) throw std::invalid_argument("~max_marker_nodes: must be >= 0");
+    // Documented ranges (README): outside them the node stops at start naming the parameter.
+    if (max_marker_nodes_ < 0 || max_marker_nodes_ > planning::kDefaultMaxIterationsCap) {
+      throw std::invalid_argument("~max_marker_nodes: must be in [0, " +
+                                  std::to_string(planning::kDefaultMaxIterationsCap) + "] (got " +
+                                  std::to_string(max_marker_nodes_) + ")");
+    }
     if (animate_every_ < 1) throw std::invalid_argument("~animate_every: must be >= 1");
-    if (!(animate_rate > 0)) throw std::invalid_argument("~animate_rate: must be > 0");
+    if (!(animate_rate >= 0.1 && animate_rate <= 1000)) {
+      throw std::invalid_argument("~animate_rate: must be in [0.1, 1000] Hz (got " +
+                                  std::to_string(animate_rate) + ")");
+    }
     animate_period_ = ros::WallDuration(1.0 / animate_rate);
 
     tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);

@@ -32,6 +32,9 @@ refuses "not a regular file" roomba_sim _world_file:=/tmp
 refuses "~rate must be in [1, 1000] Hz, got 1e+09" roomba_fsm _rate:=1e9
 refuses "~rate must be in [1, 1000] Hz, got 1e-300" roomba_bt _rate:=1e-300
 refuses "~bumper_timeout" roomba_fsm _bumper_timeout:=1e300
+refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
+refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
+refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1
 
 stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends it within 1 s
   rosparam delete "/$1" 2>/dev/null || true
