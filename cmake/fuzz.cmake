@@ -36,7 +36,7 @@ if(ROOMBA_RRT_SANITIZE)
   add_library(rrt_planning_sanitized STATIC EXCLUDE_FROM_ALL ${RR_PLANNING_SOURCES}
     ${RR_GCC_OBJECTS})
   target_include_directories(rrt_planning_sanitized PUBLIC ${PROJECT_SOURCE_DIR}/include)
-  target_link_libraries(rrt_planning_sanitized PUBLIC yaml-cpp)
+  target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
   target_compile_definitions(rrt_planning_sanitized PRIVATE
     RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
 
@@ -51,5 +51,7 @@ if(ROOMBA_RRT_SANITIZE)
     get_target_property(RR_PLANNING_TESTS test_rrt_planning SOURCES)
     add_executable(test_rrt_planning_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
     target_link_libraries(test_rrt_planning_sanitized rrt_planning_sanitized gtest gtest_main)
+    target_compile_definitions(test_rrt_planning_sanitized PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   endif()
 endif()
