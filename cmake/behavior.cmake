@@ -128,6 +128,11 @@ add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/nodes/nav_behavior.cpp
 target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core)
 add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
+# Goal message to first non-zero /cmd_vel over ROS, in wall time (scripts/bench).
+add_executable(nav_latency_probe bench/nav_latency_probe.cpp)
+target_include_directories(nav_latency_probe PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
+
 # Navigation without ROS: random goals in one process (simulator, tree, planner).
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
 target_link_libraries(roomba_nav_eval roomba_nav_core PkgConfig::CAIRO)
@@ -146,6 +151,16 @@ if(CATKIN_ENABLE_TESTING)
     target_compile_definitions(nav_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
+  # roomba_bt's navigation conversions, without a master.
+  catkin_add_gtest(nav_ros_test test/behavior/nav_ros_test.cpp src/nodes/nav_ros.cpp)
+  if(TARGET nav_ros_test)
+    target_include_directories(nav_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(nav_ros_test roomba_nav_core ${catkin_LIBRARIES} gtest_main)
+    add_dependencies(nav_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
+    target_compile_definitions(nav_ros_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
   # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.
   add_rostest_gtest(nav_rostest test/behavior/nav_goal.test test/behavior/nav_rostest.cpp)
   add_rostest(test/behavior/nav_action.test DEPENDENCIES nav_rostest)
