@@ -27,6 +27,7 @@ using behavior::InProcessPlanner;
 using MoveBaseServer = actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>;
 
 constexpr int kFeedbackEvery = 6;  ///< ticks between feedback messages (10 Hz at 60 Hz)
+const std::string kIdle = "Idle";
 
 /// What makeNavBehavior reads from the parameters besides the tree.
 struct Settings {
@@ -73,7 +74,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
         nav_(settings_.config, seed, tree_file),
         listener_(buffer_),
         server_(nh_, "move_base", false) {
-    context_.state_name = &nav_.stateName();
+    context_.state_name = &kIdle;
     cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
     // /move_base_simple/goal becomes a goal of the action, as in move_base, so that a goal from
@@ -107,7 +108,10 @@ class NavBehavior final : public behavior::RoombaBehavior {
       return {};
     }
     const sim::Velocity cmd = nav_.tick(bumper_, pose);
-    context_.state_name = &nav_.stateName();
+    // ~state names the active leaf; "Idle" when no goal runs and the robot stands (the tree
+    // keeps the last leaf's name, e.g. FollowPath at the goal; cleaning leaves still show).
+    const bool idle = nav_.outcome() != behavior::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
+    context_.state_name = idle ? &kIdle : &nav_.stateName();
     publishPlan();
     report(pose);
     return cmd;

@@ -17,6 +17,7 @@
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
+#include <std_msgs/String.h>
 
 #include <cmath>
 #include <functional>
@@ -40,6 +41,11 @@ class Robot {
     ros::NodeHandle nh;
     odom_sub_ = nh.subscribe("/odom", 100, &Robot::onOdom, this);
     bumper_sub_ = nh.subscribe("/bumper", 100, &Robot::onBumper, this);
+    state_sub_ = nh.subscribe("/roomba_bt/state", 10, &Robot::onState, this);
+  }
+  std::string state() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return state_;
   }
   struct Sample {
     double x = std::numeric_limits<double>::quiet_NaN(), y = x, v = 0, w = 0;
@@ -72,6 +78,10 @@ class Robot {
     if (!stopped) stopped_since_ = ros::Time();
     if (stopped && stopped_since_.isZero()) stopped_since_ = msg.header.stamp;
   }
+  void onState(const std_msgs::String& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    state_ = msg.data;
+  }
   void onBumper(const roomba_rrt::Bumper& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     pressed_ = pressed_ || msg.pressed;
@@ -81,7 +91,8 @@ class Robot {
   Sample latest_;
   bool pressed_ = false;
   ros::Time stopped_since_;
-  ros::Subscriber odom_sub_, bumper_sub_;
+  std::string state_;
+  ros::Subscriber odom_sub_, bumper_sub_, state_sub_;
 };
 
 /// Waits (wall time) until `done` or the timeout; true when done.
@@ -164,6 +175,8 @@ TEST_F(Nav, action_goal_succeeds_at_the_goal) {
   EXPECT_EQ(state, SimpleClientGoalState::SUCCEEDED) << state.getText();
   EXPECT_LT(distanceTo(robot_, 1.2, 2.0), kXyTolerance + 0.01);
   EXPECT_FALSE(robot_.everPressed());
+  // ~state: the robot at its goal is Idle, not the last leaf.
+  EXPECT_TRUE(waitFor([&] { return robot_.state() == "Idle"; }, 5.0)) << robot_.state();
 }
 
 TEST_F(Nav, goal_inside_the_sofa_is_aborted_with_a_message_and_the_robot_stays_still) {
