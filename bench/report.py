@@ -13,6 +13,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
     rtf.json       {"requested": F, "line": "<sim_rtf_probe's output line>"}
     service.json   plan_path_bench --json
+    nav_latency.json  nav_latency_probe --json (roomba_sim, rrt_planner, roomba_bt navigating)
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
 """
 import json
@@ -291,6 +292,20 @@ def service_rows(t, results):
                         f"planning p50 {fmt(s['planning_p50_us'])} µs)")
 
 
+def nav_latency_rows(t, results):
+    what = ("Navigation over ROS: goal message -> first non-zero /cmd_vel, wall time at real-time "
+            "factor 1 (roomba_bt, planner service)")
+    try:
+        data = load(results, "nav_latency")
+    except Missing as e:
+        t.missing("nav_latency", what, str(e), "p50 ≤ 20 ms")
+        return
+    t.add("nav_latency", what + f" ({data['goals']} goals)", data["p50_ms"],
+          target="p50 ≤ 20 ms", met=data["p50_ms"] <= 20 and data["missed"] == 0,
+          ours_text=f"p50 {data['p50_ms']:.1f} ms (p90 {data['p90_ms']:.1f} ms, "
+                    f"max {data['max_ms']:.1f} ms, {data['missed']} goals without motion)")
+
+
 def memory_rows(t, results):
     what = "Peak RSS: rrt_monte_carlo --scenario all --runs 200"
     try:
@@ -358,7 +373,7 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, rtf_rows, service_rows,
-                 memory_rows):
+                 nav_latency_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

@@ -41,8 +41,6 @@ add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
 
 add_executable(roomba_fsm src/nodes/roomba_fsm_node.cpp)
 target_link_libraries(roomba_fsm roomba_behavior_node)
-add_executable(roomba_bt src/nodes/roomba_bt_node.cpp)
-target_link_libraries(roomba_bt roomba_behavior_node)
 
 # Headless coverage experiments: the simulation core and a behaviour in one process.
 add_executable(roomba_coverage src/tools/roomba_coverage.cpp)
@@ -122,6 +120,19 @@ target_include_directories(roomba_nav_core PUBLIC include)
 target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
   Threads::Threads)
 
+# roomba_bt: the lab's tree, or a navigation tree behind move_base's interface (the move_base
+# action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client). The conversions are
+# unit-tested without a master (nav_ros_test).
+add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/nodes/nav_behavior.cpp
+  src/nodes/nav_ros.cpp src/nodes/planner_ros.cpp)
+target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core)
+add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
+# Goal message to first non-zero /cmd_vel over ROS, in wall time (scripts/bench).
+add_executable(nav_latency_probe bench/nav_latency_probe.cpp)
+target_include_directories(nav_latency_probe PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
+
 # Navigation without ROS: random goals in one process (simulator, tree, planner).
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
 target_link_libraries(roomba_nav_eval roomba_nav_core PkgConfig::CAIRO)
@@ -140,6 +151,26 @@ if(CATKIN_ENABLE_TESTING)
     target_compile_definitions(nav_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()
+  # roomba_bt's navigation conversions, without a master.
+  catkin_add_gtest(nav_ros_test test/behavior/nav_ros_test.cpp src/nodes/nav_ros.cpp)
+  if(TARGET nav_ros_test)
+    target_include_directories(nav_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(nav_ros_test roomba_nav_core ${catkin_LIBRARIES} gtest_main)
+    add_dependencies(nav_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
+    target_compile_definitions(nav_ros_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
+  # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.
+  add_rostest_gtest(nav_rostest test/behavior/nav_goal.test test/behavior/nav_rostest.cpp)
+  add_rostest(test/behavior/nav_action.test DEPENDENCIES nav_rostest)
+  if(TARGET nav_rostest)
+    target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(nav_rostest ${catkin_LIBRARIES})
+    add_dependencies(nav_rostest roomba_bt roomba_sim rrt_planner
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+
   # Its own executable: it replaces operator new to count allocations.
   catkin_add_gtest(nav_allocation_test test/behavior/nav_allocation_test.cpp)
   if(TARGET nav_allocation_test)

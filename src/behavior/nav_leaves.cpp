@@ -1,9 +1,11 @@
 #include "roomba_rrt/behavior/nav_leaves.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "roomba_rrt/behavior/motion_leaf.h"
+#include "roomba_rrt/geometry/geometry.h"
 
 namespace roomba_rrt::bt {
 
@@ -102,9 +104,39 @@ class ComputePath final : public NavLeaf {
       error_.set("no path: " + reply_.message);
       return Status::kFailure;
     }
-    std::swap(path_.value(), reply_.path);  // recycles the old path's storage
-    path_.commit();
+    // A replan while driving keeps the current path unless the new one is shorter than what is
+    // left of it (and the current one is still free): RRT's plans differ at random, and a robot
+    // handed every new one dithers between the two ways round an obstacle.
+    if (!keepCurrentPath()) {
+      std::swap(path_.value(), reply_.path);  // recycles the old path's storage
+      path_.commit();
+    }
     return Status::kSuccess;
+  }
+
+  bool keepCurrentPath() {
+    const Path& current = path_.value();
+    if (current.size() < 2 || reply_.path.size() < 2) return false;
+    const sim::Pose2D* goal = goal_.get();
+    if (!goal || current.back().x != goal->x || current.back().y != goal->y) return false;
+    const planning::Point2 robot = reply_.path.front();
+    // What is left of the current path: from the robot's projection on its nearest segment on.
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity(), left = 0;
+    for (std::size_t i = 0; i + 1 < current.size(); ++i) {
+      const planning::Point2 p =
+          geometry::closestPoint(planning::Segment{current[i], current[i + 1]}, robot);
+      const double d = planning::distance(robot, p);
+      if (d < best) {
+        best = d;
+        nearest = i;
+        left = d + planning::distance(p, current[i + 1]);
+      }
+    }
+    for (std::size_t i = nearest + 1; i + 1 < current.size(); ++i) {
+      left += planning::distance(current[i], current[i + 1]);
+    }
+    return left <= geometry::pathLength(reply_.path) && planner_->isPathFree(current, nearest + 1);
   }
   void onHalt() override { planner_->cancel(); }
 

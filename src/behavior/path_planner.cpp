@@ -34,10 +34,11 @@ NavWorld navWorldFrom(const sim::World& world, double clearance) {
 }
 
 InProcessPlanner::InProcessPlanner(NavWorld world, const planning::PlannerOptions& options,
-                                   Mode mode)
+                                   Mode mode, PlanFunction plan_function)
     : world_(std::move(world)),
       options_(options),
       mode_(mode),
+      plan_function_(std::move(plan_function)),
       base_(problemFrom(world_)),
       checker_(world_.circles, planning::CollisionCheck::kSegments, world_.rectangles,
                planning::robotMargin(base_)),
@@ -77,24 +78,13 @@ InProcessPlanner::~InProcessPlanner() {
 
 PlanReply InProcessPlanner::planNow(const Point2& start, const Point2& goal,
                                     std::uint32_t seed) const {
-  PlanReply reply;
-  // A start inside the grown obstacles (the robot hugging furniture a little closer than the
-  // clearance, or pushed there by a bump) is planned from the nearest free point around it.
-  Point2 from = start;
-  if (!isPointFree(start)) {
-    bool found = false;
-    for (int ring = 1; ring <= 25 && !found; ++ring) {
-      const double r = 0.01 * ring;
-      for (int k = 0; k < 32 && !found; ++k) {
-        const double a = 2.0 * M_PI * k / 32;
-        const Point2 p{start.x + r * std::cos(a), start.y + r * std::sin(a)};
-        if (isPointFree(p)) {
-          from = p;
-          found = true;
-        }
-      }
-    }
+  const Point2 from = freeStart(start);
+  if (plan_function_) {
+    PlanReply reply = plan_function_(from, goal, seed);
+    if (reply.success) finishPath(start, goal, reply.path);
+    return reply;
   }
+  PlanReply reply;
   planning::Problem problem = base_;
   problem.start = from;
   problem.goal = goal;
@@ -106,12 +96,31 @@ PlanReply InProcessPlanner::planNow(const Point2& start, const Point2& goal,
   reply.message = result.message;
   if (result.success) {
     reply.path = std::move(result.path);
-    if (from.x != start.x || from.y != start.y) reply.path.insert(reply.path.begin(), start);
-    if (reply.path.empty() || planning::distance(reply.path.back(), goal) > 0) {
-      reply.path.push_back(goal);
-    }
+    finishPath(start, goal, reply.path);
   }
   return reply;
+}
+
+Point2 InProcessPlanner::freeStart(const Point2& start) const {
+  // A start inside the grown obstacles (the robot hugging furniture a little closer than the
+  // clearance, or pushed there by a bump) is planned from the nearest free point around it.
+  if (isPointFree(start)) return start;
+  for (int ring = 1; ring <= 25; ++ring) {
+    const double r = 0.01 * ring;
+    for (int k = 0; k < 32; ++k) {
+      const double a = 2.0 * M_PI * k / 32;
+      const Point2 p{start.x + r * std::cos(a), start.y + r * std::sin(a)};
+      if (isPointFree(p)) return p;
+    }
+  }
+  return start;
+}
+
+void finishPath(const Point2& start, const Point2& goal, Path& path) {
+  if (!path.empty() && (path.front().x != start.x || path.front().y != start.y)) {
+    path.insert(path.begin(), start);
+  }
+  if (path.empty() || planning::distance(path.back(), goal) > 0) path.push_back(goal);
 }
 
 void InProcessPlanner::request(const Point2& start, const Point2& goal) {

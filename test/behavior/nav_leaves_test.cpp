@@ -82,6 +82,29 @@ TEST_F(LeafTest, compute_path_runs_while_the_plan_is_computed_then_writes_it) {
   EXPECT_EQ(board->get<Path>("path")->size(), 2u);
 }
 
+TEST_F(LeafTest, a_replan_replaces_the_path_only_when_shorter_than_what_is_left) {
+  bt::Tree tree = build(kComputePath);
+  board->set<sim::Pose2D>("goal", {4, 5, 0});
+  const auto plan = [&](Path path) {
+    planner->reply.success = true;
+    planner->reply.path = std::move(path);
+    planner->ready = true;
+    EXPECT_EQ(tree.tick(), bt::Status::kRunning);
+    EXPECT_EQ(tree.tick(), bt::Status::kSuccess);
+    return *board->get<Path>("path");
+  };
+  const Path first = {{1, 2}, {4, 2}, {4, 5}};  // 6 m
+  EXPECT_EQ(plan(first).size(), 3u);
+  // The other way round (4 + 3.2 m) is longer than the 6 m left: the robot keeps its way.
+  EXPECT_EQ(plan({{1, 2}, {1, 6}, {4, 5}}).size(), 3u);
+  EXPECT_EQ(board->get<Path>("path")->at(1).x, 4);
+  // A straight line (4.2 m) is shorter: taken.
+  EXPECT_EQ(plan({{1, 2}, {4, 5}}).size(), 2u);
+  // A new goal: the next plan is taken whatever its length.
+  board->set<sim::Pose2D>("goal", {9, 9, 0});
+  EXPECT_EQ(plan({{1, 2}, {1, 9}, {9, 9}}).size(), 3u);
+}
+
 TEST_F(LeafTest, compute_path_failure_names_the_planner_s_reason) {
   bt::Tree tree = build(kComputePath);
   board->set<sim::Pose2D>("goal", {4, 5, 0});

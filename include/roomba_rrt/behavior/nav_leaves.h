@@ -63,7 +63,11 @@ struct NavLeafConfig {
 /// - ComputePath start="{pose}" goal="{goal}" path="{path}" error="{error}": on entering,
 ///   requests a plan from start to goal (a missing start or goal: FAILURE); RUNNING while it is
 ///   computed off the tick thread (a tick only polls); SUCCESS with the path written, or FAILURE
-///   with the planner's message in `error`. Halting it abandons the plan.
+///   with the planner's message in `error`. Halting it abandons the plan. A replan to the same
+///   goal is written only when it is shorter than what is left of the current path (measured
+///   from the start's projection on it) or the current path is no longer free; otherwise the
+///   current path stays (SUCCESS all the same), so the robot does not dither between ways round
+///   an obstacle.
 /// - FollowPath path="{path}" goal="{goal}" pose="{pose}" error="{error}": the PathFollower;
 ///   a new path (written by ComputePath while it drives) is taken up at once. RUNNING with the
 ///   command; SUCCESS when arrived (within the tolerances at the goal heading); FAILURE when the

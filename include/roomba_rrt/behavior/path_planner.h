@@ -6,6 +6,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -43,6 +44,10 @@ struct PlanReply {
   double planning_ms = 0;
 };
 
+/// Makes a planned path start with the robot's own `start` (a plan from freeStart() begins
+/// elsewhere) and end exactly at `goal`.
+void finishPath(const planning::Point2& start, const planning::Point2& goal, Path& path);
+
 /// Plans asynchronously: request() returns at once, poll() reports the result when it is ready.
 /// One caller thread (the tree's); implementations plan elsewhere.
 class PathPlanner {
@@ -76,10 +81,17 @@ class PathPlanner {
 class InProcessPlanner final : public PathPlanner {
  public:
   enum class Mode { kThread, kInline };
+  /// What plans a request (start already moved to a free point, seed), in place of the
+  /// library: the roomba_bt node's client of the ~plan_path service. Runs on the worker thread
+  /// in kThread; the reply's path is finished with finishPath().
+  using PlanFunction = std::function<PlanReply(const planning::Point2& start,
+                                               const planning::Point2& goal, std::uint32_t seed)>;
 
-  /// std::invalid_argument naming the field when the world or options are invalid.
+  /// std::invalid_argument naming the field when the world or options are invalid. With
+  /// `plan_function`, requests are planned by it (the world still answers isPathFree and
+  /// freeStart).
   InProcessPlanner(NavWorld world, const planning::PlannerOptions& options,
-                   Mode mode = Mode::kThread);
+                   Mode mode = Mode::kThread, PlanFunction plan_function = {});
   ~InProcessPlanner() override;
 
   void request(const planning::Point2& start, const planning::Point2& goal) override;
@@ -94,6 +106,9 @@ class InProcessPlanner final : public PathPlanner {
   /// Whether the robot's centre may be at `p` (inside the shrunk bounds, outside every grown
   /// obstacle).
   bool isPointFree(const planning::Point2& p) const;
+  /// `start` if it is free, else the nearest free point within 0.25 m of it (`start` when none
+  /// is): where a plan for a robot hugging furniture starts.
+  planning::Point2 freeStart(const planning::Point2& start) const;
 
  private:
   void work();
@@ -101,6 +116,7 @@ class InProcessPlanner final : public PathPlanner {
   NavWorld world_;
   planning::PlannerOptions options_;
   Mode mode_;
+  PlanFunction plan_function_;
   planning::Problem base_;              ///< the world as a planning problem (start, goal unset)
   planning::CollisionChecker checker_;  ///< exact tests against the grown obstacles
   planning::Bounds shrunk_;             ///< bounds shrunk by radius + clearance

@@ -1,0 +1,322 @@
+#include "nav_behavior.h"
+
+#include <actionlib/server/simple_action_server.h>
+#include <geometry_msgs/Twist.h>
+#include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/Path.h>
+#include <tf2/LinearMath/Transform.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <stdexcept>
+
+#include "behavior_node.h"
+#include "nav_ros.h"
+#include "planner_ros.h"
+#include "roomba_rrt/behavior/nav_bt.h"
+
+namespace roomba_rrt::nav_node {
+namespace {
+
+using behavior::InProcessPlanner;
+using MoveBaseServer = actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>;
+
+constexpr int kFeedbackEvery = 6;  ///< ticks between feedback messages (10 Hz at 60 Hz)
+const std::string kIdle = "Idle";
+
+/// What makeNavBehavior reads from the parameters besides the tree.
+struct Settings {
+  sim::World world;
+  double clearance = 0.05;
+  std::string global_frame = "map", robot_frame = "base_link";
+  behavior::NavLeafConfig config;
+};
+
+/// The ~plan_path client behind ComputePath: one persistent connection per planner, made again
+/// after a failed call (rrt_planner restarted). Runs on the planner's worker thread.
+class PlanPathClient {
+ public:
+  PlanPathClient(std::string service, double clearance)
+      : service_(std::move(service)), clearance_(clearance) {}
+
+  behavior::PlanReply operator()(const planning::Point2& start, const planning::Point2& goal,
+                                 std::uint32_t seed) {
+    if (!client_.isValid()) client_ = ros::NodeHandle().serviceClient<PlanPath>(service_, true);
+    PlanPath srv;
+    srv.request = planRequest(start, goal, seed, clearance_);
+    if (!client_.call(srv)) {
+      client_.shutdown();
+      behavior::PlanReply reply;
+      reply.message = "planner: the service " + service_ +
+                      " did not answer (is rrt_planner running? or set ~planner:=in_process)";
+      return reply;
+    }
+    return toPlanReply(srv.response);
+  }
+
+ private:
+  std::string service_;
+  double clearance_;
+  ros::ServiceClient client_;
+};
+
+class NavBehavior final : public behavior::RoombaBehavior {
+ public:
+  NavBehavior(const behavior::RoombaParams& params, std::uint32_t seed,
+              const std::string& tree_file, Settings settings)
+      : RoombaBehavior(params, seed),
+        settings_(std::move(settings)),
+        nav_(settings_.config, seed, tree_file),
+        listener_(buffer_),
+        server_(nh_, "move_base", false) {
+    context_.state_name = &kIdle;
+    cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+    plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
+    // /move_base_simple/goal becomes a goal of the action, as in move_base, so that a goal from
+    // rviz preempts an action client's goal and is reported on move_base/status.
+    action_goal_pub_ = nh_.advertise<move_base_msgs::MoveBaseActionGoal>("move_base/goal", 1);
+    simple_goal_sub_ = nh_.subscribe("move_base_simple/goal", 1, &NavBehavior::onSimpleGoal, this);
+    server_.registerGoalCallback([this] { onGoal(); });
+    server_.registerPreemptCallback([this] { onPreempt(); });
+    server_.start();
+  }
+
+  sim::Velocity tick(const sim::BumperState& bumper) override {
+    bumper_ = bumper;
+    return step();
+  }
+
+ private:
+  sim::Velocity step() {
+    sim::Pose2D pose;
+    try {
+      const auto t =
+          buffer_.lookupTransform(settings_.global_frame, settings_.robot_frame, ros::Time(0));
+      geometry_msgs::Pose p;
+      p.position.x = t.transform.translation.x;
+      p.position.y = t.transform.translation.y;
+      p.orientation = t.transform.rotation;
+      pose = toPose2D(p);
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "no robot pose (%s -> %s): %s; standing still",
+                        settings_.global_frame.c_str(), settings_.robot_frame.c_str(), e.what());
+      return {};
+    }
+    const sim::Velocity cmd = nav_.tick(bumper_, pose);
+    // ~state names the active leaf; "Idle" when no goal runs and the robot stands (the tree
+    // keeps the last leaf's name, e.g. FollowPath at the goal; cleaning leaves still show).
+    const bool idle = nav_.outcome() != behavior::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
+    context_.state_name = idle ? &kIdle : &nav_.stateName();
+    publishPlan();
+    report(pose);
+    return cmd;
+  }
+
+  /// The goal's outcome to the action client, or feedback while it runs.
+  void report(const sim::Pose2D& pose) {
+    if (!goal_open_) return;
+    move_base_msgs::MoveBaseResult result;
+    switch (nav_.outcome()) {
+      case behavior::GoalOutcome::kSucceeded:
+        goal_open_ = false;
+        ROS_INFO("goal reached at (%.2f, %.2f)", pose.x, pose.y);
+        server_.setSucceeded(result, "reached the goal");
+        return;
+      case behavior::GoalOutcome::kAborted:
+        goal_open_ = false;
+        ROS_WARN("goal aborted: %s", nav_.message().c_str());
+        server_.setAborted(result, nav_.message());
+        return;
+      case behavior::GoalOutcome::kNone:
+      case behavior::GoalOutcome::kActive:
+        break;
+    }
+    if (++ticks_since_feedback_ < kFeedbackEvery) return;
+    ticks_since_feedback_ = 0;
+    move_base_msgs::MoveBaseFeedback feedback;
+    feedback.base_position = toPoseStamped(pose, settings_.global_frame, ros::Time::now());
+    server_.publishFeedback(feedback);
+  }
+
+  void publishPlan() {
+    const behavior::Path* path = nav_.path();
+    const auto same = [](const planning::Point2& a, const planning::Point2& b) {
+      return a.x == b.x && a.y == b.y;
+    };
+    if (path == nullptr || (path->size() == last_plan_.size() &&
+                            std::equal(path->begin(), path->end(), last_plan_.begin(), same))) {
+      return;
+    }
+    last_plan_ = *path;
+    plan_pub_.publish(
+        planner_node::toPathMessage(last_plan_, settings_.global_frame, ros::Time::now()));
+  }
+
+  void onSimpleGoal(const geometry_msgs::PoseStamped& goal) {
+    move_base_msgs::MoveBaseActionGoal action_goal;
+    action_goal.header.stamp = ros::Time::now();
+    action_goal.goal.target_pose = goal;
+    action_goal_pub_.publish(action_goal);
+  }
+
+  void onGoal() {
+    const auto goal = server_.acceptNewGoal();  // the goal that was active is preempted
+    sim::Pose2D target;
+    std::string problem = toGlobal(goal->target_pose, target);
+    if (problem.empty()) {
+      problem = goalPlaceProblem(settings_.world, settings_.clearance, target.x, target.y);
+    }
+    if (!problem.empty()) {
+      nav_.cancelGoal();
+      goal_open_ = false;
+      stop();
+      ROS_WARN("goal refused: %s", problem.c_str());
+      server_.setAborted(move_base_msgs::MoveBaseResult(), problem);
+      return;
+    }
+    ROS_INFO("goal (%.2f, %.2f, %.2f rad)", target.x, target.y, target.theta);
+    nav_.setGoal(target);
+    goal_open_ = true;
+    ticks_since_feedback_ = 0;
+    // Tick at once so that planning starts now, not at the next timer event.
+    cmd_pub_.publish(toTwist(step()));
+  }
+
+  void onPreempt() {
+    if (server_.isNewGoalAvailable()) return;  // onGoal follows and replaces the goal
+    nav_.cancelGoal();
+    goal_open_ = false;
+    stop();
+    ROS_INFO("goal canceled");
+    server_.setPreempted(move_base_msgs::MoveBaseResult(), "canceled");
+  }
+
+  /// "" with `out` the goal in the global frame, or why the goal cannot be used.
+  std::string toGlobal(const geometry_msgs::PoseStamped& goal, sim::Pose2D& out) {
+    std::string problem = poseProblem(goal.pose);
+    if (!problem.empty()) return problem;
+    const std::string& frame = goal.header.frame_id;
+    if (frame.empty()) {
+      return "target_pose.header.frame_id: empty (use '" + settings_.global_frame + "')";
+    }
+    geometry_msgs::Pose pose = goal.pose;
+    if (frame != settings_.global_frame && frame != "/" + settings_.global_frame) {
+      geometry_msgs::TransformStamped t;
+      try {
+        t = buffer_.lookupTransform(settings_.global_frame, frame, ros::Time(0));
+      } catch (const tf2::TransformException& e) {
+        return "target_pose.header.frame_id: cannot transform '" + frame + "' to '" +
+               settings_.global_frame + "': " + e.what();
+      }
+      const auto& r = t.transform.rotation;
+      const auto& v = t.transform.translation;
+      const tf2::Transform transform(tf2::Quaternion(r.x, r.y, r.z, r.w),
+                                     tf2::Vector3(v.x, v.y, v.z));
+      const auto& q = goal.pose.orientation;
+      const tf2::Vector3 p = transform * tf2::Vector3(pose.position.x, pose.position.y, 0);
+      const tf2::Quaternion rotated =
+          transform.getRotation() * tf2::Quaternion(q.x, q.y, q.z, q.w).normalized();
+      pose.position.x = p.x();
+      pose.position.y = p.y();
+      pose.orientation.x = rotated.x();
+      pose.orientation.y = rotated.y();
+      pose.orientation.z = rotated.z();
+      pose.orientation.w = rotated.w();
+    }
+    out = toPose2D(pose);
+    return "";
+  }
+
+  static geometry_msgs::Twist toTwist(const sim::Velocity& cmd) {
+    geometry_msgs::Twist twist;
+    twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
+    twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
+    return twist;
+  }
+  void stop() { cmd_pub_.publish(geometry_msgs::Twist()); }
+
+  Settings settings_;
+  behavior::NavBt nav_;
+  ros::NodeHandle nh_;
+  tf2_ros::Buffer buffer_;
+  tf2_ros::TransformListener listener_;
+  MoveBaseServer server_;
+  ros::Publisher cmd_pub_, plan_pub_, action_goal_pub_;
+  ros::Subscriber simple_goal_sub_;
+
+  sim::BumperState bumper_;
+  bool goal_open_ = false;  ///< the action's current goal awaits its outcome
+  int ticks_since_feedback_ = 0;
+  behavior::Path last_plan_;
+};
+
+double finiteParam(ros::NodeHandle& pnh, const std::string& name, double fallback, double min) {
+  const double value = pnh.param(name, fallback);
+  if (!(std::isfinite(value) && value >= min)) {
+    throw std::invalid_argument("~" + name + " must be a finite number >= " + std::to_string(min) +
+                                ", got " + std::to_string(value));
+  }
+  return value;
+}
+
+}  // namespace
+
+bool isNavigationTree(const std::string& tree_file) {
+  std::ifstream in(tree_file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  static const std::regex kNavLeaf(
+      "<(ComputePath|FollowPath|BackUp|Spin|GoalUpdated|HasGoal|IsBumped|IsPathValid|"
+      "GoalSucceeded|GoalAborted)[\\s/>]");
+  return std::regex_search(text, kNavLeaf);
+}
+
+std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
+                                                          const behavior::RoombaParams& params,
+                                                          std::uint32_t seed,
+                                                          const std::string& tree_file) {
+  Settings s;
+  const std::string world_file =
+      pnh.param<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
+  s.world = sim::loadWorld(world_file);
+  s.clearance = finiteParam(pnh, "clearance", 0.05, 0.0);
+  s.global_frame = pnh.param<std::string>("global_frame", s.global_frame);
+  s.robot_frame = pnh.param<std::string>("robot_frame", s.robot_frame);
+  const std::string planner = pnh.param<std::string>("planner", "service");
+  const std::string service = pnh.param<std::string>("plan_path_service", "/rrt_planner/plan_path");
+
+  const behavior::NavWorld world = behavior::navWorldFrom(s.world, s.clearance);
+  planning::PlannerOptions options = behavior::defaultNavPlannerOptions();
+  options.seed = seed;
+  if (planner == "in_process") {
+    s.config = behavior::inProcessNavConfig(world, options);
+  } else if (planner == "service") {
+    const double clearance = s.clearance;
+    s.config.planners = [world, options, service, clearance] {
+      return std::make_unique<InProcessPlanner>(world, options, InProcessPlanner::Mode::kThread,
+                                                PlanPathClient(service, clearance));
+    };
+    s.config.checker =
+        std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
+  } else {
+    throw std::invalid_argument("~planner must be 'service' or 'in_process', got '" + planner +
+                                "'");
+  }
+  s.config.params = params;
+  behavior::FollowerParams& f = s.config.follower;
+  f.rate = params.rate;
+  f.max_linear_speed = finiteParam(pnh, "max_linear_speed", f.max_linear_speed, 1e-3);
+  f.max_angular_speed = finiteParam(pnh, "max_angular_speed", f.max_angular_speed, 1e-3);
+  f.xy_tolerance = finiteParam(pnh, "xy_tolerance", f.xy_tolerance, 1e-3);
+  f.yaw_tolerance = finiteParam(pnh, "yaw_tolerance", f.yaw_tolerance, 1e-3);
+  behavior::validate(f);
+  ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
+           planner == "service" ? (" (" + service + ")").c_str() : "");
+  return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s));
+}
+
+}  // namespace roomba_rrt::nav_node

@@ -1,0 +1,30 @@
+// roomba_bt with a navigation tree (config/roomba_nav_tree.xml): NavBt behind move_base's ROS
+// interface. A behaviour for runBehaviorNode (behavior_node.h), which keeps ticking it on its
+// timer with /bumper; this adds the goal topic, the move_base action, the robot's pose from tf2,
+// ~plan, and the planner client.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <ros/ros.h>
+
+#include "roomba_rrt/behavior/roomba_behavior.h"
+
+namespace roomba_rrt::nav_node {
+
+/// Whether the tree file uses navigation leaves (then roomba_bt runs it as navigation).
+bool isNavigationTree(const std::string& tree_file);
+
+/// The navigation behaviour of roomba_bt, set up from the private parameters (see README,
+/// "Navigation: click a goal"): ~world_file, ~planner ("service" or "in_process"),
+/// ~plan_path_service, ~clearance, ~global_frame, ~robot_frame, ~max_linear_speed,
+/// ~max_angular_speed, ~xy_tolerance, ~yaw_tolerance. std::invalid_argument naming the
+/// parameter when one is invalid.
+std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& private_nh,
+                                                          const behavior::RoombaParams& params,
+                                                          std::uint32_t seed,
+                                                          const std::string& tree_file);
+
+}  // namespace roomba_rrt::nav_node

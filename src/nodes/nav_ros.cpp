@@ -1,0 +1,120 @@
+#include "nav_ros.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "roomba_rrt/behavior/nav_bt.h"
+
+namespace roomba_rrt::nav_node {
+namespace {
+
+std::string format(const char* fmt, double a, double b, double c = 0, double d = 0, double e = 0,
+                   double f = 0) {
+  char text[256];
+  std::snprintf(text, sizeof text, fmt, a, b, c, d, e, f);
+  return text;
+}
+
+}  // namespace
+
+std::string poseProblem(const geometry_msgs::Pose& pose) {
+  const std::pair<const char*, double> fields[] = {
+      {"position.x", pose.position.x},       {"position.y", pose.position.y},
+      {"position.z", pose.position.z},       {"orientation.x", pose.orientation.x},
+      {"orientation.y", pose.orientation.y}, {"orientation.z", pose.orientation.z},
+      {"orientation.w", pose.orientation.w}};
+  for (const auto& [name, value] : fields) {
+    if (!std::isfinite(value)) return std::string("target_pose.pose.") + name + ": not finite";
+  }
+  const auto& q = pose.orientation;
+  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (norm < 1e-6) return "target_pose.pose.orientation: not a rotation (zero quaternion)";
+  return "";
+}
+
+sim::Pose2D toPose2D(const geometry_msgs::Pose& pose) {
+  const auto& q = pose.orientation;
+  // Yaw of the rotation (ZYX convention); this form holds for unnormalised quaternions too.
+  const double yaw =
+      std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
+  return {pose.position.x, pose.position.y, yaw};
+}
+
+geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::string& frame_id,
+                                         const ros::Time& stamp) {
+  geometry_msgs::PoseStamped msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  msg.pose.position.x = pose.x;
+  msg.pose.position.y = pose.y;
+  msg.pose.orientation.z = std::sin(0.5 * pose.theta);
+  msg.pose.orientation.w = std::cos(0.5 * pose.theta);
+  return msg;
+}
+
+std::string goalPlaceProblem(const sim::World& world, double clearance, double x, double y) {
+  const double margin = world.robot_radius + clearance;
+  if (x < 0 || x > world.width || y < 0 || y > world.height) {
+    return format("goal (%.2f, %.2f) is outside the room [0, %g] x [0, %g]", x, y, world.width,
+                  world.height);
+  }
+  for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
+    const auto& r = world.rectangles[i];
+    const double dx = std::max({r.min_x - x, 0.0, x - r.max_x});
+    const double dy = std::max({r.min_y - y, 0.0, y - r.max_y});
+    if (std::hypot(dx, dy) < margin) {
+      return format("goal (%.2f, %.2f) is inside furniture (rectangle %.0f: [%g, %g] x ", x, y,
+                    static_cast<double>(i), r.min_x, r.max_x) +
+             format("[%g, %g], grown by %.2f m for the robot)", r.min_y, r.max_y, margin);
+    }
+  }
+  for (std::size_t i = 0; i < world.circles.size(); ++i) {
+    const auto& c = world.circles[i];
+    if (std::hypot(x - c.center.x, y - c.center.y) < c.radius + margin) {
+      return format("goal (%.2f, %.2f) is inside furniture (circle %.0f at (%g, %g)", x, y,
+                    static_cast<double>(i), c.center.x, c.center.y) +
+             format(" of radius %g, grown by %.2f m for the robot)", c.radius, margin);
+    }
+  }
+  if (x < margin || x > world.width - margin || y < margin || y > world.height - margin) {
+    return format("goal (%.2f, %.2f) is too close to a wall (the robot needs %.2f m)", x, y,
+                  margin);
+  }
+  return "";
+}
+
+PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
+                              std::uint32_t seed, double clearance) {
+  const planning::PlannerOptions options = behavior::defaultNavPlannerOptions();
+  PlanPath::Request request;
+  request.scenario = "room";
+  request.start.x = start.x;
+  request.start.y = start.y;
+  request.goal.x = goal.x;
+  request.goal.y = goal.y;
+  request.step = options.step;
+  request.max_iterations = options.max_iterations;
+  request.goal_tolerance = options.goal_tolerance;
+  request.seed = seed == 0 ? 1 : seed;  // 0 would mean the node's ~seed
+  request.algorithm = "rrt_connect";
+  request.collision_check = "segments";
+  request.smooth = options.smooth;
+  request.clearance = clearance;
+  return request;
+}
+
+behavior::PlanReply toPlanReply(const PlanPath::Response& response) {
+  behavior::PlanReply reply;
+  reply.success = response.success;
+  reply.message = response.message;
+  reply.planning_ms = response.planning_time * 1e3;
+  if (!response.success) return reply;
+  reply.path.reserve(response.path.poses.size());
+  for (const auto& pose : response.path.poses) {
+    reply.path.push_back({pose.pose.position.x, pose.pose.position.y});
+  }
+  return reply;
+}
+
+}  // namespace roomba_rrt::nav_node

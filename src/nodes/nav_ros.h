@@ -1,0 +1,45 @@
+// Conversions between the navigation interface of roomba_bt (move_base's action and topics, the
+// ~plan_path service) and the ROS-free navigation core (NavBt): goal checks with messages naming
+// the field, poses, plans. Pure functions, unit-tested without a master
+// (test/behavior/nav_ros_test).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <roomba_rrt/PlanPath.h>
+
+#include "roomba_rrt/behavior/path_planner.h"
+#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/sim/world.h"
+
+namespace roomba_rrt::nav_node {
+
+/// "" when the pose can be a goal, else the reason naming the field ("target_pose.pose.position.x:
+/// not finite", "target_pose.pose.orientation: not a rotation (zero quaternion)").
+std::string poseProblem(const geometry_msgs::Pose& pose);
+
+/// The pose in the plane (x, y, yaw); `pose` must pass poseProblem().
+sim::Pose2D toPose2D(const geometry_msgs::Pose& pose);
+
+/// The planar pose as a message (z = 0, rotation about z).
+geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::string& frame_id,
+                                         const ros::Time& stamp);
+
+/// "" when the robot's disc (radius + clearance) fits at (x, y) in the room; else why not, as a
+/// move_base client is told: "goal (7.00, 1.00) is outside the room [0, 6.4] x [0, 4.8]",
+/// "goal (0.80, 0.30) is inside furniture (rectangle 0: [0, 1.6] x [0, 0.6], grown by 0.22 m for
+/// the robot)", "goal ... is too close to a wall ...".
+std::string goalPlaceProblem(const sim::World& world, double clearance, double x, double y);
+
+/// The ~plan_path request for a navigation plan in the service's room scenario: RRT-Connect,
+/// exact segment checks, smoothed (behavior::defaultNavPlannerOptions()), the world's robot.
+PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
+                              std::uint32_t seed, double clearance);
+
+/// The service's answer as the navigation core's plan reply.
+behavior::PlanReply toPlanReply(const PlanPath::Response& response);
+
+}  // namespace roomba_rrt::nav_node

@@ -1,0 +1,255 @@
+// roomba_bt with the navigation tree through a real master: roomba_sim in the furnished room
+// (config/roomba_world_furnished.yaml, simulated time faster than real time), rrt_planner on the
+// same world behind ComputePath (the node's default ~planner "service").
+//
+// NavGoalTopic (nav_goal.test): a PoseStamped on /move_base_simple/goal, as rviz's 2D Nav Goal
+// sends it, to a point behind the bench (between the bench and the wall: 6 cm of room for the
+// robot's centre) gets the robot there within tolerance, the bumper never pressed.
+//
+// NavAction (nav_action.test): move_base's action: SUCCEEDED at the goal; a goal inside the sofa
+// ABORTED at once with a message naming it, the robot standing still; a goal in an unknown frame
+// or with NaN refused with a message; a second goal preempts the first; a cancel stops the robot
+// within 0.1 s of robot time.
+#include <actionlib/client/simple_action_client.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <gtest/gtest.h>
+#include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/Odometry.h>
+#include <roomba_rrt/Bumper.h>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace {
+
+using Client = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
+using actionlib::SimpleClientGoalState;
+
+constexpr double kXyTolerance = 0.05;  // the follower's default, m
+constexpr double kWallTimeout = 40.0;  // s of wall time per goal (a loaded 2-core machine)
+
+/// What the simulator says about the robot.
+class Robot {
+ public:
+  Robot() {
+    ros::NodeHandle nh;
+    odom_sub_ = nh.subscribe("/odom", 100, &Robot::onOdom, this);
+    bumper_sub_ = nh.subscribe("/bumper", 100, &Robot::onBumper, this);
+    state_sub_ = nh.subscribe("/roomba_bt/state", 10, &Robot::onState, this);
+  }
+  std::string state() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return state_;
+  }
+  struct Sample {
+    double x = std::numeric_limits<double>::quiet_NaN(), y = x, v = 0, w = 0;
+    ros::Time stamp;
+  };
+  Sample latest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return latest_;
+  }
+  bool everPressed() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return pressed_;
+  }
+  /// Robot time of the first /odom at or after `since` that shows the robot stopped (v = w = 0).
+  ros::Time stoppedSince(const ros::Time& since) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return since <= stopped_since_ ? stopped_since_ : ros::Time();
+  }
+  void watchStop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopped_since_ = ros::Time();
+  }
+
+ private:
+  void onOdom(const nav_msgs::Odometry& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    latest_ = {msg.pose.pose.position.x, msg.pose.pose.position.y, msg.twist.twist.linear.x,
+               msg.twist.twist.angular.z, msg.header.stamp};
+    const bool stopped = latest_.v == 0 && latest_.w == 0;
+    if (!stopped) stopped_since_ = ros::Time();
+    if (stopped && stopped_since_.isZero()) stopped_since_ = msg.header.stamp;
+  }
+  void onState(const std_msgs::String& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    state_ = msg.data;
+  }
+  void onBumper(const roomba_rrt::Bumper& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pressed_ = pressed_ || msg.pressed;
+  }
+
+  mutable std::mutex mutex_;
+  Sample latest_;
+  bool pressed_ = false;
+  ros::Time stopped_since_;
+  std::string state_;
+  ros::Subscriber odom_sub_, bumper_sub_, state_sub_;
+};
+
+/// Waits (wall time) until `done` or the timeout; true when done.
+bool waitFor(const std::function<bool()>& done, double wall_seconds) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wall_seconds);
+  while (ros::ok() && ros::WallTime::now() < deadline) {
+    if (done()) return true;
+    ros::WallDuration(0.005).sleep();
+  }
+  return done();
+}
+
+move_base_msgs::MoveBaseGoal goalAt(double x, double y, double yaw = 0,
+                                    const std::string& frame = "map") {
+  move_base_msgs::MoveBaseGoal goal;
+  goal.target_pose.header.frame_id = frame;
+  goal.target_pose.pose.position.x = x;
+  goal.target_pose.pose.position.y = y;
+  goal.target_pose.pose.orientation.z = std::sin(0.5 * yaw);
+  goal.target_pose.pose.orientation.w = std::cos(0.5 * yaw);
+  return goal;
+}
+
+double distanceTo(const Robot& robot, double x, double y) {
+  const Robot::Sample s = robot.latest();
+  return std::hypot(s.x - x, s.y - y);
+}
+
+/// The simulator runs, the action server is up.
+class Nav : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    spinner_ = std::make_unique<ros::AsyncSpinner>(1);
+    spinner_->start();
+  }
+  void SetUp() override {
+    ASSERT_TRUE(waitFor([&] { return !std::isnan(robot_.latest().x); }, 30.0)) << "no /odom";
+    client_ = std::make_unique<Client>("move_base", true);
+    ASSERT_TRUE(client_->waitForServer(ros::Duration(30.0))) << "no move_base action server";
+  }
+  /// Sends a goal and waits (wall time) for its end.
+  SimpleClientGoalState run(Client& client, const move_base_msgs::MoveBaseGoal& goal) {
+    client.sendGoal(goal);
+    waitFor([&] { return client.getState().isDone(); }, kWallTimeout);
+    return client.getState();
+  }
+
+  static std::unique_ptr<ros::AsyncSpinner> spinner_;
+  Robot robot_;
+  std::unique_ptr<Client> client_;
+};
+std::unique_ptr<ros::AsyncSpinner> Nav::spinner_;
+
+TEST_F(Nav, nav_goal_behind_the_bench_is_reached_without_a_bump) {
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/move_base_simple/goal", 1);
+  ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+  geometry_msgs::PoseStamped goal = goalAt(3.0, 4.55, M_PI).target_pose;
+  goal.header.stamp = ros::Time::now();
+  const ros::Time start = ros::Time::now();
+  pub.publish(goal);
+  // Arrived: within tolerance and stopped (the follower turns to the heading, then stops).
+  const bool arrived = waitFor(
+      [&] {
+        const Robot::Sample s = robot_.latest();
+        return std::hypot(s.x - 3.0, s.y - 4.55) < kXyTolerance + 0.01 && s.v == 0 && s.w == 0 &&
+               (s.stamp - start).toSec() > 1.0;
+      },
+      kWallTimeout);
+  const Robot::Sample s = robot_.latest();
+  EXPECT_TRUE(arrived) << "the robot is at (" << s.x << ", " << s.y << ") after "
+                       << (s.stamp - start).toSec() << " s of robot time";
+  EXPECT_FALSE(robot_.everPressed()) << "the bumper was pressed on the way";
+  std::printf("behind the bench: (%.3f, %.3f) after %.1f s of robot time\n", s.x, s.y,
+              (s.stamp - start).toSec());
+}
+
+TEST_F(Nav, action_goal_succeeds_at_the_goal) {
+  const SimpleClientGoalState state = run(*client_, goalAt(1.2, 2.0, M_PI_2));
+  EXPECT_EQ(state, SimpleClientGoalState::SUCCEEDED) << state.getText();
+  EXPECT_LT(distanceTo(robot_, 1.2, 2.0), kXyTolerance + 0.01);
+  EXPECT_FALSE(robot_.everPressed());
+  // ~state: the robot at its goal is Idle, not the last leaf.
+  EXPECT_TRUE(waitFor([&] { return robot_.state() == "Idle"; }, 5.0)) << robot_.state();
+}
+
+TEST_F(Nav, goal_inside_the_sofa_is_aborted_with_a_message_and_the_robot_stays_still) {
+  const Robot::Sample before = robot_.latest();
+  const SimpleClientGoalState state = run(*client_, goalAt(0.8, 0.3));
+  EXPECT_EQ(state, SimpleClientGoalState::ABORTED);
+  EXPECT_NE(state.getText().find("inside furniture"), std::string::npos) << state.getText();
+  ros::WallDuration(0.5).sleep();
+  const Robot::Sample after = robot_.latest();
+  EXPECT_LT(std::hypot(after.x - before.x, after.y - before.y), 1e-3);
+  EXPECT_EQ(after.v, 0.0);
+}
+
+TEST_F(Nav, nan_goal_and_unknown_frame_are_refused_with_a_message) {
+  SimpleClientGoalState state = run(*client_, goalAt(std::nan(""), 2.0));
+  EXPECT_EQ(state, SimpleClientGoalState::ABORTED);
+  EXPECT_NE(state.getText().find("position.x: not finite"), std::string::npos) << state.getText();
+  state = run(*client_, goalAt(2.0, 2.0, 0, "no_such_frame"));
+  EXPECT_EQ(state, SimpleClientGoalState::ABORTED);
+  EXPECT_NE(state.getText().find("no_such_frame"), std::string::npos) << state.getText();
+}
+
+TEST_F(Nav, goal_in_the_odom_frame_is_transformed) {
+  // roomba_sim's map -> odom is the identity: the same point, through tf2.
+  const SimpleClientGoalState state = run(*client_, goalAt(3.2, 2.4, 0, "odom"));
+  EXPECT_EQ(state, SimpleClientGoalState::SUCCEEDED) << state.getText();
+  EXPECT_LT(distanceTo(robot_, 3.2, 2.4), kXyTolerance + 0.01);
+}
+
+TEST_F(Nav, a_second_goal_preempts_the_first) {
+  Client second("move_base", true);
+  ASSERT_TRUE(second.waitForServer(ros::Duration(30.0)));
+  const Robot::Sample start = robot_.latest();
+  client_->sendGoal(goalAt(5.0, 2.4));
+  ASSERT_TRUE(waitFor([&] { return distanceTo(robot_, start.x, start.y) > 0.2; }, kWallTimeout))
+      << "the first goal did not get the robot moving";
+  const SimpleClientGoalState state = run(second, goalAt(2.0, 1.5));
+  EXPECT_EQ(client_->getState(), SimpleClientGoalState::PREEMPTED);
+  EXPECT_EQ(state, SimpleClientGoalState::SUCCEEDED) << state.getText();
+  EXPECT_LT(distanceTo(robot_, 2.0, 1.5), kXyTolerance + 0.01);
+}
+
+TEST_F(Nav, a_cancel_stops_the_robot_within_a_tenth_of_a_second) {
+  const Robot::Sample start = robot_.latest();
+  client_->sendGoal(goalAt(5.0, 2.4));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const Robot::Sample s = robot_.latest();
+        return std::hypot(s.x - start.x, s.y - start.y) > 0.3 && s.v > 0.1;
+      },
+      kWallTimeout))
+      << "the goal did not get the robot driving";
+  robot_.watchStop();
+  const ros::Time canceled = ros::Time::now();
+  client_->cancelGoal();
+  ASSERT_TRUE(waitFor([&] { return client_->getState().isDone(); }, 10.0));
+  EXPECT_EQ(client_->getState(), SimpleClientGoalState::PREEMPTED);
+  ros::Time stopped;
+  ASSERT_TRUE(waitFor([&] { return !(stopped = robot_.stoppedSince(canceled)).isZero(); }, 5.0))
+      << "the robot did not stop";
+  EXPECT_LE((stopped - canceled).toSec(), 0.1);
+  std::printf("cancel: stopped %.3f s of robot time after the cancel\n",
+              (stopped - canceled).toSec());
+  // And stays stopped.
+  ros::WallDuration(0.3).sleep();
+  EXPECT_EQ(robot_.latest().v, 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "nav_rostest");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
