@@ -6,6 +6,8 @@ add_library(roomba_sim_core
   src/sim/coverage_grid.cpp
   src/sim/world.cpp
   src/sim/simulator.cpp
+  src/sim/robot_grid.cpp
+  src/sim/multi_robot_simulator.cpp
 )
 target_include_directories(roomba_sim_core PUBLIC include)
 target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
@@ -29,6 +31,7 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/coverage_grid_test.cpp
     test/sim/world_test.cpp
     test/sim/simulator_test.cpp
+    test/sim/multi_robot_simulator_test.cpp
   )
   if(TARGET sim_core_test)
     target_link_libraries(sim_core_test roomba_sim_core gtest_main)
