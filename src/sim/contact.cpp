@@ -77,25 +77,9 @@ inline void closeSwitches(BumperState& bumper, double cos_t, double sin_t, doubl
   bumper.right = bumper.right || lateral <= kHeadOnLateral;
 }
 
-}  // namespace
-
-bool penetrates(const World& world, double x, double y) {
-  return penetrates(world, world.robot_radius, x, y);
-}
-
-bool resolvePenetration(const World& world, double& x, double& y) {
-  return resolvePenetration(world, world.robot_radius, x, y);
-}
-
-BumperState senseBumper(const World& world, const Pose2D& pose) {
-  return senseBumper(world, world.robot_radius, pose);
-}
-
-void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny) {
-  closeSwitches(bumper, std::cos(pose.theta), std::sin(pose.theta), nx, ny);
-}
-
-bool penetrates(const World& world, const double radius, double x, double y) {
+// The public functions call these from inside the library, where they can be inlined (the
+// library is shared: a call to an exported function would go through the PLT).
+bool penetratesDisc(const World& world, const double radius, double x, double y) {
   const double r = radius - kPenetrationTolerance;
   if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
   const geometry::Point2 p{x, y};
@@ -109,14 +93,14 @@ bool penetrates(const World& world, const double radius, double x, double y) {
   return false;
 }
 
-bool resolvePenetration(const World& world, const double radius, double& x, double& y) {
+bool resolveDisc(const World& world, const double radius, double& x, double& y) {
   for (int pass = 0; pass < kMaxResolvePasses; ++pass) {
     if (!pushOutOnce(world, radius, x, y)) return true;
   }
-  return !penetrates(world, radius, x, y);
+  return !penetratesDisc(world, radius, x, y);
 }
 
-BumperState senseBumper(const World& world, const double radius, const Pose2D& pose) {
+BumperState senseDisc(const World& world, const double radius, const Pose2D& pose) {
   const double r = radius + kContactTolerance;
   BumperState bumper;
   double cos_t = 0, sin_t = 0;  // of the heading, computed on the first contact only
@@ -142,6 +126,36 @@ BumperState senseBumper(const World& world, const double radius, const Pose2D& p
     if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
   }
   return bumper;
+}
+
+}  // namespace
+
+bool penetrates(const World& world, double x, double y) {
+  return penetratesDisc(world, world.robot_radius, x, y);
+}
+
+bool resolvePenetration(const World& world, double& x, double& y) {
+  return resolveDisc(world, world.robot_radius, x, y);
+}
+
+BumperState senseBumper(const World& world, const Pose2D& pose) {
+  return senseDisc(world, world.robot_radius, pose);
+}
+
+bool penetrates(const World& world, double radius, double x, double y) {
+  return penetratesDisc(world, radius, x, y);
+}
+
+bool resolvePenetration(const World& world, double radius, double& x, double& y) {
+  return resolveDisc(world, radius, x, y);
+}
+
+BumperState senseBumper(const World& world, double radius, const Pose2D& pose) {
+  return senseDisc(world, radius, pose);
+}
+
+void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny) {
+  closeSwitches(bumper, std::cos(pose.theta), std::sin(pose.theta), nx, ny);
 }
 
 }  // namespace roomba_rrt::sim

@@ -178,4 +178,31 @@ void MultiRobotSimulator::reset() {
   }
 }
 
+std::vector<RobotSpec> spreadRobots(const World& world, int n) {
+  if (n < 1 || static_cast<std::size_t>(n) > kMaxRobots) {
+    throw std::invalid_argument("spreadRobots: the number of robots must be in [1, " +
+                                std::to_string(kMaxRobots) + "], got " + std::to_string(n));
+  }
+  const double r = world.robot_radius;
+  for (int cells = n; cells <= 64 * n; ++cells) {
+    const int rows =
+        std::max(1, static_cast<int>(std::lround(std::sqrt(cells * world.height / world.width))));
+    const int columns = (cells + rows - 1) / rows;
+    const double w = world.width / columns, h = world.height / rows;
+    if (std::min(w, h) < 2 * r) break;  // neighbours would overlap
+    std::vector<RobotSpec> robots;
+    for (int row = 0; row < rows && static_cast<int>(robots.size()) < n; ++row) {
+      for (int column = 0; column < columns && static_cast<int>(robots.size()) < n; ++column) {
+        const double x = (column + 0.5) * w, y = (row + 0.5) * h;
+        if (penetrates(world, r, x, y)) continue;
+        robots.push_back(RobotSpec{"robot" + std::to_string(robots.size() + 1), Pose2D{x, y, 0.0},
+                                   r, world.max_linear_speed, world.max_angular_speed});
+      }
+    }
+    if (static_cast<int>(robots.size()) == n) return robots;
+  }
+  throw std::invalid_argument("spreadRobots: " + std::to_string(n) +
+                              " robots do not fit in the room");
+}
+
 }  // namespace roomba_rrt::sim

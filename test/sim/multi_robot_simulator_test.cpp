@@ -28,20 +28,6 @@ Velocity randomCommand(std::mt19937& rng) {
   return {v(rng), w(rng)};
 }
 
-/// n robots on a grid of free places in `world`.
-World withRobots(World world, int n) {
-  for (double y = 0.4; y < world.height - 0.3 && static_cast<int>(world.robots.size()) < n;
-       y += 0.45) {
-    for (double x = 0.4; x < world.width - 0.3 && static_cast<int>(world.robots.size()) < n;
-         x += 0.45) {
-      if (penetrates(world, x, y)) continue;
-      world.robots.push_back(
-          RobotSpec{"r" + std::to_string(world.robots.size()), Pose2D{x, y, x + y}});
-    }
-  }
-  return world;
-}
-
 }  // namespace
 
 TEST(MultiRobotSimulator, one_unnamed_robot_is_bit_identical_to_the_simulator) {
@@ -107,7 +93,8 @@ TEST(MultiRobotSimulator, a_robot_hit_on_its_right_side_presses_only_its_right_s
 }
 
 TEST(MultiRobotSimulator, ten_robots_never_overlap_over_1e5_random_commands) {
-  const World world = withRobots(furnishedWorld(), 10);
+  World world = furnishedWorld();
+  world.robots = spreadRobots(world, 10);
   MultiRobotSimulator sim(world);
   ASSERT_EQ(sim.size(), 10u);
   std::mt19937 rng(11);
@@ -158,4 +145,23 @@ TEST(MultiRobotSimulator, reset_set_pose_and_bad_command_lists) {
   EXPECT_EQ(sim.pose(0).x, 1.0);
   EXPECT_EQ(sim.steps(), 0);
   EXPECT_EQ(sim.spec(1).name, "robot2");
+}
+
+TEST(SpreadRobots, one_robot_stands_at_the_labs_room_centre_two_in_the_halves) {
+  const World world;
+  const auto one = spreadRobots(world, 1);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].initial_pose.x, 3.2);
+  EXPECT_EQ(one[0].initial_pose.y, 2.4);
+  const auto two = spreadRobots(world, 2);
+  EXPECT_EQ(two[0].initial_pose.x, 1.6);
+  EXPECT_DOUBLE_EQ(two[1].initial_pose.x, 4.8);
+  EXPECT_EQ(two[1].name, "robot2");
+}
+
+TEST(SpreadRobots, a_hundred_fit_in_the_furnished_room_and_too_many_are_refused) {
+  World world = furnishedWorld();
+  world.robots = spreadRobots(world, 100);
+  EXPECT_NO_THROW(MultiRobotSimulator{world});
+  EXPECT_THROW(spreadRobots(world, 400), std::invalid_argument);
 }
