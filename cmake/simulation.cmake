@@ -63,6 +63,12 @@ if(CATKIN_ENABLE_TESTING)
   if(TARGET sim_rviz_screenshot_test)
     target_link_libraries(sim_rviz_screenshot_test roomba_screen_capture)
   endif()
+  # Issue 13: two named robots, each driven by its own roomba_fsm under its namespace.
+  roomba_sim_rostest(sim_two_robots_test test/sim/sim_two_robots.test
+    test/sim/sim_two_robots_test.cpp)
+  if(TARGET sim_two_robots_test)
+    add_dependencies(sim_two_robots_test roomba_fsm)
+  endif()
 endif()
 
 # Google Benchmark (libbenchmark-dev): core steps per second. Built only when it is installed.
