@@ -32,6 +32,7 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/world_test.cpp
     test/sim/simulator_test.cpp
     test/sim/multi_robot_simulator_test.cpp
+    test/sim/robot_grid_test.cpp
   )
   if(TARGET sim_core_test)
     target_link_libraries(sim_core_test roomba_sim_core gtest_main)
