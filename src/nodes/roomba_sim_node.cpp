@@ -137,6 +137,8 @@ class RoombaSimNode {
       RobotIo& io = robots_[i];
       const std::string& name = sim_.spec(i).name;
       io.prefix = name.empty() ? "" : name + "/";  // topics and frames of a named robot
+      io.odom_frame = io.prefix + "odom";
+      io.base_frame = io.prefix + "base_link";
       // Deep queues: at real_time_factor 50 these go out 3000 times per second, and a subscriber
       // that is descheduled for a moment must not lose any.
       io.odom_pub = nh_.advertise<nav_msgs::Odometry>(io.prefix + "odom", kStateQueue);
@@ -258,8 +260,8 @@ class RoombaSimNode {
     const sim::BumperState& bumper = sim_.bumper(i);
     nav_msgs::Odometry odom;
     odom.header.stamp = stamp;
-    odom.header.frame_id = io.prefix + "odom";
-    odom.child_frame_id = io.prefix + "base_link";
+    odom.header.frame_id = io.odom_frame;
+    odom.child_frame_id = io.base_frame;
     odom.pose.pose.position.x = pose.x;
     odom.pose.pose.position.y = pose.y;
     odom.pose.pose.orientation = yawToQuaternion(pose.theta);
@@ -427,7 +429,8 @@ class RoombaSimNode {
 
   /// One robot's topics, latest command and trail.
   struct RobotIo {
-    std::string prefix;  ///< "" for the unnamed robot, "<name>/" for a named one
+    std::string prefix;                  ///< "" for the unnamed robot, "<name>/" for a named one
+    std::string odom_frame, base_frame;  ///< odom and base_link, or <name>/odom, <name>/base_link
     ros::Publisher odom_pub, bumper_pub, coverage_pub;
     ros::Subscriber cmd_sub;
     sim::Velocity command;
