@@ -4,10 +4,13 @@
 // in place), held for a random number of steps, so the robot keeps hitting walls and furniture.
 #include <benchmark/benchmark.h>
 
+#include <time.h>
+
 #include <random>
 #include <vector>
 
 #include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/unicycle.h"
 
@@ -60,6 +63,49 @@ void BM_HourOfRobotTime(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_HourOfRobotTime)->Unit(benchmark::kMillisecond);
+
+/// Issue 13: n robots in the furnished room (spreadRobots), each on the command tape at its own
+/// offset, so they keep meeting walls, furniture and each other. items/s counts robot-steps;
+/// `per_robot_vs_one` is the time per robot-step over the time of one Simulator step measured
+/// the same way in the same world (target: ≤ 2 at 100 robots).
+/// CPU seconds of this thread (other processes on the machine do not count).
+double threadSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+double secondsPerSimulatorStep(const World& world, const std::vector<Velocity>& tape) {
+  Simulator sim(world);
+  const double begin = threadSeconds();
+  const std::size_t steps = 1u << 20;
+  for (std::size_t i = 0; i < steps; ++i) sim.step(tape[i & (tape.size() - 1)]);
+  benchmark::DoNotOptimize(sim.pose());
+  return (threadSeconds() - begin) / steps;
+}
+
+void BM_StepRobotsFurnishedRoom(benchmark::State& state) {
+  World world = furnishedRoom();
+  const int n = static_cast<int>(state.range(0));
+  world.robots = spreadRobots(world, n);
+  MultiRobotSimulator sim(world);
+  const std::vector<Velocity> tape = commandTape();
+  std::vector<Velocity> commands(n);
+  std::size_t i = 0;
+  const double begin = threadSeconds();
+  for (auto _ : state) {
+    for (int r = 0; r < n; ++r) commands[r] = tape[(i + 4099 * r) & (tape.size() - 1)];
+    sim.step(commands);
+    ++i;
+  }
+  const double per_step = (threadSeconds() - begin) / i;
+  state.SetItemsProcessed(state.iterations() * n);
+  state.counters["steps/s"] = 1.0 / per_step;
+  state.counters["per_robot_vs_one"] =
+      per_step / n / secondsPerSimulatorStep(furnishedRoom(), tape);
+  state.counters["union_coverage"] = sim.unionCoverage();
+}
+BENCHMARK(BM_StepRobotsFurnishedRoom)->Arg(1)->Arg(10)->Arg(100);
 
 // The parts of a step, for finding where the time goes.
 void BM_IntegrateArc(benchmark::State& state) {

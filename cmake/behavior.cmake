@@ -71,6 +71,8 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(roomba_coverage_test test/behavior/roomba_coverage_test.cpp)
   if(TARGET roomba_coverage_test)
     target_link_libraries(roomba_coverage_test gtest_main)
+    target_compile_definitions(roomba_coverage_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
     add_dependencies(roomba_coverage_test roomba_coverage)
   endif()
 

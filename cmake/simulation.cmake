@@ -6,6 +6,8 @@ add_library(roomba_sim_core
   src/sim/coverage_grid.cpp
   src/sim/world.cpp
   src/sim/simulator.cpp
+  src/sim/robot_grid.cpp
+  src/sim/multi_robot_simulator.cpp
 )
 target_include_directories(roomba_sim_core PUBLIC include)
 target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
@@ -29,6 +31,8 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/coverage_grid_test.cpp
     test/sim/world_test.cpp
     test/sim/simulator_test.cpp
+    test/sim/multi_robot_simulator_test.cpp
+    test/sim/robot_grid_test.cpp
   )
   if(TARGET sim_core_test)
     target_link_libraries(sim_core_test roomba_sim_core gtest_main)
@@ -70,6 +74,12 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/sim_rviz_screenshot_test.cpp)
   if(TARGET sim_rviz_screenshot_test)
     target_link_libraries(sim_rviz_screenshot_test roomba_screen_capture)
+  endif()
+  # Issue 13: two named robots, each driven by its own roomba_fsm under its namespace.
+  roomba_sim_rostest(sim_two_robots_test test/sim/sim_two_robots.test
+    test/sim/sim_two_robots_test.cpp)
+  if(TARGET sim_two_robots_test)
+    add_dependencies(sim_two_robots_test roomba_fsm)
   endif()
 endif()
 

@@ -16,6 +16,14 @@
 namespace roomba_rrt::nodes {
 namespace {
 
+/// The robot's body frame by default: base_link, or <ns>/base_link in a namespace (roomba_sim's
+/// frames for a named robot), so `rosrun roomba_rrt roomba_fsm __ns:=robot1` needs no parameter.
+std::string defaultBaseFrame() {
+  std::string ns = ros::this_node::getNamespace();
+  while (!ns.empty() && ns.front() == '/') ns.erase(0, 1);
+  return ns.empty() ? "base_link" : ns + "/base_link";
+}
+
 /// The node: one behaviour, its inputs and outputs.
 class BehaviorNode {
  public:
@@ -25,7 +33,8 @@ class BehaviorNode {
       : behavior_(std::move(behavior)),
         period_(1.0 / rate),
         max_catch_up_(std::max(1, static_cast<int>(rate))),
-        bumper_timeout_(bumper_timeout) {
+        bumper_timeout_(bumper_timeout),
+        base_frame_(pnh.param<std::string>("base_frame", defaultBaseFrame())) {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     state_pub_ = pnh.advertise<std_msgs::String>("state", 10, /*latch=*/true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
@@ -96,7 +105,7 @@ class BehaviorNode {
     state_pub_.publish(msg);
 
     visualization_msgs::Marker marker;
-    marker.header.frame_id = "base_link";
+    marker.header.frame_id = base_frame_;
     marker.header.stamp = ros::Time(0);  // the robot's latest transform...
     marker.frame_locked = true;          // ...every frame, so the text follows the robot
     marker.ns = ros::this_node::getName();
@@ -116,6 +125,7 @@ class BehaviorNode {
   ros::Duration period_;
   int max_catch_up_;  ///< at most one second of ticks per timer event
   double bumper_timeout_;
+  std::string base_frame_;  ///< ~base_frame: the frame the state text hangs on
   ros::Publisher cmd_pub_, state_pub_, marker_pub_;
   ros::Subscriber bumper_sub_, odom_sub_;
   ros::Timer timer_;

@@ -1,10 +1,13 @@
-// roomba_sim: the simulated Roomba as a ROS node — a thin adapter around
-// roomba_rrt::sim::Simulator.
+// roomba_sim: the simulated Roombas as a ROS node — a thin adapter around
+// roomba_rrt::sim::MultiRobotSimulator.
 //
-// Subscribes /cmd_vel; publishes /odom, /bumper, tf odom→base_link (+ static map→odom, the
-// identity: odometry is perfect and in room coordinates), /clock when /use_sim_time is true,
-// ~markers, ~coverage, ~coverage_map; service ~reset. Parameters: see README.md, "The simulated
-// Roomba".
+// One unnamed robot (today's world files): subscribes /cmd_vel; publishes /odom, /bumper, tf
+// odom→base_link (+ static map→odom, the identity: odometry is perfect and in room coordinates).
+// Named robots (`robots:` in the world file): the same per robot under its name — /<name>/cmd_vel,
+// /<name>/odom, /<name>/bumper, tf <name>/odom→<name>/base_link, static map→<name>/odom,
+// ~<name>/coverage — each with its own command timeout. Always one /clock (when /use_sim_time is
+// true), ~markers (every robot, with its name), ~coverage and ~coverage_map (the union); service
+// ~reset. Parameters: see README.md, "The simulated Roomba".
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -29,7 +32,7 @@
 #include <vector>
 
 #include "master_watch.h"
-#include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/world.h"
 
 namespace roomba_rrt {
@@ -75,6 +78,9 @@ World loadWorldParameters(const ros::NodeHandle& pnh) {
     if (pnh.hasParam(name) && !pnh.getParam(name, *value)) {
       throw std::invalid_argument(std::string("~") + name + " must be a number");
     }
+  }
+  if (!world.robots.empty() && pnh.hasParam("initial_pose")) {
+    throw std::invalid_argument("~initial_pose cannot be used with the world file's robots");
   }
   sim::validate(world);
   return world;
@@ -124,22 +130,35 @@ visualization_msgs::Marker makeBox(const std::string& ns, int id, double x0, dou
 class RoombaSimNode {
  public:
   RoombaSimNode(const World& world, bool use_sim_time)
-      : pnh_("~"), sim_(world), use_sim_time_(use_sim_time) {
-    // Deep queues: at real_time_factor 50 these go out 3000 times per second, and a subscriber
-    // that is descheduled for a moment must not lose any.
-    odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", kStateQueue);
-    bumper_pub_ = nh_.advertise<roomba_rrt::Bumper>("bumper", kStateQueue);
+      : pnh_("~"), sim_(world), use_sim_time_(use_sim_time), robots_(sim_.size()) {
     if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("clock", 10);
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     coverage_pub_ = pnh_.advertise<std_msgs::Float32>("coverage", 1, true);
     coverage_map_pub_ = pnh_.advertise<nav_msgs::OccupancyGrid>("coverage_map", 1, true);
-    cmd_sub_ = nh_.subscribe("cmd_vel", 10, &RoombaSimNode::onCommand, this,
-                             ros::TransportHints().tcpNoDelay());
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      RobotIo& io = robots_[i];
+      const std::string& name = sim_.spec(i).name;
+      io.prefix = name.empty() ? "" : name + "/";  // topics and frames of a named robot
+      io.odom_frame = io.prefix + "odom";
+      io.base_frame = io.prefix + "base_link";
+      // Deep queues: at real_time_factor 50 these go out 3000 times per second, and a subscriber
+      // that is descheduled for a moment must not lose any.
+      io.odom_pub = nh_.advertise<nav_msgs::Odometry>(io.prefix + "odom", kStateQueue);
+      io.bumper_pub = nh_.advertise<roomba_rrt::Bumper>(io.prefix + "bumper", kStateQueue);
+      if (!name.empty()) {
+        io.coverage_pub = pnh_.advertise<std_msgs::Float32>(io.prefix + "coverage", 1, true);
+      }
+      io.cmd_sub = nh_.subscribe<geometry_msgs::Twist>(
+          io.prefix + "cmd_vel", 10,
+          [this, i](const geometry_msgs::Twist::ConstPtr& msg) { onCommand(i, *msg); },
+          ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+      io.trail = makeMarker("trail", static_cast<int>(i), visualization_msgs::Marker::LINE_STRIP,
+                            kTrailColour);
+      io.trail.scale.x = 0.02;  // line width, m
+    }
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
-    publishStaticTransform();
+    publishStaticTransforms();
     wall_markers_ = worldMarkers();
-    trail_ = makeMarker("trail", 0, visualization_msgs::Marker::LINE_STRIP, kTrailColour);
-    trail_.scale.x = 0.02;  // line width, m
   }
 
   /// The fixed-step loop: sense contact, publish the state, apply the latest command, keep pace
@@ -152,9 +171,10 @@ class RoombaSimNode {
     while (ros::ok()) {
       ros::spinOnce();
       const ros::Time now = currentTime();
-      const sim::BumperState bumper = sim_.senseContact();
-      publishState(now, bumper);
-      sim_.move(activeCommand(now));
+      sim_.senseContact();
+      publishState(now);
+      for (std::size_t i = 0; i < robots_.size(); ++i) commands_[i] = activeCommand(i, now);
+      sim_.move(commands_);
       ++steps_;
       publishSlowTopics(now);
 
@@ -186,81 +206,99 @@ class RoombaSimNode {
     return use_sim_time_ ? ros::Time(steps_ * sim_.world().step) : ros::Time::now();
   }
 
-  void onCommand(const geometry_msgs::Twist& msg) {
+  void onCommand(std::size_t robot, const geometry_msgs::Twist& msg) {
     if (!std::isfinite(msg.linear.x) || !std::isfinite(msg.angular.z)) {
       ROS_WARN_THROTTLE(1.0,
-                        "roomba_sim: rejecting /cmd_vel with a NaN or infinite component "
+                        "roomba_sim: rejecting /%scmd_vel with a NaN or infinite component "
                         "(linear.x=%g, angular.z=%g)",
-                        msg.linear.x, msg.angular.z);
+                        robots_[robot].prefix.c_str(), msg.linear.x, msg.angular.z);
       return;
     }
-    command_ = {msg.linear.x, msg.angular.z};  // clamped by the simulator
-    command_time_ = currentTime();
+    robots_[robot].command = {msg.linear.x, msg.angular.z};  // clamped by the simulator
+    robots_[robot].command_time = currentTime();
   }
 
-  /// The latest command, or a stop when it is older than command_timeout.
-  sim::Velocity activeCommand(const ros::Time& now) const {
-    if (!command_time_ || (now - *command_time_).toSec() > sim_.world().command_timeout) return {};
-    return command_;
+  /// Robot i's latest command, or a stop when it is older than command_timeout.
+  sim::Velocity activeCommand(std::size_t robot, const ros::Time& now) const {
+    const RobotIo& io = robots_[robot];
+    if (!io.command_time || (now - *io.command_time).toSec() > sim_.world().command_timeout) {
+      return {};
+    }
+    return io.command;
   }
 
   bool onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     sim_.reset();
-    command_ = {};
-    command_time_.reset();
-    trail_.points.clear();
+    for (RobotIo& io : robots_) {
+      io.command = {};
+      io.command_time.reset();
+      io.trail.points.clear();
+    }
     ROS_INFO("roomba_sim: reset to the initial pose, coverage cleared");
     return true;
   }
 
-  void publishStaticTransform() {
-    geometry_msgs::TransformStamped map_to_odom;
-    map_to_odom.header.stamp = ros::Time::now();
-    map_to_odom.header.frame_id = "map";
-    map_to_odom.child_frame_id = "odom";
-    map_to_odom.transform.rotation.w = 1.0;
-    static_tf_.sendTransform(map_to_odom);
+  /// map → odom (or map → <name>/odom for every named robot): the identity.
+  void publishStaticTransforms() {
+    std::vector<geometry_msgs::TransformStamped> transforms;
+    for (const RobotIo& io : robots_) {
+      geometry_msgs::TransformStamped map_to_odom;
+      map_to_odom.header.stamp = ros::Time::now();
+      map_to_odom.header.frame_id = "map";
+      map_to_odom.child_frame_id = io.prefix + "odom";
+      map_to_odom.transform.rotation.w = 1.0;
+      transforms.push_back(map_to_odom);
+    }
+    static_tf_.sendTransform(transforms);
   }
 
-  void publishState(const ros::Time& stamp, const sim::BumperState& bumper) {
-    const sim::Pose2D& pose = sim_.pose();
-    const sim::Velocity applied = sim_.lastCommand();
+  /// /clock, then every robot's odometry, bumper and odom → base_link (one tf message for all).
+  void publishState(const ros::Time& stamp) {
     if (use_sim_time_) {
       rosgraph_msgs::Clock clock;
       clock.clock = stamp;
       clock_pub_.publish(clock);
     }
+    transforms_.resize(robots_.size());
+    for (std::size_t i = 0; i < robots_.size(); ++i) publishRobotState(i, stamp, transforms_[i]);
+    tf_.sendTransform(transforms_);
+  }
+
+  void publishRobotState(std::size_t i, const ros::Time& stamp,
+                         geometry_msgs::TransformStamped& tf) {
+    const RobotIo& io = robots_[i];
+    const sim::Pose2D& pose = sim_.pose(i);
+    const sim::Velocity applied = sim_.lastCommand(i);
+    const sim::BumperState& bumper = sim_.bumper(i);
     nav_msgs::Odometry odom;
     odom.header.stamp = stamp;
-    odom.header.frame_id = "odom";
-    odom.child_frame_id = "base_link";
+    odom.header.frame_id = io.odom_frame;
+    odom.child_frame_id = io.base_frame;
     odom.pose.pose.position.x = pose.x;
     odom.pose.pose.position.y = pose.y;
     odom.pose.pose.orientation = yawToQuaternion(pose.theta);
     odom.twist.twist.linear.x = applied.v;
     odom.twist.twist.angular.z = applied.w;
-    odom_pub_.publish(odom);
+    io.odom_pub.publish(odom);
 
     roomba_rrt::Bumper bumper_msg;
     bumper_msg.header.stamp = stamp;
-    bumper_msg.header.frame_id = "base_link";
+    bumper_msg.header.frame_id = odom.child_frame_id;
     bumper_msg.pressed = bumper.pressed;
     bumper_msg.left = bumper.left;
     bumper_msg.right = bumper.right;
-    bumper_pub_.publish(bumper_msg);
+    io.bumper_pub.publish(bumper_msg);
 
-    geometry_msgs::TransformStamped tf;
     tf.header = odom.header;
-    tf.child_frame_id = "base_link";
+    tf.child_frame_id = odom.child_frame_id;
     tf.transform.translation.x = pose.x;
     tf.transform.translation.y = pose.y;
     tf.transform.rotation = odom.pose.pose.orientation;
-    tf_.sendTransform(tf);
   }
 
   /// Markers, coverage and the coverage map, a few times per wall-clock second.
   void publishSlowTopics(const ros::Time& stamp) {
-    extendTrail();
+    for (std::size_t i = 0; i < robots_.size(); ++i) extendTrail(i);
     const ros::WallTime wall = ros::WallTime::now();
     if ((wall - last_markers_).toSec() >= kMarkerPeriod) {
       last_markers_ = wall;
@@ -269,8 +307,13 @@ class RoombaSimNode {
     if ((wall - last_coverage_).toSec() >= kCoveragePeriod) {
       last_coverage_ = wall;
       std_msgs::Float32 coverage;
-      coverage.data = static_cast<float>(sim_.coverage());
+      coverage.data = static_cast<float>(sim_.unionCoverage());
       coverage_pub_.publish(coverage);
+      for (std::size_t i = 0; i < robots_.size(); ++i) {
+        if (!robots_[i].coverage_pub) continue;
+        coverage.data = static_cast<float>(sim_.coverage(i));
+        robots_[i].coverage_pub.publish(coverage);
+      }
     }
     if ((wall - last_coverage_map_).toSec() >= kCoverageMapPeriod) {
       last_coverage_map_ = wall;
@@ -278,20 +321,21 @@ class RoombaSimNode {
     }
   }
 
-  void extendTrail() {
-    const sim::Pose2D& pose = sim_.pose();
-    if (!trail_.points.empty()) {
-      const auto& last = trail_.points.back();
+  void extendTrail(std::size_t i) {
+    const sim::Pose2D& pose = sim_.pose(i);
+    std::vector<geometry_msgs::Point>& points = robots_[i].trail.points;
+    if (!points.empty()) {
+      const auto& last = points.back();
       if (std::hypot(pose.x - last.x, pose.y - last.y) < kTrailSpacing) return;
     }
-    if (trail_.points.size() >= kTrailLength) {
-      trail_.points.erase(trail_.points.begin(), trail_.points.begin() + kTrailLength / 2);
+    if (points.size() >= kTrailLength) {
+      points.erase(points.begin(), points.begin() + kTrailLength / 2);
     }
     geometry_msgs::Point p;
     p.x = pose.x;
     p.y = pose.y;
     p.z = 0.01;
-    trail_.points.push_back(p);
+    points.push_back(p);
   }
 
   /// Walls and furniture: they never change, built once.
@@ -323,14 +367,21 @@ class RoombaSimNode {
   }
 
   visualization_msgs::MarkerArray robotMarkers(const ros::Time& stamp) const {
-    using visualization_msgs::Marker;
-    const sim::Pose2D& pose = sim_.pose();
-    const double r = sim_.world().robot_radius;
     visualization_msgs::MarkerArray array;
     array.markers = wall_markers_;
+    for (std::size_t i = 0; i < robots_.size(); ++i) addRobotMarkers(i, array);
+    for (auto& m : array.markers) m.header.stamp = stamp;
+    return array;
+  }
 
-    const bool pressed = sim_.bumper().pressed;  // red while the bumper is pressed
-    auto robot = makeMarker("robot", 0, Marker::CYLINDER, pressed ? kPressedColour : kRobotColour);
+  /// Robot i's disc (red while its bumper is pressed), heading, trail and, when named, its name.
+  void addRobotMarkers(std::size_t i, visualization_msgs::MarkerArray& array) const {
+    using visualization_msgs::Marker;
+    const sim::Pose2D& pose = sim_.pose(i);
+    const double r = sim_.spec(i).radius;
+    const int id = static_cast<int>(i);
+    const bool pressed = sim_.bumper(i).pressed;
+    auto robot = makeMarker("robot", id, Marker::CYLINDER, pressed ? kPressedColour : kRobotColour);
     robot.pose.position.x = pose.x;
     robot.pose.position.y = pose.y;
     robot.pose.position.z = 0.5 * kRobotHeight;
@@ -338,7 +389,7 @@ class RoombaSimNode {
     robot.scale.z = kRobotHeight;
     array.markers.push_back(robot);
 
-    auto heading = makeMarker("heading", 0, Marker::ARROW, Rgb{1.0, 1.0, 1.0});
+    auto heading = makeMarker("heading", id, Marker::ARROW, Rgb{1.0, 1.0, 1.0});
     heading.pose.position.x = pose.x;
     heading.pose.position.y = pose.y;
     heading.pose.position.z = kRobotHeight + 0.01;
@@ -348,15 +399,22 @@ class RoombaSimNode {
     heading.scale.z = 0.04;
     array.markers.push_back(heading);
 
-    if (trail_.points.size() >= 2) array.markers.push_back(trail_);
-    for (auto& m : array.markers) m.header.stamp = stamp;
-    return array;
+    if (robots_[i].trail.points.size() >= 2) array.markers.push_back(robots_[i].trail);
+    if (!sim_.spec(i).name.empty()) {
+      auto name = makeMarker("names", id, Marker::TEXT_VIEW_FACING, Rgb{0.1, 0.1, 0.1});
+      name.text = sim_.spec(i).name;
+      name.pose.position.x = pose.x;
+      name.pose.position.y = pose.y;
+      name.pose.position.z = kRobotHeight + 0.15;
+      name.scale.z = 0.15;  // text height, m
+      array.markers.push_back(name);
+    }
   }
 
   /// Swept floor 0 (white in rviz's "map" colours), floor not yet swept −1 (unknown),
   /// furniture 100 (black).
   nav_msgs::OccupancyGrid coverageMap(const ros::Time& stamp) const {
-    const sim::CoverageGrid& grid = sim_.coverageGrid();
+    const sim::CoverageGrid grid = sim_.unionCoverageGrid();
     nav_msgs::OccupancyGrid map;
     map.header.stamp = stamp;
     map.header.frame_id = "map";
@@ -377,21 +435,30 @@ class RoombaSimNode {
 
   ros::NodeHandle nh_;
   ros::NodeHandle pnh_;
-  sim::Simulator sim_;
+  sim::MultiRobotSimulator sim_;
   const bool use_sim_time_;
   long steps_ = 0;  ///< steps since start (never reset: simulated time only moves forward)
 
-  sim::Velocity command_;
-  std::optional<ros::Time> command_time_;
+  /// One robot's topics, latest command and trail.
+  struct RobotIo {
+    std::string prefix;                  ///< "" for the unnamed robot, "<name>/" for a named one
+    std::string odom_frame, base_frame;  ///< odom and base_link, or <name>/odom, <name>/base_link
+    ros::Publisher odom_pub, bumper_pub, coverage_pub;
+    ros::Subscriber cmd_sub;
+    sim::Velocity command;
+    std::optional<ros::Time> command_time;
+    visualization_msgs::Marker trail;
+  };
+  std::vector<RobotIo> robots_;
+  std::vector<sim::Velocity> commands_ = std::vector<sim::Velocity>(robots_.size());
+  std::vector<geometry_msgs::TransformStamped> transforms_;
 
-  ros::Publisher odom_pub_, bumper_pub_, clock_pub_, markers_pub_, coverage_pub_, coverage_map_pub_;
-  ros::Subscriber cmd_sub_;
+  ros::Publisher clock_pub_, markers_pub_, coverage_pub_, coverage_map_pub_;
   ros::ServiceServer reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
 
   std::vector<visualization_msgs::Marker> wall_markers_;
-  visualization_msgs::Marker trail_;
   ros::WallTime last_markers_, last_coverage_, last_coverage_map_;
 };
 
@@ -415,8 +482,9 @@ int main(int argc, char** argv) {
   }
   roomba_rrt::nodes::MasterWatch master_watch;
   roomba_rrt::RoombaSimNode node(world, use_sim_time);
-  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %s", world.width, world.height,
-           world.circles.size() + world.rectangles.size(),
+  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s, %s", world.width,
+           world.height, world.circles.size() + world.rectangles.size(),
+           std::max<std::size_t>(1, world.robots.size()), world.robots.size() > 1 ? "s" : "",
            use_sim_time ? "publishing /clock" : "wall-clock time");
   node.run();
   return master_watch.exitCode();

@@ -15,8 +15,7 @@ const double kHeadOnLateral = std::sin(10.0 * M_PI / 180.0);
 constexpr int kMaxResolvePasses = 8;
 
 /// One pass over every surface; returns true when something was pushed.
-bool pushOutOnce(const World& world, double& x, double& y) {
-  const double r = world.robot_radius;
+bool pushOutOnce(const World& world, const double r, double& x, double& y) {
   bool pushed = false;
   // Walls: the normal is an axis, so pushing back is a clamp (exactly onto the wall).
   if (x < r || x > world.width - r) {
@@ -69,10 +68,19 @@ bool pushOutOnce(const World& world, double& x, double& y) {
   return pushed;
 }
 
-}  // namespace
+/// Closes the switches for a contact in direction (nx, ny) from a robot heading (cos_t, sin_t).
+inline void closeSwitches(BumperState& bumper, double cos_t, double sin_t, double nx, double ny) {
+  const double norm = std::hypot(nx, ny);
+  const double lateral = norm > 0 ? (-sin_t * nx + cos_t * ny) / norm : 0.0;  // sin(bearing)
+  bumper.pressed = true;
+  bumper.left = bumper.left || lateral >= -kHeadOnLateral;
+  bumper.right = bumper.right || lateral <= kHeadOnLateral;
+}
 
-bool penetrates(const World& world, double x, double y) {
-  const double r = world.robot_radius - kPenetrationTolerance;
+// The public functions call these from inside the library, where they can be inlined (the
+// library is shared: a call to an exported function would go through the PLT).
+bool penetratesDisc(const World& world, const double radius, double x, double y) {
+  const double r = radius - kPenetrationTolerance;
   if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
   const geometry::Point2 p{x, y};
   for (const Circle& c : world.circles) {
@@ -85,15 +93,15 @@ bool penetrates(const World& world, double x, double y) {
   return false;
 }
 
-bool resolvePenetration(const World& world, double& x, double& y) {
+bool resolveDisc(const World& world, const double radius, double& x, double& y) {
   for (int pass = 0; pass < kMaxResolvePasses; ++pass) {
-    if (!pushOutOnce(world, x, y)) return true;
+    if (!pushOutOnce(world, radius, x, y)) return true;
   }
-  return !penetrates(world, x, y);
+  return !penetratesDisc(world, radius, x, y);
 }
 
-BumperState senseBumper(const World& world, const Pose2D& pose) {
-  const double r = world.robot_radius + kContactTolerance;
+BumperState senseDisc(const World& world, const double radius, const Pose2D& pose) {
+  const double r = radius + kContactTolerance;
   BumperState bumper;
   double cos_t = 0, sin_t = 0;  // of the heading, computed on the first contact only
   // (nx, ny): direction from the robot's centre towards the contact, any length.
@@ -102,11 +110,7 @@ BumperState senseBumper(const World& world, const Pose2D& pose) {
       cos_t = std::cos(pose.theta);
       sin_t = std::sin(pose.theta);
     }
-    const double norm = std::hypot(nx, ny);
-    const double lateral = norm > 0 ? (-sin_t * nx + cos_t * ny) / norm : 0.0;  // sin(bearing)
-    bumper.pressed = true;
-    bumper.left = bumper.left || lateral >= -kHeadOnLateral;
-    bumper.right = bumper.right || lateral <= kHeadOnLateral;
+    closeSwitches(bumper, cos_t, sin_t, nx, ny);
   };
   const double x = pose.x, y = pose.y;
   if (x <= r) contact(-1, 0);
@@ -122,6 +126,36 @@ BumperState senseBumper(const World& world, const Pose2D& pose) {
     if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
   }
   return bumper;
+}
+
+}  // namespace
+
+bool penetrates(const World& world, double x, double y) {
+  return penetratesDisc(world, world.robot_radius, x, y);
+}
+
+bool resolvePenetration(const World& world, double& x, double& y) {
+  return resolveDisc(world, world.robot_radius, x, y);
+}
+
+BumperState senseBumper(const World& world, const Pose2D& pose) {
+  return senseDisc(world, world.robot_radius, pose);
+}
+
+bool penetrates(const World& world, double radius, double x, double y) {
+  return penetratesDisc(world, radius, x, y);
+}
+
+bool resolvePenetration(const World& world, double radius, double& x, double& y) {
+  return resolveDisc(world, radius, x, y);
+}
+
+BumperState senseBumper(const World& world, double radius, const Pose2D& pose) {
+  return senseDisc(world, radius, pose);
+}
+
+void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny) {
+  closeSwitches(bumper, std::cos(pose.theta), std::sin(pose.theta), nx, ny);
 }
 
 }  // namespace roomba_rrt::sim

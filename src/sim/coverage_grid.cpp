@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace roomba_rrt::sim {
 
@@ -100,6 +101,17 @@ void CoverageGrid::markRows(int first_row, int row_count, double cx, double cy, 
       swept_[row_start + word] |= fresh;
       swept_free_count_ += countBits(fresh & free_[row_start + word]);
     }
+  }
+}
+
+void CoverageGrid::merge(const CoverageGrid& other) {
+  if (other.swept_.size() != swept_.size() || other.columns_ != columns_) {
+    throw std::invalid_argument("CoverageGrid::merge: the grids belong to different worlds");
+  }
+  swept_free_count_ = 0;
+  for (std::size_t i = 0; i < swept_.size(); ++i) {
+    swept_[i] |= other.swept_[i];
+    swept_free_count_ += countBits(swept_[i] & free_[i]);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <initializer_list>
 #include <set>
@@ -142,12 +143,84 @@ World readWorld(const YAML::Node& root) {
     pose.read("theta", world.initial_pose.theta);
     pose.finish();
   }
+  {
+    // Named robots: pose each, radius and speed limits each or the shared `robot:` values.
+    const bool shared_pose = top.child("initial_pose") && !top.child("initial_pose").IsNull();
+    readList(top, "robots", world.robots, [&world](Section& s, RobotSpec& r) {
+      const YAML::Node name = s.child("name");
+      if (!name || !name.IsScalar()) fail(s.name("name"), "is required (a string)");
+      r.name = name.as<std::string>();
+      Section pose(s.child("initial_pose"), s.name("initial_pose"));
+      r.initial_pose = world.initial_pose;
+      pose.read("x", r.initial_pose.x);
+      pose.read("y", r.initial_pose.y);
+      pose.read("theta", r.initial_pose.theta);
+      pose.finish();
+      r.radius = world.robot_radius;
+      r.max_linear_speed = world.max_linear_speed;
+      r.max_angular_speed = world.max_angular_speed;
+      s.read("radius", r.radius);
+      s.read("max_linear_speed", r.max_linear_speed);
+      s.read("max_angular_speed", r.max_angular_speed);
+    });
+    if (shared_pose && !world.robots.empty()) {
+      fail("initial_pose", "cannot be used with robots: give each robot its own initial_pose");
+    }
+  }
   top.read("step", world.step);
   top.read("coverage_cell_size", world.coverage_cell_size);
   top.read("command_timeout", world.command_timeout);
   top.read("real_time_factor", world.real_time_factor);
   top.finish();
   return world;
+}
+
+/// A ROS graph name without slashes, so that it can be a namespace and a tf prefix.
+bool isRobotName(const std::string& name) {
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  for (const char c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  }
+  return true;
+}
+
+/// The named robots: names, sizes, speeds, poses inside the free floor, no two discs overlapping.
+void validateRobots(const World& world) {
+  const std::vector<RobotSpec>& robots = world.robots;
+  if (robots.size() > kMaxRobots) {
+    fail("robots", "has " + std::to_string(robots.size()) + " entries; at most " +
+                       std::to_string(kMaxRobots) + " are supported");
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < robots.size(); ++i) {
+    const RobotSpec& r = robots[i];
+    const std::string prefix = "robots[" + std::to_string(i) + "]";
+    if (!isRobotName(r.name)) {
+      fail(prefix + "/name",
+           "must start with a letter and hold only letters, digits and '_', got '" + r.name + "'");
+    }
+    if (!names.insert(r.name).second) fail(prefix + "/name", "repeats '" + r.name + "'");
+    requirePositiveAtMost(prefix + "/radius", r.radius, WorldLimits::kMaxRobotRadius);
+    requirePositiveAtMost(prefix + "/max_linear_speed", r.max_linear_speed, WorldLimits::kMaxSpeed);
+    requirePositiveAtMost(prefix + "/max_angular_speed", r.max_angular_speed,
+                          WorldLimits::kMaxSpeed);
+    if (r.max_linear_speed * world.step >= r.radius) {
+      fail("step", "is too long: " + r.name + " would move more than its radius in one step");
+    }
+    const Pose2D& p = r.initial_pose;
+    requireFinite(prefix + "/initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
+    if (penetrates(world, r.radius, p.x, p.y)) {
+      fail(prefix + "/initial_pose", "(" + show(p.x) + ", " + show(p.y) + ") puts " + r.name +
+                                         "'s disc inside a wall or a piece of furniture");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const RobotSpec& o = robots[j];
+      const double reach = r.radius + o.radius;
+      if (std::hypot(p.x - o.initial_pose.x, p.y - o.initial_pose.y) < reach) {
+        fail(prefix + "/initial_pose", "puts " + r.name + " on top of " + o.name);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -207,10 +280,17 @@ void validate(const World& world) {
   }
   const Pose2D& p = world.initial_pose;
   requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
-  if (penetrates(world, p.x, p.y)) {
+  if (world.robots.empty() && penetrates(world, p.x, p.y)) {
     fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
                              ") puts the robot's disc inside a wall or a piece of furniture");
   }
+  validateRobots(world);
+}
+
+std::vector<RobotSpec> robotsOf(const World& world) {
+  if (!world.robots.empty()) return world.robots;
+  return {RobotSpec{"", world.initial_pose, world.robot_radius, world.max_linear_speed,
+                    world.max_angular_speed}};
 }
 
 namespace {

@@ -90,4 +90,54 @@ TEST(RoombaCoverage, progress_bar_on_a_terminal_only) {
       << "the same table either way";
 }
 
+/// The union coverage [%] the --robots table prints for `robots` at its first column.
+std::vector<double> fleetRow(const std::string& output, int robots) {
+  std::smatch m;
+  const std::regex row("\\n +" + std::to_string(robots) + "((?: +[0-9.]+(?: ± [0-9.]+)?)+)\\n");
+  if (!std::regex_search(output, m, row)) return {};
+  std::vector<double> values;
+  const std::string cells = m[1];
+  const std::regex number("([0-9.]+)(?: ± [0-9.]+)?");
+  for (auto it = std::sregex_iterator(cells.begin(), cells.end(), number);
+       it != std::sregex_iterator(); ++it) {
+    values.push_back(std::stod((*it)[1]));
+  }
+  return values;
+}
+
+TEST(RoombaCoverage, one_robot_with_robots_1_is_the_lab_and_more_robots_clean_more) {
+  const std::string plot = testing::TempDir() + "roomba_coverage_robots_test.png";
+  std::remove(plot.c_str());
+  const Outcome lab = coverage("--behavior fsm --duration 300 --seeds 5");
+  ASSERT_EQ(lab.exit_code, 0) << lab.output;
+  const Outcome fleets =
+      coverage("--behavior fsm --duration 300 --seeds 5 --robots 1,2,4 --plot " + plot);
+  ASSERT_EQ(fleets.exit_code, 0) << fleets.output;
+  const std::vector<double> one = fleetRow(fleets.output, 1), two = fleetRow(fleets.output, 2),
+                            four = fleetRow(fleets.output, 4);
+  ASSERT_EQ(one.size(), 2u) << fleets.output;  // 60 s and 300 s
+  ASSERT_EQ(two.size(), 2u) << fleets.output;
+  ASSERT_EQ(four.size(), 2u) << fleets.output;
+  EXPECT_EQ(one[0], coverageAt(lab.output, 60));
+  EXPECT_EQ(one[1], coverageAt(lab.output, 300));
+  for (std::size_t c = 0; c < 2; ++c) {
+    EXPECT_GT(two[c], one[c]);
+    EXPECT_GT(four[c], two[c]);
+  }
+  std::ifstream png(plot, std::ios::binary);
+  char magic[4] = {};
+  png.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+TEST(RoombaCoverage, a_world_that_names_robots_runs_them_and_refuses_png) {
+  const std::string world = std::string(ROOMBA_RRT_CONFIG_DIR) + "/roomba_world_two_robots.yaml";
+  const Outcome two = coverage("--behavior bt --duration 60 --world " + world);
+  ASSERT_EQ(two.exit_code, 0) << two.output;
+  EXPECT_EQ(fleetRow(two.output, 2).size(), 1u) << two.output;
+  const Outcome png = coverage("--behavior bt --duration 60 --png x.png --world " + world);
+  EXPECT_EQ(png.exit_code, 2);
+  EXPECT_NE(png.output.find("--plot"), std::string::npos) << png.output;
+}
+
 }  // namespace

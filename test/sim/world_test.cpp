@@ -173,3 +173,66 @@ TEST(World, a_path_that_is_not_a_small_regular_file_is_named) {
   EXPECT_EQ(message(empty), "");  // an empty file keeps every default
   std::remove(empty.c_str());
 }
+// Named robots (issue 13).
+
+TEST(World, without_robots_the_world_has_one_unnamed_robot_from_the_shared_fields) {
+  const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
+  EXPECT_TRUE(world.robots.empty());
+  const auto robots = roomba_rrt::sim::robotsOf(world);
+  ASSERT_EQ(robots.size(), 1u);
+  EXPECT_EQ(robots[0].name, "");
+  EXPECT_EQ(robots[0].radius, world.robot_radius);
+  EXPECT_EQ(robots[0].initial_pose.x, 3.2);
+  EXPECT_EQ(robots[0].max_linear_speed, 1.0);
+}
+
+TEST(World, two_robots_file_names_two_robots_in_the_lab_room) {
+  const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_two_robots.yaml");
+  ASSERT_EQ(world.robots.size(), 2u);
+  EXPECT_EQ(world.robots[0].name, "robot1");
+  EXPECT_EQ(world.robots[1].name, "robot2");
+  EXPECT_EQ(world.robots[0].initial_pose.x, 1.6);
+  EXPECT_EQ(world.robots[1].radius, 0.17);
+  EXPECT_EQ(world.width, 6.4);
+}
+
+TEST(World, robots_take_the_shared_limits_unless_they_override_them) {
+  const World world = parseWorld(
+      "robot: {radius: 0.2, max_linear_speed: 0.8}\n"
+      "robots:\n"
+      "  - {name: a, initial_pose: {x: 1, y: 1}}\n"
+      "  - {name: b, initial_pose: {x: 3, y: 1, theta: 1.5}, radius: 0.1, max_angular_speed: 1}\n");
+  EXPECT_EQ(world.robots[0].radius, 0.2);
+  EXPECT_EQ(world.robots[0].max_linear_speed, 0.8);
+  EXPECT_EQ(world.robots[1].radius, 0.1);
+  EXPECT_EQ(world.robots[1].max_linear_speed, 0.8);
+  EXPECT_EQ(world.robots[1].max_angular_speed, 1.0);
+  EXPECT_EQ(world.robots[1].initial_pose.theta, 1.5);
+}
+
+TEST(World, bad_robot_lists_are_named) {
+  const std::string a = "  - {name: a, initial_pose: {x: 1, y: 1}}\n";
+  EXPECT_NE(errorFor("robots:\n  - {initial_pose: {x: 1, y: 1}}\n").find("robots[0]/name"),
+            std::string::npos);
+  EXPECT_NE(errorFor("robots:\n" + a + a).find("repeats 'a'"), std::string::npos);
+  EXPECT_NE(
+      errorFor("robots:\n  - {name: 1x, initial_pose: {x: 1, y: 1}}\n").find("robots[0]/name"),
+      std::string::npos);
+  EXPECT_NE(
+      errorFor("robots:\n  - {name: a/b, initial_pose: {x: 1, y: 1}}\n").find("robots[0]/name"),
+      std::string::npos);
+  EXPECT_NE(errorFor("robots:\n" + a + "  - {name: b, initial_pose: {x: 1.2, y: 1}}\n")
+                .find("puts b on top of a"),
+            std::string::npos);
+  EXPECT_NE(errorFor("robots:\n  - {name: a, initial_pose: {x: 0.1, y: 1}}\n")
+                .find("robots[0]/initial_pose"),
+            std::string::npos);
+  EXPECT_NE(errorFor("robots:\n  - {name: a, initial_pose: {x: 1, y: 1}, radius: -1}\n")
+                .find("robots[0]/radius"),
+            std::string::npos);
+  EXPECT_NE(errorFor("robots:\n  - {name: a, initial_pose: {x: 1, y: 1}, colour: red}\n")
+                .find("robots[0]/colour"),
+            std::string::npos);
+  EXPECT_NE(errorFor("initial_pose: {x: 1, y: 1}\nrobots:\n" + a).find("initial_pose cannot"),
+            std::string::npos);
+}

@@ -23,6 +23,15 @@ bool resolvePenetration(const World& world, double& x, double& y);
 /// rounding tolerance (used by resolvePenetration and by tests).
 bool penetrates(const World& world, double x, double y);
 
+/// The same for a disc of radius `radius` (a named robot's own), in place of world.robot_radius.
+bool resolvePenetration(const World& world, double radius, double& x, double& y);
+bool penetrates(const World& world, double radius, double x, double y);
+BumperState senseBumper(const World& world, double radius, const Pose2D& pose);
+
+/// Adds a contact in direction (nx, ny) from the centre of a robot at `pose` (any length) to
+/// `bumper`, closing the switches as senseBumper does: another robot touching this one.
+void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny);
+
 /// The bumper of a robot at `pose`: pressed when any wall or piece of furniture touches the disc
 /// (gap ≤ kContactTolerance). The side comes from the direction of each contact point seen from
 /// the robot: left when it is on the +y side of the heading, right on the −y side, both when it is

@@ -28,6 +28,8 @@ class CoverageGrid {
   void markDisc(double x, double y, double r);
   /// Forgets everything swept.
   void clear();
+  /// Adds every cell `other` has swept (a grid of the same world): the union of several robots'.
+  void merge(const CoverageGrid& other);
 
   int columns() const { return columns_; }
   int rows() const { return rows_; }

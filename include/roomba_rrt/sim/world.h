@@ -16,6 +16,19 @@ namespace roomba_rrt::sim {
 using geometry::Circle;
 using geometry::Rectangle;
 
+/// At most this many robots under `robots:`.
+constexpr std::size_t kMaxRobots = 1000;
+
+/// One robot of a world that lists several under `robots:`. Radius and speed limits default to the
+/// world's shared `robot:` values.
+struct RobotSpec {
+  std::string name;  ///< namespace and tf prefix: a letter, then letters, digits or '_'
+  Pose2D initial_pose{3.2, 2.4, 0.0};
+  double radius = 0.17;            ///< m
+  double max_linear_speed = 1.0;   ///< m/s
+  double max_angular_speed = 2.0;  ///< rad/s
+};
+
 /// Everything the simulator needs to know about the room and the robot. Defaults are the lab's
 /// simulation: a 6.4 m × 4.8 m empty room, a 0.17 m Roomba at the centre facing +x, 1.0 m/s and
 /// 2.0 rad/s speed limits, steps of 1/60 s.
@@ -34,6 +47,10 @@ struct World {
   double coverage_cell_size = 0.025;  ///< edge of a coverage grid cell, m
   double command_timeout = 0.5;       ///< node: stop when no command arrived for this long, s
   double real_time_factor = 1.0;      ///< node: simulated seconds per wall-clock second
+
+  /// Named robots (`robots:` in YAML). Empty: one unnamed robot with the fields above, exactly
+  /// the lab's simulation. When given, `initial_pose` is not used.
+  std::vector<RobotSpec> robots;
 };
 
 /// The supported ranges (validate() refuses anything outside them, naming the parameter). They
@@ -55,10 +72,15 @@ struct WorldLimits {
   static constexpr std::size_t kMaxFileBytes = 1 << 20;  ///< a world file is at most 1 MiB
 };
 
+/// The robots a simulator holds: `world.robots`, or when it is empty the one unnamed robot
+/// (name "") made of robot_radius, the speed limits and initial_pose.
+std::vector<RobotSpec> robotsOf(const World& world);
+
 /// Throws std::invalid_argument naming the first bad parameter (e.g. "robot/radius must be a
 /// finite number in (0, 10], got -1"): values outside WorldLimits, a room smaller than the robot,
 /// furniture with a non-positive size, a coverage grid too large for its limits, an initial pose
-/// that is not finite or puts the disc into a wall or furniture.
+/// that is not finite or puts the disc into a wall or furniture; for named robots also a bad or
+/// repeated name and two robots whose discs overlap.
 void validate(const World& world);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the

@@ -1,0 +1,208 @@
+#include "roomba_rrt/sim/multi_robot_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/sim/unicycle.h"
+
+namespace roomba_rrt::sim {
+
+namespace {
+
+/// Overlap below this (m) is rounding of a push-back, not penetration (as for the furniture).
+constexpr double kPenetrationTolerance = 1e-9;
+/// Passes of walls-then-robots before a robot that still overlaps keeps its previous position.
+constexpr int kMaxPlacePasses = 8;
+
+const World& validated(const World& world) {
+  validate(world);
+  return world;
+}
+
+double largestRadius(const std::vector<RobotSpec>& specs) {
+  double radius = 0;
+  for (const RobotSpec& s : specs) radius = std::max(radius, s.radius);
+  return radius;
+}
+
+}  // namespace
+
+MultiRobotSimulator::MultiRobotSimulator(const World& world)
+    : world_(validated(world)),
+      specs_(robotsOf(world_)),
+      robots_(specs_.size()),
+      coverage_(specs_.size(), CoverageGrid(world_)),
+      grid_(world_.width, world_.height, 2 * largestRadius(specs_) + 2 * kContactTolerance,
+            static_cast<int>(specs_.size())),
+      max_radius_(largestRadius(specs_)) {
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    const Pose2D& p = specs_[i].initial_pose;
+    robots_[i].pose = p;
+    grid_.insert(static_cast<int>(i), p.x, p.y);
+  }
+  reset();
+}
+
+bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& y) const {
+  const double r = specs_[robot].radius;
+  bool pushed = false;
+  grid_.forEachNear(x, y, [&](int j) {
+    if (static_cast<std::size_t>(j) == robot) return;
+    const Pose2D& q = robots_[j].pose;
+    const double reach = r + specs_[j].radius;
+    const double dx = x - q.x, dy = y - q.y;
+    const double d2 = dx * dx + dy * dy;
+    if (d2 >= (reach - kPenetrationTolerance) * (reach - kPenetrationTolerance)) return;
+    const double d = std::sqrt(d2);
+    if (d > 0) {
+      x = q.x + dx * (reach / d);
+      y = q.y + dy * (reach / d);
+    } else {
+      x = q.x - reach;  // exactly on the other's centre: no normal, leave towards −x
+    }
+    pushed = true;
+  });
+  return pushed;
+}
+
+bool MultiRobotSimulator::overlapsRobot(std::size_t robot, double x, double y) const {
+  const double r = specs_[robot].radius - kPenetrationTolerance;
+  bool overlaps = false;
+  grid_.forEachNear(x, y, [&](int j) {
+    if (static_cast<std::size_t>(j) == robot) return;
+    const double reach = r + specs_[j].radius;
+    const double dx = x - robots_[j].pose.x, dy = y - robots_[j].pose.y;
+    overlaps = overlaps || dx * dx + dy * dy < reach * reach;
+  });
+  return overlaps;
+}
+
+bool MultiRobotSimulator::place(std::size_t robot, double& x, double& y) const {
+  const double r = specs_[robot].radius;
+  if (robots_.size() == 1) return resolvePenetration(world_, r, x, y);  // Simulator, exactly
+  for (int pass = 0; pass < kMaxPlacePasses; ++pass) {
+    const bool clear_of_walls = resolvePenetration(world_, r, x, y);
+    if (!pushOutOfRobots(robot, x, y)) return clear_of_walls;
+  }
+  return !penetrates(world_, r, x, y) && !overlapsRobot(robot, x, y);
+}
+
+void MultiRobotSimulator::senseContact() {
+  const bool others = robots_.size() > 1;
+  for (std::size_t i = 0; i < robots_.size(); ++i) {
+    Robot& robot = robots_[i];
+    const double r = specs_[i].radius;
+    resolvePenetration(world_, r, robot.pose.x, robot.pose.y);
+    robot.bumper = senseBumper(world_, r, robot.pose);
+    if (!others) continue;
+    grid_.forEachNear(robot.pose.x, robot.pose.y, [&](int j) {
+      if (static_cast<std::size_t>(j) == i) return;
+      const Pose2D& q = robots_[j].pose;
+      const double reach = r + specs_[j].radius + kContactTolerance;
+      const double dx = q.x - robot.pose.x, dy = q.y - robot.pose.y;
+      if (dx * dx + dy * dy <= reach * reach) pressBumper(robot.bumper, robot.pose, dx, dy);
+    });
+  }
+}
+
+void MultiRobotSimulator::move(const std::vector<Velocity>& commands) {
+  if (commands.size() != robots_.size()) {
+    throw std::invalid_argument("MultiRobotSimulator::move: " + std::to_string(commands.size()) +
+                                " commands for " + std::to_string(robots_.size()) + " robots");
+  }
+  for (std::size_t i = 0; i < robots_.size(); ++i) {
+    Robot& robot = robots_[i];
+    const RobotSpec& spec = specs_[i];
+    robot.last_command = clampCommand(commands[i], spec.max_linear_speed, spec.max_angular_speed);
+    const Pose2D previous = robot.pose;
+    robot.pose = integrateArc(robot.pose, robot.last_command, world_.step);
+    // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
+    if (!place(i, robot.pose.x, robot.pose.y)) {
+      robot.pose.x = previous.x;
+      robot.pose.y = previous.y;
+    }
+    if (robot.pose.x != previous.x || robot.pose.y != previous.y) {
+      coverage_[i].markDisc(robot.pose.x, robot.pose.y, spec.radius);
+      grid_.move(static_cast<int>(i), robot.pose.x, robot.pose.y);
+    }
+  }
+  ++steps_;
+}
+
+void MultiRobotSimulator::step(const std::vector<Velocity>& commands) {
+  senseContact();
+  move(commands);
+}
+
+double MultiRobotSimulator::unionCoverage() const {
+  if (coverage_.size() == 1) return coverage_[0].coverage();
+  return unionCoverageGrid().coverage();
+}
+
+CoverageGrid MultiRobotSimulator::unionCoverageGrid() const {
+  CoverageGrid all = coverage_[0];
+  for (std::size_t i = 1; i < coverage_.size(); ++i) all.merge(coverage_[i]);
+  return all;
+}
+
+void MultiRobotSimulator::setPose(std::size_t robot, const Pose2D& pose) {
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
+    throw std::invalid_argument("pose must be finite");
+  }
+  Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  if (!place(robot, placed.x, placed.y)) {
+    throw std::invalid_argument("the robot does not fit at the requested pose");
+  }
+  Robot& r = robots_[robot];
+  r.pose = placed;
+  grid_.move(static_cast<int>(robot), placed.x, placed.y);
+  r.bumper = senseBumper(world_, specs_[robot].radius, r.pose);
+  coverage_[robot].markDisc(r.pose.x, r.pose.y, specs_[robot].radius);
+}
+
+void MultiRobotSimulator::reset() {
+  steps_ = 0;
+  // Everyone off the floor first, so that a robot's initial pose never collides with another's
+  // current one; the initial poses are clear of each other (validate()).
+  for (std::size_t i = 0; i < robots_.size(); ++i) {
+    const Pose2D& p = specs_[i].initial_pose;
+    robots_[i].pose = p;
+    grid_.move(static_cast<int>(i), p.x, p.y);
+  }
+  for (std::size_t i = 0; i < robots_.size(); ++i) {
+    coverage_[i].clear();
+    robots_[i].last_command = {};
+    setPose(i, specs_[i].initial_pose);
+  }
+}
+
+std::vector<RobotSpec> spreadRobots(const World& world, int n) {
+  if (n < 1 || static_cast<std::size_t>(n) > kMaxRobots) {
+    throw std::invalid_argument("spreadRobots: the number of robots must be in [1, " +
+                                std::to_string(kMaxRobots) + "], got " + std::to_string(n));
+  }
+  const double r = world.robot_radius;
+  for (int cells = n; cells <= 64 * n; ++cells) {
+    const int rows =
+        std::max(1, static_cast<int>(std::lround(std::sqrt(cells * world.height / world.width))));
+    const int columns = (cells + rows - 1) / rows;
+    const double w = world.width / columns, h = world.height / rows;
+    if (std::min(w, h) < 2 * r) break;  // neighbours would overlap
+    std::vector<RobotSpec> robots;
+    for (int row = 0; row < rows && static_cast<int>(robots.size()) < n; ++row) {
+      for (int column = 0; column < columns && static_cast<int>(robots.size()) < n; ++column) {
+        const double x = (column + 0.5) * w, y = (row + 0.5) * h;
+        if (penetrates(world, r, x, y)) continue;
+        robots.push_back(RobotSpec{"robot" + std::to_string(robots.size() + 1), Pose2D{x, y, 0.0},
+                                   r, world.max_linear_speed, world.max_angular_speed});
+      }
+    }
+    if (static_cast<int>(robots.size()) == n) return robots;
+  }
+  throw std::invalid_argument("spreadRobots: " + std::to_string(n) +
+                              " robots do not fit in the room");
+}
+
+}  // namespace roomba_rrt::sim
