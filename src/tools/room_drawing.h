@@ -25,7 +25,8 @@ inline void drawFurnitureAndWalls(cairo_t* cr, const sim::World& world, const Ro
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
   for (const sim::Circle& circle : world.circles) {
     cairo_new_sub_path(cr);
-    cairo_arc(cr, c.px(circle.center.x), c.py(circle.center.y), circle.radius * c.scale, 0, 2 * kPi);
+    cairo_arc(cr, c.px(circle.center.x), c.py(circle.center.y), circle.radius * c.scale, 0,
+              2 * kPi);
   }
   for (const sim::Rectangle& r : world.rectangles) {
     cairo_rectangle(cr, c.px(r.min_x), c.py(r.max_y), (r.max_x - r.min_x) * c.scale,
