@@ -43,23 +43,15 @@ InProcessPlanner::InProcessPlanner(NavWorld world, const planning::PlannerOption
       checker_(world_.circles, planning::CollisionCheck::kSegments, world_.rectangles,
                planning::robotMargin(base_)),
       shrunk_(planning::shrink(world_.bounds, planning::robotMargin(base_))) {
-  // The world is checked as a problem whose start and goal are a free corner of it.
+  // The world is checked by the library as a problem whose start and goal are the room's centre
+  // (furniture left out: the centre may be inside it): bounds, options and the robot's size
+  // (finite, in range, fitting in the room) with the library's own messages.
   planning::Problem probe = base_;
-  probe.robot_radius = probe.clearance = 0;
   probe.obstacles.clear();
   probe.rectangles.clear();
-  probe.start = probe.goal = {world_.bounds.x_min, world_.bounds.y_min};
+  probe.start = probe.goal = {0.5 * (world_.bounds.x_min + world_.bounds.x_max),
+                              0.5 * (world_.bounds.y_min + world_.bounds.y_max)};
   std::string problem = planning::validate(probe, options_);
-  if (problem.empty()) {
-    for (const auto& [field, value] :
-         {std::pair<const char*, double>{"robot_radius", world_.robot_radius},
-          {"clearance", world_.clearance}}) {
-      if (!(std::isfinite(value) && value >= 0)) {
-        problem = std::string(field) + ": must be finite and >= 0";
-        break;
-      }
-    }
-  }
   if (problem.empty() && !(shrunk_.x_min < shrunk_.x_max && shrunk_.y_min < shrunk_.y_max)) {
     problem = "robot_radius: the robot's disc does not fit in the room";
   }

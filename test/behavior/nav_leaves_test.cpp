@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <tuple>
 
 #include "roomba_rrt/behavior/nav_leaves.h"
 
@@ -213,4 +217,21 @@ TEST(InProcessPlanner, a_goal_in_a_grown_rectangle_is_refused_naming_it) {
 }
 
 }  // namespace
+TEST(InProcessPlanner, refuses_a_robot_size_the_library_refuses_naming_the_field) {
+  NavWorld world;
+  world.bounds = {0, 10, 0, 10};
+  for (const auto& [radius, clearance, field] :
+       {std::tuple{std::nan(""), 0.05, "robot_radius"}, std::tuple{0.2, -1.0, "clearance"},
+        std::tuple{6.0, 0.05, "robot_radius"}}) {
+    world.robot_radius = radius;
+    world.clearance = clearance;
+    try {
+      InProcessPlanner planner(world, planning::PlannerOptions{}, InProcessPlanner::Mode::kInline);
+      ADD_FAILURE() << "accepted robot_radius " << radius << ", clearance " << clearance;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(std::string("planner: ") + field, 0), 0u) << e.what();
+    }
+  }
+}
+
 }  // namespace roomba_rrt::behavior
