@@ -8,6 +8,7 @@ add_library(rrt_planning
   src/planning/nearest_neighbors.cpp
   src/planning/path_smoothing.cpp
   src/planning/planner.cpp
+  src/planning/plan_result.cpp
   src/planning/planner_options.cpp
   src/planning/rrt.cpp
   src/planning/rrt_connect.cpp

@@ -15,16 +15,13 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRan
   const auto started = std::chrono::steady_clock::now();
   PlanResult result;
   if (std::string error = validate(problem, options); !error.empty()) {
-    result.message = error;
+    setNoPath(result, error);
     return result;
   }
   if (distance(problem.start, problem.goal) < options.goal_tolerance) {
     // Already there: the tree is its root, the path that one point.
-    result.success = true;
     result.tree.add(problem.start, -1);
-    result.path = {problem.start};
-    result.length = 0;
-    result.message = "path found (the start is within goal_tolerance of the goal)";
+    setPathToNode(result, 0, "the start is within goal_tolerance of the goal");
     result.planning_time =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;

@@ -80,29 +80,26 @@ PlanResult growRrt(const Problem& problem, const PlannerOptions& options, Planne
     // Asked every 16th iteration: an RRT iteration is short, and a counter the loop keeps in a
     // register is cheaper than the condition's own countdown in memory.
     if (iteration % 16 == 0 && stop()) {
-      result.message = stop.reason();
+      setNoPath(result, stop.reason());
       return result;
     }
     result.iterations = iteration;
     // 1. Sample: the goal with probability p, otherwise a free point (bounded rejection).
     const std::optional<Point2> q_rand = sampleTarget(problem, options, parts);
     if (!q_rand) {
-      result.message = noFreeSpaceMessage(parts.sampler);
+      setNoPath(result, noFreeSpaceMessage(parts.sampler));
       return result;
     }
     // 2.-5. Nearest node, one step towards q_rand, collision check, insert.
     const int added = extendTree(tree, nearest, parts.checker, *q_rand, options.step);
     // 6. Stop when the new node is within epsilon of the goal.
     if (added >= 0 && distance(tree.nodes[added], problem.goal) < options.goal_tolerance) {
-      result.success = true;
-      result.path = pathFromRoot(tree, added);
-      result.length = pathLength(result.path);
-      result.message = "path found";
+      setPathToNode(result, added);
       return result;
     }
     progress(tree, iteration);
   }
-  result.message = "no path within " + std::to_string(options.max_iterations) + " iterations";
+  setNoPath(result, noPathWithin(options.max_iterations));
   return result;
 }
 

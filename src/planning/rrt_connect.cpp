@@ -1,7 +1,7 @@
 #include "roomba_rrt/planning/rrt_connect.h"
 
-#include <algorithm>
 #include <utility>
+#include <vector>
 
 namespace roomba_rrt::planning {
 namespace {
@@ -33,7 +33,7 @@ class StepBudget {
   StopCondition& stop_;
 };
 
-// One step of tree `t` towards `target`; the new node's index, or -1 if blocked.
+// One step of tree `t` towards `target` (extendTree()); the new node's index, or -1 if blocked.
 int extend(GrowingTree& t, const Point2& target, const PlannerOptions& options,
            const CollisionChecker& checker) {
   return extendTree(t.tree, t.nearest, checker, target, options.step);
@@ -50,6 +50,16 @@ int connect(GrowingTree& t, const Point2& target, const PlannerOptions& options,
     if (reached.x == target.x && reached.y == target.y) return added;
   }
   return -1;
+}
+
+// The path through the junction where the trees met: start tree root ... `in_start` (a node
+// of the start tree) = `in_goal` (a node of the goal tree) ... goal tree root.
+std::vector<Point2> joinedPath(const Tree& start_tree, int in_start, const Tree& goal_tree,
+                               int in_goal) {
+  std::vector<Point2> path = pathFromRoot(start_tree, in_start);
+  std::vector<Point2> tail = pathFromRoot(goal_tree, in_goal);
+  path.insert(path.end(), tail.rbegin() + 1, tail.rend());  // the junction once
+  return path;
 }
 
 // Both trees in one: the goal tree's nodes follow the start tree's, parents shifted.
@@ -84,7 +94,7 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
     // 1. Sample a free point (no goal bias: the goal tree pulls instead).
     const auto q_rand = parts.sampler.sample(parts.random);
     if (!q_rand) {
-      result.message = noFreeSpaceMessage(parts.sampler);
+      setNoPath(result, noFreeSpaceMessage(parts.sampler));
       break;
     }
     // 2. Extend the active tree one step towards it.
@@ -96,14 +106,8 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
       if (reached >= 0) {
         // 4. A path: start tree root ... junction ... goal tree root.
         const bool start_active = active == &start_tree;
-        std::vector<Point2> head = pathFromRoot(start_tree.tree, start_active ? added : reached);
-        std::vector<Point2> tail = pathFromRoot(goal_tree.tree, start_active ? reached : added);
-        std::reverse(tail.begin(), tail.end());
-        head.insert(head.end(), tail.begin() + 1, tail.end());  // the junction once
-        result.success = true;
-        result.path = std::move(head);
-        result.length = pathLength(result.path);
-        result.message = "path found";
+        setPathFound(result, joinedPath(start_tree.tree, start_active ? added : reached,
+                                        goal_tree.tree, start_active ? reached : added));
         break;
       }
     }
@@ -115,10 +119,9 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
   }
   result.iterations = budget.used();
   if (!result.success && result.message.empty()) {
-    result.message = !stop.reason().empty()
-                         ? stop.reason()
-                         : "no path within " + std::to_string(options.max_iterations) +
-                               " iterations (connect steps included)";
+    setNoPath(result, !stop.reason().empty()
+                          ? stop.reason()
+                          : noPathWithin(options.max_iterations) + " (connect steps included)");
   }
   result.tree = merge(start_tree.tree, goal_tree.tree);
   return result;

@@ -89,24 +89,25 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     // 1. Sample exactly as RRT does (goal bias, then rejection sampling).
     const std::optional<Point2> sample = sampleTarget(problem, options, parts);
     if (!sample) {
-      result.message = noFreeSpaceMessage(parts.sampler);
+      setNoPath(result, noFreeSpaceMessage(parts.sampler));
       return result;
     }
-    // 2. Nearest node and 3. one step towards the sample; 4. skip if blocked or no step at all.
-    const auto [nearest, q_nearest] = parts.nearest.nearestNeighbor(*sample);
-    const Point2 q_new = steer(q_nearest, *sample, options.step);
-    if (!parts.checker.isMotionFree(q_nearest, q_new) ||
-        (q_new.x == q_nearest.x && q_new.y == q_nearest.y)) {
+    // 2.-4. Nearest node, one step towards the sample, collision check, exactly as RRT does
+    //       (skip the iteration if blocked or no step at all); RRT* differs in the insertion.
+    const std::optional<Extension> motion =
+        steerFromNearest(parts.nearest, parts.checker, *sample, options.step);
+    if (!motion) {
       progress(tree, iteration);
       continue;
     }
+    const Point2 q_new = motion->q_new;
     // 5. Choose the parent: the neighbour through which q_new is reached shortest. Its edge can
     //    be far longer than one step, so it is checked whole in both modes (points mode checks
     //    only the single step from the nearest node by its end).
     parts.nearest.withinRadius(q_new, rewireRadius(problem.bounds, options.step, tree.size()),
                                near);
-    int parent = nearest;
-    double new_cost = cost(nearest) + distance(q_nearest, q_new);
+    int parent = motion->from;
+    double new_cost = cost(motion->from) + distance(motion->q_from, q_new);
     for (int n : near) {
       const double c = cost(n) + distance(tree.nodes[n], q_new);
       if (c < new_cost && parts.checker.isSegmentFree(tree.nodes[n], q_new)) {
@@ -139,15 +140,11 @@ PlanResult solveRrtStar(const Problem& problem, const PlannerOptions& options, P
     }
   }
   if (best >= 0) {
-    result.success = true;
-    result.path = pathFromRoot(tree, best);
-    result.length = pathLength(result.path);
-    result.message = "path found (best of " + std::to_string(result.iterations) + " iterations" +
-                     (stopped ? "; " + stop.reason() + ")" : ")");
-  } else if (stopped) {
-    result.message = stop.reason();
-  } else if (result.message.empty()) {
-    result.message = "no path within " + std::to_string(options.max_iterations) + " iterations";
+    setPathToNode(result, best,
+                  "best of " + std::to_string(result.iterations) + " iterations" +
+                      (stopped ? "; " + stop.reason() : ""));
+  } else {
+    setNoPath(result, stopped ? stop.reason() : noPathWithin(options.max_iterations));
   }
   return result;
 }

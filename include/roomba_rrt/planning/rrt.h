@@ -54,8 +54,8 @@ struct PlannerParts {
 /// Makes `tree` a single root node at `root` and `nearest` an index of it over `bounds`.
 void plantTree(Tree& tree, NearestNeighbors& nearest, const Point2& root, const Bounds& bounds);
 
-// steer, sampleTarget and extendTree are inline: they run every iteration, and a shared library
-// cannot inline calls to its own exported functions.
+// steer, sampleTarget, steerFromNearest and extendTree are inline: they run every iteration, and
+// a shared library cannot inline calls to its own exported functions.
 
 /// Step 1 of an iteration: one rand() for the goal bias (the goal when r < p), otherwise a
 /// free-space sample (x, then y, per rejection try). std::nullopt when no free point was found.
@@ -65,13 +65,21 @@ inline std::optional<Point2> sampleTarget(const Problem& problem, const PlannerO
   return parts.sampler.sample(parts.random);
 }
 
-/// Steps 2-5 (LaValle's EXTEND): nearest node to `target`, steer by at most `step`, check the
-/// motion, insert the new node into `tree` and `nearest`. Returns its index, or -1 if blocked
-/// or if the step has length zero (the target is already a tree node). `Index` is
-/// NearestNeighbors, or a concrete index whose calls the compiler can then inline.
+/// A free motion of at most one step from tree node `from` (at `q_from`) to `q_new`.
+struct Extension {
+  int from;
+  Point2 q_from;
+  Point2 q_new;
+};
+
+/// Steps 2-4 of an iteration (LaValle's EXTEND without the insertion): the nearest node to
+/// `target`, one step of at most `step` from it towards `target`, and the collision check of that
+/// motion. std::nullopt if it is blocked, or if the step has length zero (the target is already
+/// a tree node). `Index` is NearestNeighbors, or a concrete index whose calls the compiler can
+/// then inline.
 template <typename Index>
-int extendTree(Tree& tree, Index& nearest, const CollisionChecker& checker, const Point2& target,
-               double step) {
+std::optional<Extension> steerFromNearest(const Index& nearest, const CollisionChecker& checker,
+                                          const Point2& target, double step) {
   // Nearest tree node.
   const auto [near, q_near] = nearest.nearestNeighbor(target);
   // Extend from it by at most one step.
@@ -79,11 +87,20 @@ int extendTree(Tree& tree, Index& nearest, const CollisionChecker& checker, cons
   // Check the new node (points) or the new edge (segments); a collision wastes the iteration.
   // A step of length zero (the target is already a node, e.g. the goal with epsilon = 0) adds
   // nothing either; it never happens in the lab's runs, which stop at the goal.
-  if (!checker.isMotionFree(q_near, q_new)) return -1;
-  if (q_new.x == q_near.x && q_new.y == q_near.y) return -1;
-  // Insert it with q_near as parent.
-  const int added = tree.add(q_new, near);
-  nearest.add(q_new, added);
+  if (!checker.isMotionFree(q_near, q_new)) return std::nullopt;
+  if (q_new.x == q_near.x && q_new.y == q_near.y) return std::nullopt;
+  return Extension{near, q_near, q_new};
+}
+
+/// Steps 2-5 (LaValle's EXTEND): steerFromNearest(), then insert the new node into `tree` and
+/// `nearest` with the nearest node as its parent. Returns its index, or -1 if nothing was added.
+template <typename Index>
+int extendTree(Tree& tree, Index& nearest, const CollisionChecker& checker, const Point2& target,
+               double step) {
+  const std::optional<Extension> motion = steerFromNearest(nearest, checker, target, step);
+  if (!motion) return -1;
+  const int added = tree.add(motion->q_new, motion->from);
+  nearest.add(motion->q_new, added);
   return added;
 }
 
