@@ -11,11 +11,10 @@ double Rotate::drawAngle(std::mt19937& rng) {
 }
 
 void TurnInPlace::start(double angle) {
-  angle_ = angle;
-  const double magnitude = std::fabs(angle_);
+  const double magnitude = std::fabs(angle);
   const double per_tick = speed_ * dt_;
   const long n = static_cast<long>(std::ceil(magnitude / per_tick));
-  const double sign = angle_ < 0 ? -1.0 : 1.0;
+  const double sign = angle < 0 ? -1.0 : 1.0;
   full_ = sign * speed_;
   last_ = n > 0 ? sign * (magnitude - static_cast<double>(n - 1) * per_tick) / dt_ : 0.0;
   timer_.setLength(n);

@@ -70,23 +70,6 @@ struct TreeFactory::BuildState {
 TreeFileError::TreeFileError(const std::string& source, int line, const std::string& message)
     : std::runtime_error(source + ":" + std::to_string(line) + ": " + message), line_(line) {}
 
-long NodeSpec::integer(const std::string& key) const {
-  const auto it = attributes.find(key);
-  if (it == attributes.end()) throw std::invalid_argument("missing attribute '" + key + "'");
-  std::size_t used = 0;
-  long value = 0;
-  try {
-    value = std::stol(it->second, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != it->second.size()) {
-    throw std::invalid_argument("attribute '" + key + "' must be an integer, got '" + it->second +
-                                "'");
-  }
-  return value;
-}
-
 const std::string& NodeSpec::text(const std::string& port) const {
   const auto it = attributes.find(port);
   if (it == attributes.end()) throw std::invalid_argument("missing port '" + port + "'");
@@ -166,12 +149,6 @@ void TreeFactory::setTickRate(double hz) {
     throw std::invalid_argument("tick rate must be finite and > 0, got " + std::to_string(hz));
   }
   tick_rate_ = hz;
-}
-
-std::vector<std::string> TreeFactory::types() const {
-  std::vector<std::string> names;
-  for (const auto& entry : entries_) names.push_back(entry.first);
-  return names;
 }
 
 const PortList& TreeFactory::ports(const std::string& type) const {

@@ -127,14 +127,11 @@ class TurnInPlace {
     const long k = timer_.next();
     return {0.0, k + 1 < timer_.length() ? full_ : last_};
   }
-  /// The angle of the last start().
-  double angle() const { return angle_; }
 
  private:
   double speed_;
   double dt_;
   TickCounter timer_;
-  double angle_ = 0;
   double full_ = 0;  ///< ω of every tick but the last
   double last_ = 0;  ///< ω of the last tick
 };
@@ -153,9 +150,6 @@ class Rotate {
   void enter() { turn_.start(drawAngle(rng_)); }
   MotionEvent check(const sim::BumperState& bumper) const { return turn_.check(bumper); }
   sim::Velocity execute() { return turn_.execute(); }
-
-  /// The angle drawn by the last enter().
-  double angle() const { return turn_.angle(); }
 
  private:
   TurnInPlace turn_;

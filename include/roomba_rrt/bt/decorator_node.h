@@ -13,7 +13,6 @@ class DecoratorNode : public TreeNode {
   using TreeNode::TreeNode;
 
   void setChild(std::unique_ptr<TreeNode> child) { child_ = std::move(child); }
-  bool hasChild() const { return child_ != nullptr; }
   TreeNode& child() { return *child_; }
 
  protected:

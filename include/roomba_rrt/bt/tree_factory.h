@@ -45,10 +45,6 @@ struct NodeSpec {
   const PortList* ports = nullptr;   ///< the node type's ports (empty for plain attributes)
   double tick_rate = 60.0;           ///< the factory's tick rate (Hz)
 
-  /// The value of attribute `key` as an integer; std::invalid_argument naming it when it is
-  /// missing or not an integer.
-  long integer(const std::string& key) const;
-
   /// The literal value of port `port` (attribute or default).
   template <class T>
   T literal(const std::string& port) const {
@@ -147,7 +143,6 @@ class TreeFactory {
   /// Tick rate of the trees built (Hz, default 60): RateController turns its `hz` into ticks
   /// with it. Must be finite and > 0 (std::invalid_argument).
   void setTickRate(double hz);
-  double tickRate() const { return tick_rate_; }
 
   /// Builds a tree with a fresh blackboard.
   Tree buildFromFile(const std::string& path) const;
@@ -159,8 +154,6 @@ class TreeFactory {
   Tree buildFromText(const std::string& xml, const std::string& source,
                      std::shared_ptr<Blackboard> blackboard) const;
 
-  /// Registered element names, sorted.
-  std::vector<std::string> types() const;
   /// The ports of element `type` (std::invalid_argument when it is unknown).
   const PortList& ports(const std::string& type) const;
 
