@@ -1,9 +1,11 @@
 # Benchmarks and the peer comparison (scripts/bench runs them all and prints one table).
 #
 # Each benchmark is built only when what it needs is installed (Google Benchmark:
-# libbenchmark-dev; OMPL 1.5: libompl-dev, a benchmark-only dependency), and only on request:
+# libbenchmark-dev; OMPL 1.5: libompl-dev, a benchmark-only dependency). planning_bench, sim_bench
+# and the probes plan_path_bench, sim_rtf_probe and nav_latency_probe are part of the default
+# build; behavior_bench and ompl_comparison are built only on request. This builds them all:
 #   cmake --build <build-dir> --target benchmarks
-# The executables land in <build-dir>/devel/lib/roomba_rrt/ like the nodes.
+# The executables land in lib/roomba_rrt/ of the devel space, like the nodes.
 
 find_package(benchmark QUIET)
 find_package(ompl QUIET)

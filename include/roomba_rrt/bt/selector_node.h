@@ -1,5 +1,5 @@
 // Selector (BehaviorTree.CPP's Fallback): try the children one after the other until one
-// succeeds (the lab's Selector).
+// succeeds.
 #pragma once
 
 #include <cstddef>
@@ -9,7 +9,7 @@
 namespace roomba_rrt::bt {
 
 /// Ticks its children from left to right and *remembers* the running one: the next tick resumes
-/// it without re-checking the children before it (non-reactive, as in the lab).
+/// it without re-checking the children before it (non-reactive: ReactiveSelector re-checks them).
 ///
 /// When the current child returns
 /// - SUCCESS: the Selector returns SUCCESS at once (later children are not ticked); its next tick

@@ -1,4 +1,4 @@
-// Sequence: run the children one after the other until one fails (the lab's Sequence).
+// Sequence: run the children one after the other until one fails.
 #pragma once
 
 #include <cstddef>
@@ -8,7 +8,7 @@
 namespace roomba_rrt::bt {
 
 /// Ticks its children from left to right and *remembers* the running one: the next tick resumes
-/// it without re-checking the children before it (non-reactive, as in the lab).
+/// it without re-checking the children before it (non-reactive: ReactiveSequence re-checks them).
 ///
 /// When the current child returns
 /// - SUCCESS: the next child is entered and ticked in the same tick; after the last child the

@@ -12,9 +12,9 @@ namespace roomba_rrt::bt {
 /// Owns a tree of nodes and ticks its root.
 ///
 /// When the root returns SUCCESS or FAILURE it is no longer running, so the next tick enters it
-/// anew and the tree starts again from the left (the lab's rule). In the tick in which the root
-/// finishes, the leaf that finished produced no action and no other leaf ran: a caller that needs
-/// an output on every tick must say what that tick means (RoombaBt commands zero velocity).
+/// anew and the tree starts again from the left (as in BehaviorTree.CPP). In the tick in which the
+/// root finishes, the leaf that finished produced no action and no other leaf ran: a caller that
+/// needs an output on every tick must say what that tick means (RoombaBt commands zero velocity).
 class Tree {
  public:
   explicit Tree(std::unique_ptr<TreeNode> root, std::shared_ptr<Blackboard> blackboard = nullptr)

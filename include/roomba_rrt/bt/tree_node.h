@@ -19,7 +19,7 @@ namespace roomba_rrt::bt {
 ///   running does nothing.
 ///
 /// The wrappers cost one branch and a virtual call: no clock, lock, allocation or std::function
-/// per tick, so a whole lab tree ticks in a few nanoseconds.
+/// per tick, so a tree of a dozen nodes ticks in a few nanoseconds.
 class TreeNode {
  public:
   explicit TreeNode(std::string name) : name_(std::move(name)) {}

@@ -11,13 +11,14 @@ using StateId = std::size_t;
 /// checkTransition()'s answer for "stay in this state".
 inline constexpr StateId kStay = static_cast<StateId>(-1);
 
-/// One state, with the three hooks of the lab's state machine. The state machine calls, on every
-/// update of the current state:
+/// One state, with three hooks. The state machine calls, on every update of the current state:
 ///
 /// 1. checkTransition(): return the id of the next state, or kStay;
 /// 2. if it returned another state: that state's enter();
 /// 3. execute() of the (possibly new) current state — a transition and the new state's first
-///    execution happen in the same update, as in the lab.
+///    execution happen in the same update. (This is the rule of the CT-213 lab's state machine:
+///    the Roomba FSM built on this engine must tick exactly like the lab's, and like the
+///    equivalent behaviour tree.)
 ///
 /// States reach the data they act on (sensor readings, the command they produce) through
 /// references they are constructed with, so the hooks take no arguments.
