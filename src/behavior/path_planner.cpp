@@ -51,11 +51,15 @@ InProcessPlanner::InProcessPlanner(NavWorld world, const planning::PlannerOption
   probe.rectangles.clear();
   probe.start = probe.goal = {0.5 * (world_.bounds.x_min + world_.bounds.x_max),
                               0.5 * (world_.bounds.y_min + world_.bounds.y_max)};
-  std::string problem = planning::validate(probe, options_);
-  if (problem.empty() && !(shrunk_.x_min < shrunk_.x_max && shrunk_.y_min < shrunk_.y_max)) {
-    problem = "robot_radius: the robot's disc does not fit in the room";
+  try {
+    planning::validate(probe, options_);
+  } catch (const util::InvalidInput& invalid) {
+    throw invalid.in("planner");
   }
-  if (!problem.empty()) throw std::invalid_argument("planner: " + problem);
+  if (!(shrunk_.x_min < shrunk_.x_max && shrunk_.y_min < shrunk_.y_max)) {
+    throw util::InvalidInput("robot_radius", "the robot's disc does not fit in the room",
+                             "planner");
+  }
   if (mode_ == Mode::kThread) worker_ = std::thread([this] { work(); });
 }
 

@@ -226,8 +226,11 @@ ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefau
   }
   if (resolved.error.empty()) resolved.error = resolveOptions(request, defaults, &resolved.options);
   if (resolved.error.empty()) {
-    resolved.error =
-        planning::validate(resolved.problem, resolved.options, defaults.max_iterations_cap);
+    try {
+      planning::validate(resolved.problem, resolved.options, defaults.max_iterations_cap);
+    } catch (const util::InvalidInput& invalid) {
+      resolved.error = invalid.what();
+    }
   }
   if (resolved.error.empty()) resolved.error = checkPlanningTimeLimit(request, defaults);
   return resolved;

@@ -101,8 +101,11 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   problem.start = d.start;
   problem.goal = d.goal;
   problem.bounds = d.bounds;
-  const std::string error = planning::validate(problem, o, d.max_iterations_cap);
-  if (!error.empty()) throw std::invalid_argument("parameter ~" + error);
+  try {
+    planning::validate(problem, o, d.max_iterations_cap);
+  } catch (const util::InvalidInput& invalid) {
+    throw std::invalid_argument("parameter ~" + std::string(invalid.what()));
+  }
   // Scenario "room": the simulator's world file (its room, furniture and robot radius).
   const std::string package = ros::package::getPath("roomba_rrt");
   const std::string world_file = param<std::string>(

@@ -14,8 +14,10 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRan
                 const std::function<bool()>& stop_requested) {
   const auto started = std::chrono::steady_clock::now();
   PlanResult result;
-  if (std::string error = validate(problem, options); !error.empty()) {
-    setNoPath(result, error);
+  try {
+    validate(problem, options);
+  } catch (const util::InvalidInput& invalid) {
+    setNoPath(result, invalid.what());
     return result;
   }
   if (distance(problem.start, problem.goal) < options.goal_tolerance) {

@@ -1,17 +1,17 @@
 #include "roomba_rrt/planning/scenarios.h"
 
 #include <initializer_list>
-#include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
 
 #include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::planning {
 namespace {
 
 [[noreturn]] void fail(const std::string& file, const std::string& field, const std::string& why) {
-  throw std::runtime_error(file + ": " + field + ": " + why);
+  throw util::InvalidInput(field, why, file);
 }
 
 Point2 readPoint(const YAML::Node& node, const std::string& file, const std::string& field) {
@@ -42,7 +42,7 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
   try {
     root = YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": cannot read scenarios: " + e.what());
+    throw util::InvalidInput("", std::string("cannot read scenarios: ") + e.what(), path);
   }
   std::map<std::string, Problem> scenarios;
   try {
@@ -58,14 +58,14 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
       p.bounds = s["bounds"] ? readBounds(s["bounds"], path, field + ".bounds") : defaults;
       int i = 0;
       for (const auto& o : s["obstacles"]) {
-        const std::string obstacle = field + ".obstacles[" + std::to_string(i++) + "]";
+        const std::string obstacle = util::entry(field + ".obstacles", i++);
         if (!o["radius"]) fail(path, obstacle + ".radius", "missing");
         p.obstacles.push_back(
             {readPoint(o["center"], path, obstacle + ".center"), o["radius"].as<double>()});
       }
       i = 0;
       for (const auto& r : s["rectangles"]) {
-        const std::string rectangle = field + ".rectangles[" + std::to_string(i++) + "]";
+        const std::string rectangle = util::entry(field + ".rectangles", i++);
         Rectangle box;
         readNumbers(r, path, rectangle,
                     {{"min_x", &box.min_x},
@@ -79,7 +79,7 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
       scenarios.emplace(name, std::move(p));
     }
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": malformed scenarios: " + e.what());
+    throw util::InvalidInput("", std::string("malformed scenarios: ") + e.what(), path);
   }
   return scenarios;
 }
@@ -96,12 +96,6 @@ Problem roomProblem(const sim::World& world) {
   return p;
 }
 
-Problem loadRoom(const std::string& world_file) {
-  try {
-    return roomProblem(sim::loadWorld(world_file));
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(e.what());
-  }
-}
+Problem loadRoom(const std::string& world_file) { return roomProblem(sim::loadWorld(world_file)); }
 
 }  // namespace roomba_rrt::planning

@@ -113,8 +113,10 @@ int main(int argc, char** argv) {
     if (jobs.empty())
       throw std::invalid_argument("--scenario: unknown scenario '" + args.scenario + "'");
     for (const Job& job : jobs) {
-      if (auto error = rp::validate(job.problem, args.options); !error.empty()) {
-        throw std::invalid_argument("scenario " + job.scenario + ": " + error);
+      try {
+        rp::validate(job.problem, args.options);
+      } catch (const roomba_rrt::util::InvalidInput& invalid) {
+        throw invalid.in("scenario " + job.scenario);
       }
     }
   } catch (const std::exception& e) {

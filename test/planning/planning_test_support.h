@@ -15,6 +15,18 @@ inline Problem labScenario(const std::string& name) {
   return loadScenarios(defaultScenarioFile()).at(name);
 }
 
+/// The message of the util::InvalidInput that validate() throws for the query; "" when it can be
+/// planned.
+inline std::string validationError(const Problem& problem, const PlannerOptions& options,
+                                   int max_iterations_cap = kDefaultMaxIterationsCap) {
+  try {
+    validate(problem, options, max_iterations_cap);
+    return "";
+  } catch (const util::InvalidInput& invalid) {
+    return invalid.what();
+  }
+}
+
 /// Index of the first path edge that meets an obstacle, -1 if none.
 inline int firstCollidingEdge(const std::vector<Point2>& path,
                               const std::vector<Circle>& obstacles) {

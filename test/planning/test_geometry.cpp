@@ -67,10 +67,11 @@ TEST(Scenarios, a_malformed_file_is_an_error_naming_the_field) {
   try {
     loadScenarios(path);
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("scenarios.x.start"), std::string::npos) << e.what();
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(e.field(), "scenarios.x.start");
+    EXPECT_EQ(std::string(e.what()), path + ": scenarios.x.start: expected [x, y]");
   }
-  EXPECT_THROW(loadScenarios("/nonexistent/scenarios.yaml"), std::runtime_error);
+  EXPECT_THROW(loadScenarios("/nonexistent/scenarios.yaml"), util::InvalidInput);
 }
 
 TEST(Geometry, checker_quick_test_gives_the_exact_test_answer_for_segments_grazing_a_disc) {

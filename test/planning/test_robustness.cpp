@@ -46,7 +46,7 @@ class IssueReproducer : public ::testing::TestWithParam<Reproducer> {};
 
 TEST_P(IssueReproducer, is_refused_naming_the_field_and_plans_nothing) {
   const Reproducer& r = GetParam();
-  const std::string error = validate(r.problem, r.options);
+  const std::string error = testing::validationError(r.problem, r.options);
   EXPECT_EQ(error.rfind(r.field, 0), 0u) << r.what << ": '" << error << "'";
   const PlanResult result = plan(r.problem, r.options);
   EXPECT_FALSE(result.success);
@@ -101,20 +101,25 @@ TEST(Ranges, rectangles_and_the_robot_size_have_the_same_ranges_as_circles) {
   const PlannerOptions o = with(0.2);
   Problem p = labScenario("a");
   p.rectangles = {Rectangle{2, 2, 3, 3}, Rectangle{-2e6, 7, 8, 8}};
-  EXPECT_EQ(validate(p, o).rfind("rectangles[1].min_x: must be in [-1e+06, 1e+06] m", 0), 0u)
-      << validate(p, o);
+  EXPECT_EQ(
+      testing::validationError(p, o).rfind("rectangles[1].min_x: must be in [-1e+06, 1e+06] m", 0),
+      0u)
+      << testing::validationError(p, o);
   p.rectangles = {Rectangle{2, 2, 3, 3}};
   p.robot_radius = 1e300;
-  EXPECT_EQ(validate(p, o).rfind("robot_radius: must be in [0, 1e+06] m", 0), 0u) << validate(p, o);
+  EXPECT_EQ(testing::validationError(p, o).rfind("robot_radius: must be in [0, 1e+06] m", 0), 0u)
+      << testing::validationError(p, o);
   p.robot_radius = 0;
   p.clearance = 2e6;
-  EXPECT_EQ(validate(p, o).rfind("clearance: must be in [0, 1e+06] m", 0), 0u) << validate(p, o);
+  EXPECT_EQ(testing::validationError(p, o).rfind("clearance: must be in [0, 1e+06] m", 0), 0u)
+      << testing::validationError(p, o);
   p.clearance = 0;
   p.obstacles.assign(kMaxObstacles / 2, Circle{{50, 50}, 1});
   p.rectangles.assign(kMaxObstacles / 2 + 1, Rectangle{50, 50, 51, 51});
-  EXPECT_EQ(validate(p, o).rfind("obstacles: at most 10000 obstacles and rectangles together", 0),
+  EXPECT_EQ(testing::validationError(p, o).rfind(
+                "obstacles: at most 10000 obstacles and rectangles together", 0),
             0u)
-      << validate(p, o);
+      << testing::validationError(p, o);
 }
 
 TEST(Ranges, the_limits_themselves_are_accepted_and_just_beyond_them_refused) {
@@ -123,20 +128,23 @@ TEST(Ranges, the_limits_themselves_are_accepted_and_just_beyond_them_refused) {
   PlannerOptions o = with(kMinStep);
   o.goal_tolerance = kMaxLength;
   o.max_planning_time = kMaxPlanningTime;
-  EXPECT_EQ(validate(p, o), "");
+  EXPECT_EQ(testing::validationError(p, o), "");
   p.bounds.y_max = 0.9 * kMinBoundsExtent;
   p.goal.y = 0;
-  EXPECT_EQ(validate(p, o).rfind("bounds: width", 0), 0u) << validate(p, o);
+  EXPECT_EQ(testing::validationError(p, o).rfind("bounds: width", 0), 0u)
+      << testing::validationError(p, o);
   p = labScenario("a");
   o.step = 0.9 * kMinStep;
-  EXPECT_EQ(validate(p, o).rfind("step: must be in [1e-06, 1e+06] m", 0), 0u) << validate(p, o);
+  EXPECT_EQ(testing::validationError(p, o).rfind("step: must be in [1e-06, 1e+06] m", 0), 0u)
+      << testing::validationError(p, o);
   o.step = 0.2;
   o.goal_tolerance = 1.1 * kMaxLength;
-  EXPECT_EQ(validate(p, o).rfind("goal_tolerance", 0), 0u);
+  EXPECT_EQ(testing::validationError(p, o).rfind("goal_tolerance", 0), 0u);
   o.goal_tolerance = 1e-3;
   for (double t : {-1.0, 1.1 * kMaxPlanningTime, std::numeric_limits<double>::quiet_NaN()}) {
     o.max_planning_time = t;
-    EXPECT_EQ(validate(p, o).rfind("max_planning_time", 0), 0u) << t << ": " << validate(p, o);
+    EXPECT_EQ(testing::validationError(p, o).rfind("max_planning_time", 0), 0u)
+        << t << ": " << testing::validationError(p, o);
   }
 }
 
@@ -287,7 +295,7 @@ TEST(SupportedRange, every_node_is_finite_and_inside_the_bounds) {
         with(logUniform(kMinStep, kMaxLength), 1500, unit(rng), static_cast<Algorithm>(k % 3));
     o.goal_tolerance = 0;
     o.collision = k % 2 ? CollisionCheck::kSegments : CollisionCheck::kPoints;
-    ASSERT_EQ(validate(p, o), "") << k;
+    ASSERT_EQ(testing::validationError(p, o), "") << k;
     const PlanResult r = plan(p, o);
     for (const Point2& n : r.tree.nodes) {
       ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y)) << k;

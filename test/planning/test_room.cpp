@@ -94,7 +94,7 @@ TEST(Room, scenario_comes_from_both_world_files) {
   ASSERT_EQ(furnished.rectangles.size(), 3u);
   EXPECT_EQ(furnished.rectangles[0].max_x, 1.6);  // the sofa
   EXPECT_EQ(furnished.robot_radius, 0.17);
-  EXPECT_THROW(loadRoom(kConfig + "/no_such_world.yaml"), std::runtime_error);
+  EXPECT_THROW(loadRoom(kConfig + "/no_such_world.yaml"), util::InvalidInput);
 
   PlannerOptions options;
   options.collision = CollisionCheck::kSegments;
@@ -127,13 +127,15 @@ TEST(Room, path_around_the_bench_keeps_the_robot_clear_of_everything) {
 TEST(Room, clearance_grows_the_margin_and_the_robot_radius_shrinks_the_bounds) {
   Problem p = benchQuery();
   p.clearance = 0.05;
-  EXPECT_EQ(validate(p, {}), "");
+  EXPECT_EQ(testing::validationError(p, {}), "");
   p.goal = {3.0, 4.51};  // 0.21 from the bench's top edge: free for 0.17, not with 0.22
-  EXPECT_EQ(validate(p, {}).rfind("goal: inside rectangles[2]", 0), 0u) << validate(p, {});
+  EXPECT_EQ(testing::validationError(p, {}).rfind("goal: inside rectangles[2]", 0), 0u)
+      << testing::validationError(p, {});
   p.clearance = 0;
-  EXPECT_EQ(validate(p, {}), "");
+  EXPECT_EQ(testing::validationError(p, {}), "");
   p.start = {0.1, 2.4};  // the disc would stick into the left wall
-  EXPECT_EQ(validate(p, {}).rfind("start: (0.1, 2.4) is outside the bounds", 0), 0u);
+  EXPECT_EQ(testing::validationError(p, {}).rfind("start: (0.1, 2.4) is outside the bounds", 0),
+            0u);
 }
 
 TEST(Room, bad_rectangles_and_robot_sizes_are_rejected_naming_the_field) {

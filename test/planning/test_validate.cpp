@@ -25,7 +25,7 @@ TEST_P(RejectsBadInput, with_a_message_naming_the_field_and_plans_nothing) {
   Problem problem = testing::labScenario("a");
   PlannerOptions options;
   GetParam().spoil(problem, options);
-  const std::string error = validate(problem, options);
+  const std::string error = testing::validationError(problem, options);
   EXPECT_EQ(error.rfind(GetParam().field, 0), 0u) << GetParam().what << ": '" << error << "'";
   const PlanResult r = plan(problem, options);
   EXPECT_FALSE(r.success);
@@ -105,14 +105,29 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Validate, accepts_the_lab_scenarios_with_the_lab_defaults) {
   for (const char* name : {"a", "b", "c", "d"}) {
-    EXPECT_EQ(validate(testing::labScenario(name), PlannerOptions{}), "") << name;
+    EXPECT_EQ(testing::validationError(testing::labScenario(name), PlannerOptions{}), "") << name;
   }
 }
 
 TEST(Validate, the_cap_is_inclusive) {
   PlannerOptions options;
   options.max_iterations = 100000;
-  EXPECT_EQ(validate(testing::labScenario("a"), options, 100000), "");
+  EXPECT_EQ(testing::validationError(testing::labScenario("a"), options, 100000), "");
+}
+
+TEST(Validate, throws_invalid_input_that_holds_the_field_path_and_the_problem_apart) {
+  Problem problem = testing::labScenario("a");
+  problem.rectangles = {{6, 1, 7, 2}, {3, 7, 2, 8}};
+  try {
+    validate(problem, PlannerOptions{});
+    FAIL() << "accepted an inverted rectangle";
+  } catch (const util::InvalidInput& invalid) {
+    EXPECT_EQ(invalid.field(), "rectangles[1].max_x");
+    EXPECT_EQ(invalid.problem(), "must be > min_x (got 2 <= 3: an empty or inverted rectangle)");
+    EXPECT_STREQ(invalid.what(),
+                 "rectangles[1].max_x: must be > min_x (got 2 <= 3: an empty or "
+                 "inverted rectangle)");
+  }
 }
 
 }  // namespace

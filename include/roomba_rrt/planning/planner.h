@@ -16,7 +16,7 @@
 
 namespace roomba_rrt::planning {
 
-/// Validates (failure with validate()'s message if invalid, nothing planned), then runs
+/// Validates (failure with the message of validate()'s InvalidInput, nothing planned), then runs
 /// options.algorithm with a fresh MatlabRandom(options.seed), the index options.nearest and the
 /// collision mode options.collision, and smooths the path when options.smooth is set.
 /// A start already within goal_tolerance of the goal is the one-point path [start], length 0.

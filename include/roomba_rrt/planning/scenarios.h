@@ -6,11 +6,12 @@
 
 #include "roomba_rrt/planning/problem.h"
 #include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::planning {
 
 /// Reads a scenario file (see config/rrt_scenarios.yaml for the format). Throws
-/// std::runtime_error naming the file and the field on a malformed file.
+/// util::InvalidInput naming the file and the field on a malformed file.
 std::map<std::string, Problem> loadScenarios(const std::string& path);
 
 /// config/rrt_scenarios.yaml of the source tree this library was built from.
@@ -21,8 +22,8 @@ std::string defaultScenarioFile();
 /// goal = the robot's initial position (callers set their own).
 Problem roomProblem(const sim::World& world);
 
-/// roomProblem() of a world file (config/roomba_world.yaml format). Throws std::runtime_error
-/// naming the file and the bad parameter.
+/// roomProblem() of a world file (config/roomba_world.yaml format). Throws util::InvalidInput
+/// naming the file and the bad parameter (sim::loadWorld()).
 Problem loadRoom(const std::string& world_file);
 
 }  // namespace roomba_rrt::planning

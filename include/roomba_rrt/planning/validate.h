@@ -1,16 +1,16 @@
 // Input checks with messages that name the offending field.
 #pragma once
 
-#include <string>
-
 #include "roomba_rrt/planning/limits.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::planning {
 
-/// Returns "" when the query can be planned, otherwise one message naming the field, e.g.
-/// "start: inside obstacle 0", "step: must be > 0 (got -1)", "obstacles[2].radius: negative".
+/// Throws util::InvalidInput naming the first field the query cannot be planned with, e.g.
+/// "start: inside obstacle 0", "step: must be in [1e-06, 1e+06] m (got -1)",
+/// "obstacles[2].radius: must be in [0, 1e+06] m (got -1)"; returns when it can be planned.
 /// Checks: NaN/Inf anywhere; empty or inverted bounds, or a span beyond the double range; negative
 /// radius; a rectangle with a NaN corner, or empty or inverted ("rectangles[2].max_x: must be >
 /// min_x"); robot_radius or clearance NaN, negative, or too big for the bounds; start/goal outside
@@ -18,7 +18,7 @@ namespace roomba_rrt::planning {
 /// goal_bias outside [0, 1]; max_iterations < 1 or above `max_iterations_cap`; goal_tolerance < 0;
 /// max_rejection_tries < 1; smoothing_tries < 0; and the supported ranges of limits.h (coordinates,
 /// bounds extent, step, goal_tolerance, radius, obstacle count, max_planning_time).
-std::string validate(const Problem& problem, const PlannerOptions& options,
-                     int max_iterations_cap = kDefaultMaxIterationsCap);
+void validate(const Problem& problem, const PlannerOptions& options,
+              int max_iterations_cap = kDefaultMaxIterationsCap);
 
 }  // namespace roomba_rrt::planning

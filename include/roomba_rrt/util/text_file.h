@@ -6,19 +6,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <stdexcept>
 #include <string>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::util {
 
-/// The whole text of `path`. Throws std::invalid_argument "<path>: cannot read the <what> (...)"
+/// The whole text of `path`. Throws InvalidInput "<path>: cannot read the <what> (...)"
 /// when it does not exist, is not a regular file or cannot be read, and "<path>: the <what> has
 /// N bytes; at most M are supported" when it is larger than `max_bytes`.
 inline std::string readTextFile(const std::string& path, std::size_t max_bytes,
                                 const std::string& what) {
-  const auto fail = [&](const std::string& problem) {
-    throw std::invalid_argument(path + ": " + problem);
-  };
+  const auto fail = [&](const std::string& problem) { throw InvalidInput("", problem, path); };
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (error || !std::filesystem::exists(status))
