@@ -7,25 +7,24 @@
 #include <cmath>
 #include <initializer_list>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::sim {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& name, const std::string& problem) {
-  throw std::invalid_argument(name + " " + problem);
-}
+using util::entry;
+using util::InvalidInput;
+using util::member;
+using util::show;
 
-std::string show(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
+[[noreturn]] void fail(const std::string& field, const std::string& problem) {
+  throw InvalidInput(field, problem);
 }
 
 /// value ∈ (0, max].
@@ -40,17 +39,17 @@ void requireRange(const std::string& name, double value, double min, double max)
     fail(name, "must be a number in [" + show(min) + ", " + show(max) + "], got " + show(value));
 }
 
-/// Every named value under `prefix` ("initial_pose" + "/x") must be finite.
+/// Every named value under `prefix` ("initial_pose" + ".x") must be finite.
 void requireFinite(const std::string& prefix,
                    std::initializer_list<std::pair<const char*, double>> values) {
   for (const auto& [key, value] : values) {
-    requireRange(prefix + "/" + key, value, -WorldLimits::kMaxCoordinate,
+    requireRange(member(prefix, key), value, -WorldLimits::kMaxCoordinate,
                  WorldLimits::kMaxCoordinate);
   }
 }
 
-/// A YAML mapping read key by key, naming every value by its path ("robot/radius",
-/// "furniture/circles[2]/x"); finish() rejects the keys nobody asked for (typos).
+/// A YAML mapping read key by key, naming every value by its path ("robot.radius",
+/// "furniture.circles[2].x"); finish() rejects the keys nobody asked for (typos).
 class Section {
  public:
   Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
@@ -64,7 +63,7 @@ class Section {
     }
   }
   std::string name(const std::string& key) const {
-    return path_.empty() ? key : key.empty() ? path_ : path_ + "/" + key;
+    return key.empty() ? path_ : member(path_, key);
   }
   YAML::Node child(const std::string& key) {
     known_.insert(key);
@@ -97,7 +96,7 @@ void readList(Section& parent, const std::string& key, std::vector<Item>& items,
                                std::to_string(WorldLimits::kMaxFurniture) + " are supported");
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
-    Section section(list[i], parent.name(key) + "[" + std::to_string(i) + "]");
+    Section section(list[i], entry(parent.name(key), i));
     Item item;
     read(section, item);
     section.finish();
@@ -194,30 +193,31 @@ void validateRobots(const World& world) {
   std::set<std::string> names;
   for (std::size_t i = 0; i < robots.size(); ++i) {
     const RobotSpec& r = robots[i];
-    const std::string prefix = "robots[" + std::to_string(i) + "]";
+    const std::string prefix = entry("robots", i);
     if (!isRobotName(r.name)) {
-      fail(prefix + "/name",
+      fail(member(prefix, "name"),
            "must start with a letter and hold only letters, digits and '_', got '" + r.name + "'");
     }
-    if (!names.insert(r.name).second) fail(prefix + "/name", "repeats '" + r.name + "'");
-    requirePositiveAtMost(prefix + "/radius", r.radius, WorldLimits::kMaxRobotRadius);
-    requirePositiveAtMost(prefix + "/max_linear_speed", r.max_linear_speed, WorldLimits::kMaxSpeed);
-    requirePositiveAtMost(prefix + "/max_angular_speed", r.max_angular_speed,
+    if (!names.insert(r.name).second) fail(member(prefix, "name"), "repeats '" + r.name + "'");
+    requirePositiveAtMost(member(prefix, "radius"), r.radius, WorldLimits::kMaxRobotRadius);
+    requirePositiveAtMost(member(prefix, "max_linear_speed"), r.max_linear_speed,
+                          WorldLimits::kMaxSpeed);
+    requirePositiveAtMost(member(prefix, "max_angular_speed"), r.max_angular_speed,
                           WorldLimits::kMaxSpeed);
     if (r.max_linear_speed * world.step >= r.radius) {
       fail("step", "is too long: " + r.name + " would move more than its radius in one step");
     }
     const Pose2D& p = r.initial_pose;
-    requireFinite(prefix + "/initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
+    requireFinite(member(prefix, "initial_pose"), {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
     if (penetrates(world, r.radius, p.x, p.y)) {
-      fail(prefix + "/initial_pose", "(" + show(p.x) + ", " + show(p.y) + ") puts " + r.name +
-                                         "'s disc inside a wall or a piece of furniture");
+      fail(member(prefix, "initial_pose"), "(" + show(p.x) + ", " + show(p.y) + ") puts " + r.name +
+                                               "'s disc inside a wall or a piece of furniture");
     }
     for (std::size_t j = 0; j < i; ++j) {
       const RobotSpec& o = robots[j];
       const double reach = r.radius + o.radius;
       if (std::hypot(p.x - o.initial_pose.x, p.y - o.initial_pose.y) < reach) {
-        fail(prefix + "/initial_pose", "puts " + r.name + " on top of " + o.name);
+        fail(member(prefix, "initial_pose"), "puts " + r.name + " on top of " + o.name);
       }
     }
   }
@@ -227,11 +227,11 @@ void validateRobots(const World& world) {
 
 void validate(const World& world) {
   using L = WorldLimits;
-  requirePositiveAtMost("room/width", world.width, L::kMaxRoomSize);
-  requirePositiveAtMost("room/height", world.height, L::kMaxRoomSize);
-  requirePositiveAtMost("robot/radius", world.robot_radius, L::kMaxRobotRadius);
-  requirePositiveAtMost("robot/max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
-  requirePositiveAtMost("robot/max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
+  requirePositiveAtMost("room.width", world.width, L::kMaxRoomSize);
+  requirePositiveAtMost("room.height", world.height, L::kMaxRoomSize);
+  requirePositiveAtMost("robot.radius", world.robot_radius, L::kMaxRobotRadius);
+  requirePositiveAtMost("robot.max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
+  requirePositiveAtMost("robot.max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
   requireRange("step", world.step, L::kMinStep, L::kMaxStep);
   requireRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
   requirePositiveAtMost("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
@@ -255,7 +255,7 @@ void validate(const World& world) {
              " are supported");
   }
   for (const auto& [name, size] :
-       {std::pair{"room/width", world.width}, {"room/height", world.height}}) {
+       {std::pair{"room.width", world.width}, {"room.height", world.height}}) {
     const double diameter = 2 * world.robot_radius;
     if (size <= diameter) {
       fail(name, "(" + show(size) + ") must exceed the robot's diameter " + show(diameter));
@@ -266,17 +266,17 @@ void validate(const World& world) {
   }
   for (std::size_t i = 0; i < world.circles.size(); ++i) {
     const Circle& c = world.circles[i];
-    const std::string name = "furniture/circles[" + std::to_string(i) + "]";
+    const std::string name = entry("furniture.circles", i);
     requireFinite(name, {{"x", c.center.x}, {"y", c.center.y}});
-    requirePositiveAtMost(name + "/radius", c.radius, WorldLimits::kMaxRoomSize);
+    requirePositiveAtMost(member(name, "radius"), c.radius, WorldLimits::kMaxRoomSize);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
     const Rectangle& b = world.rectangles[i];
-    const std::string name = "furniture/rectangles[" + std::to_string(i) + "]";
+    const std::string name = entry("furniture.rectangles", i);
     requireFinite(name,
                   {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}});
-    if (!(b.max_x > b.min_x)) fail(name + "/max_x", "must be greater than min_x");
-    if (!(b.max_y > b.min_y)) fail(name + "/max_y", "must be greater than min_y");
+    if (!(b.max_x > b.min_x)) fail(member(name, "max_x"), "must be greater than min_x");
+    if (!(b.max_y > b.min_y)) fail(member(name, "max_y"), "must be greater than min_y");
   }
   const Pose2D& p = world.initial_pose;
   requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
@@ -300,25 +300,26 @@ World buildWorld(const YAML::Node& root, const std::string& source) {
     World world = readWorld(root);
     validate(world);
     return world;
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": " + e.what());
+  } catch (const InvalidInput& e) {
+    throw e.in(source);
   } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(source + ": " + e.what());
+    throw InvalidInput("", e.what(), source);
   }
 }
 }  // namespace
 
 World parseWorld(const std::string& yaml_text, const std::string& source) {
   if (yaml_text.size() > WorldLimits::kMaxFileBytes) {
-    throw std::invalid_argument(source + ": the world has " + std::to_string(yaml_text.size()) +
-                                " bytes; at most " + std::to_string(WorldLimits::kMaxFileBytes) +
-                                " are supported");
+    throw InvalidInput("",
+                       "the world has " + std::to_string(yaml_text.size()) + " bytes; at most " +
+                           std::to_string(WorldLimits::kMaxFileBytes) + " are supported",
+                       source);
   }
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
   } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(source + ": not valid YAML: " + e.what());
+    throw InvalidInput("", std::string("not valid YAML: ") + e.what(), source);
   }
   return buildWorld(root, source);
 }

@@ -28,11 +28,11 @@ void expectRefused(const Outcome& outcome, const std::string& parameter) {
 }
 
 TEST(SimInvalidWorld, negative_radius_exits_naming_robot_radius) {
-  expectRefused(runSim("sim_negative_radius", "_robot/radius:=-0.17"), "robot/radius");
+  expectRefused(runSim("sim_negative_radius", "_robot/radius:=-0.17"), "robot.radius");
 }
 
 TEST(SimInvalidWorld, room_smaller_than_the_robot_exits_naming_room_width) {
-  expectRefused(runSim("sim_tiny_room", "_room/width:=0.2"), "room/width");
+  expectRefused(runSim("sim_tiny_room", "_room/width:=0.2"), "room.width");
 }
 
 TEST(SimInvalidWorld, initial_pose_inside_furniture_exits_naming_initial_pose) {
@@ -53,7 +53,7 @@ TEST(SimInvalidWorld, parameter_of_the_wrong_type_exits_naming_it) {
 
 // Issue 11: these aborted with std::bad_alloc or std::ios_failure, or ran for minutes.
 TEST(SimInvalidWorld, a_room_too_large_for_the_coverage_grid_exits_naming_room_width) {
-  expectRefused(runSim("sim_huge_room", "_room/width:=1e5 _room/height:=1e5"), "room/width");
+  expectRefused(runSim("sim_huge_room", "_room/width:=1e5 _room/height:=1e5"), "room.width");
 }
 
 TEST(SimInvalidWorld, a_coverage_cell_too_small_exits_naming_coverage_cell_size) {
@@ -65,7 +65,7 @@ TEST(SimInvalidWorld, a_coverage_cell_too_small_exits_naming_coverage_cell_size)
 }
 
 TEST(SimInvalidWorld, a_huge_robot_exits_naming_robot_radius) {
-  expectRefused(runSim("sim_huge_robot", "_robot/radius:=1e300"), "robot/radius");
+  expectRefused(runSim("sim_huge_robot", "_robot/radius:=1e300"), "robot.radius");
 }
 
 TEST(SimInvalidWorld, a_directory_as_world_file_exits_naming_it) {

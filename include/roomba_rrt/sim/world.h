@@ -56,7 +56,7 @@ struct World {
 /// The supported ranges (validate() refuses anything outside them, naming the parameter). They
 /// keep every computation finite and the coverage grid's memory and set-up time small.
 struct WorldLimits {
-  static constexpr double kMaxRoomSize = 1000;        ///< room/width, room/height ≤ this, m
+  static constexpr double kMaxRoomSize = 1000;        ///< room.width, room.height ≤ this, m
   static constexpr double kMaxRobotRadius = 10;       ///< m
   static constexpr double kMaxSpeed = 100;            ///< m/s and rad/s
   static constexpr double kMinStep = 1e-4;            ///< s
@@ -76,15 +76,15 @@ struct WorldLimits {
 /// (name "") made of robot_radius, the speed limits and initial_pose.
 std::vector<RobotSpec> robotsOf(const World& world);
 
-/// Throws std::invalid_argument naming the first bad parameter (e.g. "robot/radius must be a
-/// finite number in (0, 10], got -1"): values outside WorldLimits, a room smaller than the robot,
-/// furniture with a non-positive size, a coverage grid too large for its limits, an initial pose
-/// that is not finite or puts the disc into a wall or furniture; for named robots also a bad or
-/// repeated name and two robots whose discs overlap.
+/// Throws util::InvalidInput naming the first bad parameter by its path (e.g. "robot.radius: must
+/// be a finite number in (0, 10], got -1", "robots[1].name: repeats 'a'"): values outside
+/// WorldLimits, a room smaller than the robot, furniture with a non-positive size, a coverage grid
+/// too large for its limits, an initial pose that is not finite or puts the disc into a wall or
+/// furniture; for named robots also a bad or repeated name and two robots whose discs overlap.
 void validate(const World& world);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
-/// defaults above. Throws std::invalid_argument naming the file and the bad parameter, for a
+/// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
 /// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
 /// of the wrong type, an unknown key or a world that fails validate().
 World loadWorld(const std::string& yaml_path);
