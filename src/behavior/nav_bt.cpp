@@ -1,8 +1,10 @@
 #include "roomba_rrt/behavior/nav_bt.h"
 
 #include <cmath>
+#include <utility>
 
 #include "roomba_rrt/behavior/roomba_tree.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -70,9 +72,11 @@ NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string&
 }
 
 void NavBt::setGoal(const sim::Pose2D& goal) {
-  if (!std::isfinite(goal.x)) throw std::invalid_argument("goal.x must be finite");
-  if (!std::isfinite(goal.y)) throw std::invalid_argument("goal.y must be finite");
-  if (!std::isfinite(goal.theta)) throw std::invalid_argument("goal.theta must be finite");
+  for (const auto& [field, value] : {std::pair<const char*, double>{"goal.x", goal.x},
+                                     {"goal.y", goal.y},
+                                     {"goal.theta", goal.theta}}) {
+    if (!std::isfinite(value)) throw util::InvalidInput(field, "must be finite");
+  }
   tree_.halt();
   goal_->set(goal);
   context_.outcome = GoalOutcome::kActive;

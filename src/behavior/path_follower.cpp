@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
-
 #include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -13,8 +12,7 @@ using planning::Point2;
 
 void requirePositive(const char* field, double value) {
   if (!(std::isfinite(value) && value > 0)) {
-    throw std::invalid_argument(std::string(field) + " must be finite and > 0, got " +
-                                std::to_string(value));
+    throw util::InvalidInput(field, "must be finite and > 0, got " + util::show(value));
   }
 }
 
@@ -42,8 +40,9 @@ void validate(const FollowerParams& p) {
   requirePositive("heading_gain", p.heading_gain);
   requirePositive("rate", p.rate);
   if (p.max_deviation <= p.xy_tolerance) {
-    throw std::invalid_argument("max_deviation must be > xy_tolerance, got " +
-                                std::to_string(p.max_deviation));
+    throw util::InvalidInput("max_deviation", "must be > xy_tolerance (" +
+                                                  util::show(p.xy_tolerance) + "), got " +
+                                                  util::show(p.max_deviation));
   }
 }
 

@@ -4,24 +4,16 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
-#include <stdexcept>
-
+#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
 
 namespace roomba_rrt::behavior {
 namespace {
 
-std::string show(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
+using util::InvalidInput;
 
 void require(bool ok, const char* field, const char* rule, double value) {
-  if (!ok) {
-    throw std::invalid_argument(std::string(field) + " must be " + rule + ", got " + show(value));
-  }
+  if (!ok) throw InvalidInput(field, std::string("must be ") + rule + ", got " + util::show(value));
 }
 
 }  // namespace
@@ -69,22 +61,22 @@ RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& 
   try {
     const YAML::Node root = YAML::Load(yaml_text);
     if (root.IsNull()) return p;  // an empty file keeps every default
-    if (!root.IsMap()) throw std::invalid_argument("the top level must be a map of parameters");
+    if (!root.IsMap()) throw InvalidInput("", "the top level must be a map of parameters");
     for (const auto& entry : root) {
       const std::string key = entry.first.as<std::string>();
       const auto field = fields.find(key);
-      if (field == fields.end()) throw std::invalid_argument("unknown parameter '" + key + "'");
+      if (field == fields.end()) throw InvalidInput(key, "is not a known parameter");
       try {
         *field->second = entry.second.as<double>();
       } catch (const YAML::Exception&) {
-        throw std::invalid_argument(key + " must be a number");
+        throw InvalidInput(key, "must be a number");
       }
     }
     validate(p);
   } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(source + ": " + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": " + e.what());
+    throw InvalidInput("", e.what(), source);
+  } catch (const InvalidInput& e) {
+    throw e.in(source);
   }
   return p;
 }

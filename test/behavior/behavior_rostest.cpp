@@ -183,7 +183,7 @@ TEST(BehaviorNodeStartup, an_invalid_parameter_file_stops_roomba_fsm_naming_the_
   const std::string config = writeTemp("behavior.yaml", "angular_speed: -1\n");
   const Outcome outcome = runNode("roomba_fsm", "_config_file:=" + config);
   EXPECT_EQ(outcome.exit_code, 1) << outcome.output;
-  EXPECT_NE(outcome.output.find("angular_speed must be in (0, 100], got -1"), std::string::npos)
+  EXPECT_NE(outcome.output.find("angular_speed: must be in (0, 100], got -1"), std::string::npos)
       << outcome.output;
   std::remove(config.c_str());
 }

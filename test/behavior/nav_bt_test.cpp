@@ -129,7 +129,7 @@ TEST(NavBt, a_non_finite_goal_is_refused_naming_the_field) {
     loop.nav.setGoal({1.0, std::nan(""), 0.0});
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "goal.y must be finite");
+    EXPECT_STREQ(e.what(), "goal.y: must be finite");
   }
 }
 

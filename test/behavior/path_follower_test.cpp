@@ -133,7 +133,8 @@ TEST(PathFollower, bad_parameters_name_the_field) {
     PathFollower f(p);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("max_angular_accel must be finite and > 0", 0), 0u);
+    EXPECT_EQ(std::string(e.what()).rfind("max_angular_accel: must be finite and > 0, got nan", 0),
+              0u);
   }
 }
 

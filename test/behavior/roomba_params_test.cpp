@@ -44,32 +44,32 @@ TEST(RoombaParams, missing_keys_keep_their_defaults) {
 }
 
 TEST(RoombaParams, errors_name_the_source_and_the_field) {
-  EXPECT_EQ(errorOf("forward_sped: 0.3"), "test.yaml: unknown parameter 'forward_sped'");
-  EXPECT_EQ(errorOf("angular_speed: fast"), "test.yaml: angular_speed must be a number");
-  EXPECT_EQ(errorOf("angular_speed: 0"), "test.yaml: angular_speed must be in (0, 100], got 0");
+  EXPECT_EQ(errorOf("forward_sped: 0.3"), "test.yaml: forward_sped: is not a known parameter");
+  EXPECT_EQ(errorOf("angular_speed: fast"), "test.yaml: angular_speed: must be a number");
+  EXPECT_EQ(errorOf("angular_speed: 0"), "test.yaml: angular_speed: must be in (0, 100], got 0");
   EXPECT_EQ(errorOf("backward_speed: 0.1"),
-            "test.yaml: backward_speed must be in [-100, 0) (it drives backwards), got 0.1");
-  EXPECT_EQ(errorOf("rate: .nan"), "test.yaml: rate must be finite, got nan");
+            "test.yaml: backward_speed: must be in [-100, 0) (it drives backwards), got 0.1");
+  EXPECT_EQ(errorOf("rate: .nan"), "test.yaml: rate: must be finite, got nan");
   EXPECT_EQ(errorOf("[1, 2]"), "test.yaml: the top level must be a map of parameters");
 }
 
 // Issue 11: a rate of 1e9 froze the node, 1e308 flooded /cmd_vel, 1e-300 died with a message
 // naming no parameter; a time of 1e300 overflowed the tick count.
 TEST(RoombaParams, values_outside_the_supported_ranges_are_named) {
-  EXPECT_EQ(errorOf("rate: 1.0e9"), "test.yaml: rate must be in [1, 1000] Hz, got 1e+09");
-  EXPECT_EQ(errorOf("rate: 1.0e-300"), "test.yaml: rate must be in [1, 1000] Hz, got 1e-300");
-  EXPECT_EQ(errorOf("rate: 0.5"), "test.yaml: rate must be in [1, 1000] Hz, got 0.5");
+  EXPECT_EQ(errorOf("rate: 1.0e9"), "test.yaml: rate: must be in [1, 1000] Hz, got 1e+09");
+  EXPECT_EQ(errorOf("rate: 1.0e-300"), "test.yaml: rate: must be in [1, 1000] Hz, got 1e-300");
+  EXPECT_EQ(errorOf("rate: 0.5"), "test.yaml: rate: must be in [1, 1000] Hz, got 0.5");
   EXPECT_EQ(errorOf("move_in_spiral_time: 1e300"),
-            "test.yaml: move_in_spiral_time must be in [0, 1e6] s, got 1e+300");
-  EXPECT_EQ(errorOf("go_back_time: -1"), "test.yaml: go_back_time must be in [0, 1e6] s, got -1");
+            "test.yaml: move_in_spiral_time: must be in [0, 1e6] s, got 1e+300");
+  EXPECT_EQ(errorOf("go_back_time: -1"), "test.yaml: go_back_time: must be in [0, 1e6] s, got -1");
   EXPECT_EQ(errorOf("forward_speed: 1000"),
-            "test.yaml: forward_speed must be in (0, 100], got 1000");
+            "test.yaml: forward_speed: must be in (0, 100], got 1000");
   EXPECT_EQ(errorOf("backward_speed: -1e200"),
-            "test.yaml: backward_speed must be in [-100, 0) (it drives backwards), got -1e+200");
+            "test.yaml: backward_speed: must be in [-100, 0) (it drives backwards), got -1e+200");
   EXPECT_EQ(errorOf("spiral_factor: 1e4"),
-            "test.yaml: spiral_factor must be in [0, 1000], got 10000");
+            "test.yaml: spiral_factor: must be in [0, 1000], got 10000");
   EXPECT_EQ(errorOf("initial_radius_spiral: 2000"),
-            "test.yaml: initial_radius_spiral must be in (0, 1000], got 2000");
+            "test.yaml: initial_radius_spiral: must be in (0, 1000], got 2000");
 }
 
 TEST(RoombaParams, the_range_limits_themselves_are_accepted) {

@@ -32,7 +32,7 @@ class NavBt {
   NavBt(const NavBt&) = delete;
   NavBt& operator=(const NavBt&) = delete;
 
-  /// A new goal (std::invalid_argument naming the component when it is not finite).
+  /// A new goal (util::InvalidInput naming the component when it is not finite).
   void setGoal(const sim::Pose2D& goal);
   void cancelGoal();
 

@@ -33,7 +33,7 @@ struct FollowerParams {
   double dt() const { return 1.0 / rate; }
 };
 
-/// Throws std::invalid_argument naming the first bad field (non-finite, or ≤ 0; the tolerances
+/// Throws util::InvalidInput naming the first bad field (non-finite, or ≤ 0; the tolerances
 /// and lookahead must be > 0, max_deviation > xy_tolerance).
 void validate(const FollowerParams& params);
 

@@ -34,13 +34,13 @@ struct RoombaParamLimits {
   static constexpr double kMaxRate = 1000;
 };
 
-/// Throws std::invalid_argument naming the first bad field (e.g. "angular_speed must be in
+/// Throws util::InvalidInput naming the first bad field (e.g. "angular_speed: must be in
 /// (0, 100], got 0"): non-finite values, values outside RoombaParamLimits, speeds of the wrong
 /// sign.
 void validate(const RoombaParams& params);
 
 /// Reads the parameters from a YAML file (format: config/roomba_behavior.yaml); missing keys keep
-/// the defaults. Throws std::invalid_argument naming the file and the bad key for an unreadable
+/// the defaults. Throws util::InvalidInput naming the file and the bad key for an unreadable
 /// file, a non-number, an unknown key, or values that fail validate().
 RoombaParams loadRoombaParams(const std::string& yaml_path);
 
