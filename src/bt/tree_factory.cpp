@@ -39,8 +39,8 @@ TreeFactory::Builder namedBuilder() {
 
 [[noreturn]] void fail(const std::string& source, const XMLElement& element,
                        const std::string& message) {
-  throw TreeFileError(source, element.GetLineNum(),
-                      "<" + std::string(element.Name()) + ">: " + message);
+  throw TreeFileError(source, element.GetLineNum(), "<" + std::string(element.Name()) + ">",
+                      message);
 }
 
 /// "port 'goal' (Pose2D: the goal pose)" for messages.
@@ -67,8 +67,9 @@ struct TreeFactory::BuildState {
   int nodes = 0;
 };
 
-TreeFileError::TreeFileError(const std::string& source, int line, const std::string& message)
-    : std::runtime_error(source + ":" + std::to_string(line) + ": " + message), line_(line) {}
+TreeFileError::TreeFileError(const std::string& source, int line, const std::string& element,
+                             const std::string& problem)
+    : util::InvalidInput(element, problem, source + ":" + std::to_string(line)), line_(line) {}
 
 const std::string& NodeSpec::text(const std::string& port) const {
   const auto it = attributes.find(port);
@@ -168,10 +169,10 @@ Tree TreeFactory::buildFromText(const std::string& xml, const std::string& sourc
 Tree TreeFactory::buildFromFile(const std::string& path,
                                 std::shared_ptr<Blackboard> blackboard) const {
   std::ifstream file(path);
-  if (!file) throw TreeFileError(path, 0, "cannot open the tree file");
+  if (!file) throw TreeFileError(path, 0, "", "cannot open the tree file");
   std::stringstream text;
   text << file.rdbuf();
-  if (file.bad()) throw TreeFileError(path, 0, "cannot read the tree file");
+  if (file.bad()) throw TreeFileError(path, 0, "", "cannot read the tree file");
   return buildFromText(text.str(), path, std::move(blackboard));
 }
 
@@ -180,15 +181,13 @@ Tree TreeFactory::buildFromText(const std::string& xml, const std::string& sourc
   if (!blackboard) throw std::invalid_argument("buildFromText: the blackboard is null");
   tinyxml2::XMLDocument document;
   if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    throw TreeFileError(source, document.ErrorLineNum(),
+    throw TreeFileError(source, document.ErrorLineNum(), "",
                         std::string("malformed XML: ") + document.ErrorStr());
   }
   const XMLElement* root = document.RootElement();
-  const auto bad = [&](const XMLElement* e, const std::string& message) {
-    return TreeFileError(source, e ? e->GetLineNum() : 0, message);
-  };
   if (!root || std::string(root->Name()) != "root") {
-    throw bad(root, "the document element must be <root>");
+    throw TreeFileError(source, root ? root->GetLineNum() : 0, "",
+                        "the document element must be <root>");
   }
 
   // Pick the <BehaviorTree> to build: the one named by main_tree_to_execute, or the only one.
@@ -203,22 +202,21 @@ Tree TreeFactory::buildFromText(const std::string& xml, const std::string& sourc
     if (id) {
       const auto [it, fresh] = ids.emplace(id, t->GetLineNum());
       if (!fresh) {
-        throw bad(t, std::string("<BehaviorTree>: ID \"") + id +
-                         "\" is used twice (first on line " + std::to_string(it->second) + ")");
+        fail(source, *t,
+             std::string("ID \"") + id + "\" is used twice (first on line " +
+                 std::to_string(it->second) + ")");
       }
     }
     if (!main_id || (id && std::string(id) == main_id)) chosen = chosen ? chosen : t;
   }
-  if (trees == 0) throw bad(root, "<root>: no <BehaviorTree> element");
+  if (trees == 0) fail(source, *root, "no <BehaviorTree> element");
   if (!main_id && trees > 1) {
-    throw bad(root, "<root>: several <BehaviorTree> elements; name one in main_tree_to_execute");
+    fail(source, *root, "several <BehaviorTree> elements; name one in main_tree_to_execute");
   }
-  if (!chosen) {
-    throw bad(root, std::string("<root>: no <BehaviorTree ID=\"") + main_id + "\">");
-  }
+  if (!chosen) fail(source, *root, std::string("no <BehaviorTree ID=\"") + main_id + "\">");
   if (childElementCount(*chosen) != 1) {
-    throw bad(chosen, "<BehaviorTree>: needs exactly one root node, got " +
-                          std::to_string(childElementCount(*chosen)));
+    fail(source, *chosen,
+         "needs exactly one root node, got " + std::to_string(childElementCount(*chosen)));
   }
 
   BuildState state;

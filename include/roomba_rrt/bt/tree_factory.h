@@ -12,6 +12,7 @@
 #include "roomba_rrt/bt/decorator_node.h"
 #include "roomba_rrt/bt/ports.h"
 #include "roomba_rrt/bt/tree.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace tinyxml2 {
 class XMLElement;
@@ -19,11 +20,15 @@ class XMLElement;
 
 namespace roomba_rrt::bt {
 
-/// A tree file that cannot be built. what() reads "FILE:LINE: <Element>: problem", naming the
-/// element and its line, e.g. "roomba_tree.xml:7: <MoveForward>: a leaf cannot have children".
-class TreeFileError : public std::runtime_error {
+/// A tree file that cannot be built: the invalid input (util::InvalidInput) of a tree file, whose
+/// field is the element and whose source is "FILE:LINE". what() reads "FILE:LINE: <Element>:
+/// problem", e.g. "roomba_tree.xml:7: <MoveForward>: a leaf cannot have children", or
+/// "FILE:LINE: problem" when no element is to blame (malformed XML, an unreadable file: line 0).
+class TreeFileError : public util::InvalidInput {
  public:
-  TreeFileError(const std::string& source, int line, const std::string& message);
+  /// `element` is "<Name>", or "" for the file as a whole.
+  TreeFileError(const std::string& source, int line, const std::string& element,
+                const std::string& problem);
   int line() const { return line_; }
 
  private:
