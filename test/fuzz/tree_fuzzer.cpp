@@ -2,7 +2,6 @@
 // registered) → (if accepted) a few hundred ticks with the bumper pressed now and then.
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 
 #include "roomba_rrt/behavior/roomba_tree.h"
@@ -22,8 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       tree.tick();
     }
     tree.halt();
-  } catch (const std::invalid_argument&) {
-  } catch (const std::runtime_error&) {  // the factory's documented errors
+  } catch (const bt::TreeFileError&) {  // the factory's documented error: a bad tree file
   }
   return 0;
 }

@@ -1,20 +1,20 @@
 // libFuzzer harness: world-file text → parseWorld → (if accepted) a simulator that builds its
-// coverage grid and drives a few steps. Anything but a clean std::invalid_argument is a bug.
+// coverage grid and drives a few steps. Anything but a clean util::InvalidInput is a bug.
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace roomba_rrt::sim;
   World world;
   try {
     world = parseWorld(std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml");
-  } catch (const std::invalid_argument&) {
-    return 0;  // refused with a message: fine
+  } catch (const roomba_rrt::util::InvalidInput&) {
+    return 0;  // refused with a message naming the field: fine
   }
   Simulator simulator(world);
   for (int i = 0; i < 50; ++i)
