@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
+#include <string>
+
 #include "planning_test_support.h"
 #include "roomba_rrt/planning/path_smoothing.h"
 
@@ -146,6 +150,75 @@ TEST(RrtConnect, tree_holds_both_trees_each_with_its_root) {
   int roots = 0;
   for (int p : r.tree.parent) roots += p < 0;
   EXPECT_EQ(roots, 2);
+}
+
+// Every bit of a result: the path's and the tree's coordinates and the tree's parents (FNV-1a).
+std::uint64_t fingerprint(const PlanResult& r) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](const void* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= static_cast<const unsigned char*>(data)[i];
+      h *= 1099511628211ull;
+    }
+  };
+  for (const Point2& p : r.path) {
+    mix(&p.x, sizeof p.x);
+    mix(&p.y, sizeof p.y);
+  }
+  for (int i = 0; i < r.tree.size(); ++i) {
+    mix(&r.tree.nodes[i].x, sizeof(double));
+    mix(&r.tree.nodes[i].y, sizeof(double));
+    mix(&r.tree.parent[i], sizeof(int));
+  }
+  return h;
+}
+
+struct Recorded {
+  const char* scenario;
+  Algorithm algorithm;
+  CollisionCheck collision;
+  bool smooth;
+  int iterations;
+  int tree_size;
+  double length;
+  std::uint64_t fingerprint;
+  const char* message;
+};
+
+// Recorded before the planners shared their extend step and result builder (seed 3, 1000
+// iterations): a change that alters one draw, one node or one message shows here.
+TEST(EveryAlgorithm, reproduces_the_recorded_runs_bit_for_bit) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const Recorded runs[] = {
+      {"a", Algorithm::kRrt, CollisionCheck::kPoints, false, 234, 224, 0x1.c159a1167016fp+3,
+       0xeeec8f37bfbfabeaull, "path found"},
+      {"a", Algorithm::kRrt, CollisionCheck::kSegments, true, 212, 199, 0x1.7844d3334030cp+3,
+       0xd8323fba88dbedf3ull, "path found"},
+      {"a", Algorithm::kRrtConnect, CollisionCheck::kSegments, false, 168, 102,
+       0x1.afcb738c4ef43p+3, 0x7a603765edf1954eull, "path found"},
+      {"a", Algorithm::kRrtStar, CollisionCheck::kSegments, false, 1000, 904, 0x1.70ef4146bd308p+3,
+       0xcb5f910e5f0ea317ull, "path found (best of 1000 iterations)"},
+      {"d", Algorithm::kRrt, CollisionCheck::kPoints, false, 1000, 500, kInf, 0x733f0d1d1961e58full,
+       "no path within 1000 iterations"},
+      {"d", Algorithm::kRrtConnect, CollisionCheck::kSegments, false, 754, 319,
+       0x1.4e42d44f058d8p+4, 0xe6831e0c14ed3ffeull, "path found"},
+      {"d", Algorithm::kRrtStar, CollisionCheck::kSegments, false, 1000, 500, kInf,
+       0x39b34b1e87705c9eull, "no path within 1000 iterations"},
+  };
+  for (const Recorded& run : runs) {
+    PlannerOptions options;
+    options.algorithm = run.algorithm;
+    options.collision = run.collision;
+    options.smooth = run.smooth;
+    options.seed = 3;
+    const PlanResult r = plan(labScenario(run.scenario), options);
+    const std::string what = std::string(run.scenario) + " " + toString(run.algorithm);
+    EXPECT_EQ(r.iterations, run.iterations) << what;
+    EXPECT_EQ(r.tree.size(), run.tree_size) << what;
+    EXPECT_EQ(r.length, run.length) << what;
+    EXPECT_EQ(fingerprint(r), run.fingerprint) << what;
+    EXPECT_EQ(r.message, run.message) << what;
+  }
 }
 
 }  // namespace
