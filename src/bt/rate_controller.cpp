@@ -1,8 +1,9 @@
 #include "roomba_rrt/bt/rate_controller.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::bt {
 
@@ -10,11 +11,10 @@ RateController::RateController(std::string name, double hz, double tick_rate,
                                const Blackboard& clock)
     : DecoratorNode(std::move(name)), clock_(clock), period_(1) {
   if (!(std::isfinite(hz) && hz > 0)) {
-    throw std::invalid_argument("hz must be finite and > 0, got " + std::to_string(hz));
+    throw util::InvalidInput("hz", "must be finite and > 0, got " + util::show(hz));
   }
   if (!(std::isfinite(tick_rate) && tick_rate > 0)) {
-    throw std::invalid_argument("the tick rate must be finite and > 0, got " +
-                                std::to_string(tick_rate));
+    throw util::InvalidInput("tick_rate", "must be finite and > 0, got " + util::show(tick_rate));
   }
   const double ticks = std::round(tick_rate / hz);
   period_ = ticks < 1      ? 1

@@ -3,13 +3,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "roomba_rrt/util/invalid_input.h"
+
 namespace roomba_rrt::bt {
 
 RecoveryNode::RecoveryNode(std::string name, int number_of_retries)
     : ControlNode(std::move(name)), number_of_retries_(number_of_retries) {
   if (number_of_retries < 0) {
-    throw std::invalid_argument("number_of_retries must be >= 0, got " +
-                                std::to_string(number_of_retries));
+    throw util::InvalidInput("number_of_retries",
+                             "must be >= 0, got " + std::to_string(number_of_retries));
   }
 }
 

@@ -1,15 +1,16 @@
 #include "roomba_rrt/bt/repeat_node.h"
 
-#include <stdexcept>
 #include <string>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::bt {
 
 RepeatNode::RepeatNode(std::string name, int num_cycles)
     : DecoratorNode(std::move(name)), num_cycles_(num_cycles) {
   if (num_cycles < 1 && num_cycles != -1) {
-    throw std::invalid_argument("num_cycles must be >= 1 or -1 (forever), got " +
-                                std::to_string(num_cycles));
+    throw util::InvalidInput("num_cycles",
+                             "must be >= 1 or -1 (forever), got " + std::to_string(num_cycles));
   }
 }
 

@@ -1,15 +1,16 @@
 #include "roomba_rrt/bt/retry_node.h"
 
-#include <stdexcept>
 #include <string>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::bt {
 
 RetryNode::RetryNode(std::string name, int num_attempts)
     : DecoratorNode(std::move(name)), num_attempts_(num_attempts) {
   if (num_attempts < 1 && num_attempts != -1) {
-    throw std::invalid_argument("num_attempts must be >= 1 or -1 (unlimited), got " +
-                                std::to_string(num_attempts));
+    throw util::InvalidInput("num_attempts",
+                             "must be >= 1 or -1 (unlimited), got " + std::to_string(num_attempts));
   }
 }
 

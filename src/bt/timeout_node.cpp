@@ -1,13 +1,14 @@
 #include "roomba_rrt/bt/timeout_node.h"
 
-#include <stdexcept>
 #include <string>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::bt {
 
 TimeoutNode::TimeoutNode(std::string name, long ticks)
     : DecoratorNode(std::move(name)), ticks_(ticks) {
-  if (ticks < 1) throw std::invalid_argument("ticks must be >= 1, got " + std::to_string(ticks));
+  if (ticks < 1) throw util::InvalidInput("ticks", "must be >= 1, got " + std::to_string(ticks));
 }
 
 Status TimeoutNode::onTick() {

@@ -147,7 +147,7 @@ void TreeFactory::registerLeaf(const std::string& type, Builder builder) {
 
 void TreeFactory::setTickRate(double hz) {
   if (!(std::isfinite(hz) && hz > 0)) {
-    throw std::invalid_argument("tick rate must be finite and > 0, got " + std::to_string(hz));
+    throw util::InvalidInput("tick_rate", "must be finite and > 0, got " + util::show(hz));
   }
   tick_rate_ = hz;
 }

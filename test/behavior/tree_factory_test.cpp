@@ -92,6 +92,22 @@ TEST_F(TreeFactoryTest, bad_attributes_are_rejected) {
             0u);
 }
 
+TEST_F(TreeFactoryTest, a_value_the_node_itself_refuses_names_the_element_and_the_field) {
+  EXPECT_EQ(errorOf("<Repeat num_cycles=\"0\"><Ok/></Repeat>"),
+            "test.xml:3: <Repeat>: num_cycles: must be >= 1 or -1 (forever), got 0");
+  try {
+    factory.buildFromText(
+        "<root><BehaviorTree><Retry num_attempts=\"0\"><Ok/></Retry>"
+        "</BehaviorTree></root>",
+        "t.xml");
+    FAIL() << "accepted num_attempts 0";
+  } catch (const util::InvalidInput& e) {  // TreeFileError is one: element, line, problem
+    EXPECT_EQ(e.field(), "<Retry>");
+    EXPECT_EQ(e.source(), "t.xml:1");
+    EXPECT_EQ(e.problem(), "num_attempts: must be >= 1 or -1 (unlimited), got 0");
+  }
+}
+
 TEST_F(TreeFactoryTest, malformed_xml_names_the_line) {
   const std::string message = errorOf("<Sequence>\n<Ok>\n</Sequence>");
   EXPECT_EQ(message.rfind("test.xml:", 0), 0u) << message;

@@ -26,7 +26,7 @@ class RateController final : public DecoratorNode {
   static PortList providedPorts() {
     return {inputPort<double>("hz", "how often the child is started (Hz)", "1.0").range(1e-6, 1e3)};
   }
-  /// `hz` and `tick_rate` > 0 and finite (std::invalid_argument otherwise); `clock` (the
+  /// `hz` and `tick_rate` > 0 and finite (util::InvalidInput naming it otherwise); `clock` (the
   /// tree's blackboard) must outlive the node.
   RateController(std::string name, double hz, double tick_rate, const Blackboard& clock);
 

@@ -30,7 +30,7 @@ class RecoveryNode final : public ControlNode {
     return {inputPort<int>("number_of_retries", "recoveries before giving up", "1")
                 .range(0, std::numeric_limits<int>::max())};
   }
-  /// `number_of_retries` >= 0 (std::invalid_argument otherwise).
+  /// `number_of_retries` >= 0 (util::InvalidInput naming it otherwise).
   RecoveryNode(std::string name, int number_of_retries);
 
   std::size_t requiredChildren() const override { return 2; }

@@ -23,7 +23,7 @@ class RepeatNode final : public DecoratorNode {
     return {inputPort<int>("num_cycles", "repetitions, or -1 for forever")
                 .range(-1, std::numeric_limits<int>::max())};
   }
-  /// `num_cycles` ≥ 1, or −1 for forever (std::invalid_argument otherwise).
+  /// `num_cycles` ≥ 1, or −1 for forever (util::InvalidInput naming it otherwise).
   RepeatNode(std::string name, int num_cycles);
 
  private:

@@ -23,7 +23,7 @@ class RetryNode final : public DecoratorNode {
     return {inputPort<int>("num_attempts", "attempts, or -1 for unlimited")
                 .range(-1, std::numeric_limits<int>::max())};
   }
-  /// `num_attempts` ≥ 1, or −1 for unlimited (std::invalid_argument otherwise).
+  /// `num_attempts` ≥ 1, or −1 for unlimited (util::InvalidInput naming it otherwise).
   RetryNode(std::string name, int num_attempts);
 
  private:

@@ -23,7 +23,7 @@ class TimeoutNode final : public DecoratorNode {
     return {inputPort<long>("ticks", "ticks the child may run")
                 .range(1, static_cast<double>(std::numeric_limits<long>::max()))};
   }
-  /// `ticks` ≥ 1 (std::invalid_argument otherwise).
+  /// `ticks` ≥ 1 (util::InvalidInput naming it otherwise).
   TimeoutNode(std::string name, long ticks);
 
  private:

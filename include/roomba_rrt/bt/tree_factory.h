@@ -146,7 +146,7 @@ class TreeFactory {
   void registerLeaf(const std::string& type, Builder builder);
 
   /// Tick rate of the trees built (Hz, default 60): RateController turns its `hz` into ticks
-  /// with it. Must be finite and > 0 (std::invalid_argument).
+  /// with it. Must be finite and > 0 (util::InvalidInput).
   void setTickRate(double hz);
 
   /// Builds a tree with a fresh blackboard.
