@@ -1,6 +1,8 @@
 #include "roomba_rrt/planning/validate.h"
 
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include "roomba_rrt/planning/limits.h"
 
@@ -12,29 +14,30 @@ using util::InvalidInput;
 using util::member;
 using util::show;
 
-// "field: must be finite (got v)" unless v is finite.
-void requireFinite(const std::string& field, double v) {
-  if (!std::isfinite(v)) throw InvalidInput(field, "must be finite (got " + show(v) + ")");
+// "field: must be finite (got v)" unless v is finite. (Fields are string_views: plan() validates
+// every call and a lab solve takes some 20 us, so the checks of valid input build no strings.)
+void requireFinite(std::string_view field, double v) {
+  if (!std::isfinite(v)) {
+    throw InvalidInput(std::string(field), "must be finite (got " + show(v) + ")");
+  }
 }
 
 // "field: must be in [lo, hi] <unit> (got v)" unless lo <= v <= hi.
-void requireRange(const std::string& field, double v, double lo, double hi,
-                  const char* unit = "m") {
+void requireRange(std::string_view field, double v, double lo, double hi, const char* unit = "m") {
   if (v >= lo && v <= hi) return;
-  throw InvalidInput(
-      field, "must be in [" + show(lo) + ", " + show(hi) + "] " + unit + " (got " + show(v) + ")");
+  throw InvalidInput(std::string(field), "must be in [" + show(lo) + ", " + show(hi) + "] " + unit +
+                                             " (got " + show(v) + ")");
 }
 
 // Both of the above, for a coordinate.
-void requireCoordinate(const std::string& field, double v) {
+void requireCoordinate(std::string_view field, double v) {
   requireFinite(field, v);
   requireRange(field, v, -kMaxCoordinate, kMaxCoordinate);
 }
 
 bool withinCoordinateRange(double v) { return std::abs(v) <= kMaxCoordinate; }
 
-// plan() validates every call and a lab solve takes some 20 us, so the checks of valid input
-// build no strings: a field's name is only spelled out once it has an error to report.
+// A field's path is only spelled out once it has an error to report.
 void requirePointFinite(const char* field, const Point2& p) {
   if (std::isfinite(p.x) && std::isfinite(p.y)) return;
   requireFinite(member(field, "x"), p.x);
