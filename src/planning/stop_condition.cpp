@@ -1,8 +1,9 @@
 #include "roomba_rrt/planning/stop_condition.h"
 
 #include <algorithm>
-#include <sstream>
 #include <utility>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -42,9 +43,7 @@ bool StopCondition::check() {
   }
   countdown_ = stride_;
   if (now >= deadline_) {
-    std::ostringstream out;
-    out << "max_planning_time: the plan was stopped after " << max_seconds_ << " s";
-    reason_ = out.str();
+    reason_ = "max_planning_time: the plan was stopped after " + util::show(max_seconds_) + " s";
   } else if (requested_ && requested_()) {
     reason_ = "the plan was stopped on request";
   }

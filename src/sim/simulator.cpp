@@ -5,6 +5,7 @@
 
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::sim {
 
@@ -46,11 +47,11 @@ BumperState Simulator::step(const Velocity& cmd) {
 
 void Simulator::setPose(const Pose2D& pose) {
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
-    throw std::invalid_argument("pose must be finite");
+    throw util::InvalidInput("pose", "must be finite");
   }
   Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
   if (!resolvePenetration(world_, placed.x, placed.y)) {
-    throw std::invalid_argument("the robot does not fit at the requested pose");
+    throw util::InvalidInput("pose", "the robot does not fit at the requested pose");
   }
   pose_ = placed;
   bumper_ = senseBumper(world_, pose_);

@@ -60,7 +60,7 @@ class MultiRobotSimulator {
   const World& world() const { return world_; }
 
   /// Puts robot i at `pose`, pushed out of walls, furniture and other robots, and marks that disc
-  /// swept. std::invalid_argument for a non-finite pose or one where the disc does not fit.
+  /// swept. util::InvalidInput for a non-finite pose or one where the disc does not fit.
   void setPose(std::size_t robot, const Pose2D& pose);
   /// Every robot back to its initial pose, time 0, coverage cleared, commands zero.
   void reset();

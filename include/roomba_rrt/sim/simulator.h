@@ -50,7 +50,7 @@ class Simulator {
   const World& world() const { return world_; }
 
   /// Puts the robot at `pose` (pushed out of anything it penetrates) and marks that disc swept.
-  /// θ is wrapped to (−π, π]. A non-finite pose is rejected with std::invalid_argument.
+  /// θ is wrapped to (−π, π]. A non-finite pose is rejected with util::InvalidInput.
   void setPose(const Pose2D& pose);
   /// Back to the initial pose, time 0, coverage cleared, bumper released, command zero.
   void reset();
