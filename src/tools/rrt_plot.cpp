@@ -16,9 +16,10 @@
 #include <string>
 
 #include "roomba_rrt/planning/planner.h"
-#include "roomba_rrt/planning/tool_arguments.h"
+#include "tool_arguments.h"
 
 namespace rp = roomba_rrt::planning;
+namespace tools = roomba_rrt::tools;
 
 namespace {
 
@@ -212,7 +213,7 @@ rp::Point2 pointFlag(const std::string& flag, const std::string& value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  rp::ToolArguments args;
+  tools::ToolArguments args;
   rp::Problem problem;
   std::string output;
   int width = 900;
@@ -222,7 +223,7 @@ int main(int argc, char** argv) {
         std::cerr << "usage: rrt_plot --scenario a [--goal-bias P] [--seed S] -o file.png\n"
                   << "       rrt_plot --world config/roomba_world_furnished.yaml --start 3.2,2.4"
                      " --goal 3.0,4.55 -o room.png\n"
-                  << rp::commonFlagsHelp() << "  -o FILE                  output PNG (required)\n"
+                  << tools::commonFlagsHelp() << "  -o FILE                  output PNG (required)\n"
                   << "  --width PX               image width (default 900)\n"
                   << "  --world FILE             plan in the simulator's room (scenario room:\n"
                      "                           its furniture and robot radius), from --start\n"
@@ -230,11 +231,11 @@ int main(int argc, char** argv) {
         return 0;
       }
     }
-    args = rp::parseToolArguments(
+    args = tools::parseToolArguments(
         argc, argv, {"-o", "--output", "--width", "--world", "--start", "--goal"}, {});
     output = args.tool.count("-o") ? args.tool["-o"] : args.tool["--output"];
     if (output.empty()) throw std::invalid_argument("-o: an output file is required");
-    if (args.tool.count("--width")) width = rp::parseIntFlag("--width", args.tool["--width"]);
+    if (args.tool.count("--width")) width = tools::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
     if (args.tool.count("--world")) {
       problem = rp::loadRoom(args.tool["--world"]);
