@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "progress_bar.h"
-#include "room_drawing.h"
+#include "drawing.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
