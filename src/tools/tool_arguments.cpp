@@ -46,7 +46,8 @@ double parseDoubleFlag(const std::string& flag, const std::string& value) {
   } catch (const std::exception&) {
     bad(flag, "expected a number, got '" + value + "'");
   }
-  if (used != value.size() || !std::isfinite(v)) bad(flag, "expected a finite number");
+  if (used != value.size()) bad(flag, "expected a number, got '" + value + "'");
+  if (!std::isfinite(v)) bad(flag, "expected a finite number");
   return v;
 }
 

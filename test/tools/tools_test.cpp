@@ -27,6 +27,8 @@ std::string refusal(F f) {
 TEST(ToolArguments, numbers_must_be_whole_and_finite_and_the_message_names_the_flag) {
   EXPECT_DOUBLE_EQ(parseDoubleFlag("--step", "0.25"), 0.25);
   EXPECT_EQ(parseIntFlag("--runs", "200"), 200);
+  EXPECT_EQ(refusal([] { parseDoubleFlag("--step", "0.2x"); }),
+            "--step: expected a number, got '0.2x'");
   EXPECT_EQ(refusal([] { parseDoubleFlag("--step", "inf"); }), "--step: expected a finite number");
   EXPECT_EQ(refusal([] { parseIntFlag("--runs", "2.5"); }),
             "--runs: expected an integer, got '2.5'");
