@@ -42,8 +42,10 @@ add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
 add_executable(roomba_fsm src/nodes/roomba_fsm_node.cpp)
 target_link_libraries(roomba_fsm roomba_behavior_node)
 
-# Headless coverage experiments: the simulation core and a behaviour in one process.
-add_executable(roomba_coverage src/tools/roomba_coverage.cpp)
+# Headless coverage experiments: the simulation core and a behaviour in one process (its
+# arguments, runs, statistics and pictures in src/tools/coverage_*).
+add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_arguments.cpp
+  src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp)
 target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core)
 
 if(CATKIN_ENABLE_TESTING)

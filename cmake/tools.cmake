@@ -9,8 +9,9 @@ target_link_libraries(roomba_tools PUBLIC rrt_planning roomba_sim_core PkgConfig
 target_compile_definitions(roomba_tools PUBLIC ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
 
 if(CATKIN_ENABLE_TESTING)
-  # The shared flags and statistics.
-  catkin_add_gtest(tools_test test/tools/tools_test.cpp)
+  # The shared flags and statistics, and roomba_coverage's arguments and statistics.
+  catkin_add_gtest(tools_test test/tools/tools_test.cpp src/tools/coverage_arguments.cpp
+    src/tools/coverage_statistics.cpp)
   if(TARGET tools_test)
     target_link_libraries(tools_test roomba_tools gtest_main)
   endif()
