@@ -316,7 +316,7 @@ struct Config {
   bool json = false;
   std::string plan_once;  // "ours" or "ompl"
   unsigned iterations = 1000000;
-  std::string scenarios_file = rp::defaultScenarioFile();
+  std::string scenarios_file = ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml";
   std::string world_file = ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
   int room_runs = 5;            // solves per start/goal pair and side in the room rows
   int room_iterations = 20000;  // the room's RRT and RRT-Connect: max_iterations of both sides

@@ -20,7 +20,7 @@ namespace rp = roomba_rrt::planning;
 namespace {
 
 const std::map<std::string, rp::Problem>& scenarios() {
-  static const auto s = rp::loadScenarios(rp::defaultScenarioFile());
+  static const auto s = rp::loadScenarios(ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml");
   return s;
 }
 

@@ -3,19 +3,24 @@
 
     bench/report.py RESULTS_DIR            Markdown: the machine, then one table
     bench/report.py RESULTS_DIR --json     the same rows as JSON
+    bench/report.py RESULTS_DIR --page TEMPLATE
+                                           a whole page: TEMPLATE (bench/performance.md.in) with
+                                           {{machine}}, {{date}}, {{table}} and {{missed}} filled
+                                           in (scripts/bench --markdown; doc/performance.md)
 
 RESULTS_DIR holds, per benchmark, NAME.json (its output) or NAME.error (one line: why it has no
 figures). A missing or failed piece becomes "n/a" with the reason; the other rows still print.
 
     ompl.json      bench/ompl_comparison --json
     behavior.json  behavior_bench --benchmark_out (Google Benchmark JSON)
-    sim.json       sim_bench --benchmark_out (Google Benchmark JSON)
+    sim.json       sim_bench --benchmark_out (Google Benchmark JSON; one robot and 1/10/100 robots)
     planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
     rtf.json       {"requested": F, "line": "<sim_rtf_probe's output line>"}
     service.json   plan_path_bench --json
     nav_latency.json  nav_latency_probe --json (roomba_sim, rrt_planner, roomba_bt navigating)
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
 """
+import datetime
 import json
 import os
 import re
@@ -244,6 +249,28 @@ def sim_rows(t, results):
           ours_text=f"{furnished / 1e6:.1f} M/s")
 
 
+def sim_robot_rows(t, results):
+    """MultiRobotSimulator in the furnished room: the cost per robot must stay within 2x of one
+    robot's step (robot-robot contact through a spatial index, not all pairs)."""
+    what = "Simulator core, {} robots in the furnished room: steps/s; cost per robot-step vs one robot"
+    try:
+        data = load(results, "sim")
+    except Missing as e:
+        t.missing("sim_robots", what.format("1/10/100"), str(e), "≤ 2× at 100")
+        return
+    for n in (1, 10, 100):
+        try:
+            steps = gbench(data, f"BM_StepRobotsFurnishedRoom/{n}", "steps/s")
+            per_robot = gbench(data, f"BM_StepRobotsFurnishedRoom/{n}", "per_robot_vs_one")
+        except Missing as e:
+            t.missing(f"sim_robots_{n}", what.format(n), str(e))
+            continue
+        judged = n == 100
+        t.add(f"sim_robots_{n}", what.format(n), per_robot,
+              target="≤ 2×" if judged else None, met=per_robot <= 2 if judged else None,
+              ours_text=f"{fmt(steps / 1e3)} k steps/s · {per_robot:.2f}× per robot")
+
+
 RTF_LINE = re.compile(r"received (\d+) /odom \(([\d.]+)/s wall\), missed (\d+); ([\d.]+) s "
                       r"simulated in ([\d.]+) s wall: real-time factor ([\d.]+)")
 
@@ -349,14 +376,21 @@ def machine():
     return info
 
 
-def markdown(rows, info, results):
-    lines = [f"Machine: {info['cpu']}, {info['cores']} cores, {info.get('os', '')}", "",
-             "| what is measured | ours | peer | ours/peer | target met? |",
-             "|---|---|---|---|---|"]
+def table(rows):
+    lines = ["| what is measured | ours | peer | ours/peer | target met? |", "|---|---|---|---|---|"]
     for r in rows:
         ratio = "—" if r["ratio"] is None else fmt(r["ratio"])
         lines.append(f"| {r['what']} | {r['ours_text']} | {r['peer_text']} | {ratio} | "
                      f"{verdict(r)} |")
+    return lines
+
+
+def machine_line(info):
+    return f"{info['cpu']}, {info['cores']} cores, {info.get('os', '')}"
+
+
+def markdown(rows, info, results):
+    lines = [f"Machine: {machine_line(info)}", ""] + table(rows)
     lines += ["", "RRT rows: ours = rrt_planning's plan(), peer = OMPL's geometric::RRT in the "
               "same "
               "process (same Δ, goal bias, ε, iterations and collision test). OMPL samples the "
@@ -366,21 +400,46 @@ def markdown(rows, info, results):
     return "\n".join(lines)
 
 
+def page(template_file, rows, info):
+    """The performance page: the template's prose around this run's figures."""
+    with open(template_file) as f:
+        text = f.read()
+    missed = [r for r in rows if r["target"] is not None and r["met"] is False]
+    unmeasured = [r for r in rows if r["target"] is not None and r["met"] is None]
+    summary = [f"- **{r['what']}**: {r['ours_text']} (target {r['target']})" for r in missed]
+    summary += [f"- not measured: {r['what']} ({r['note']})" for r in unmeasured]
+    if not summary:
+        summary = ["- none: every target was met in this run."]
+    fills = {"machine": machine_line(info),
+             "date": datetime.date.today().isoformat(),
+             "table": "\n".join(table(rows)),
+             "missed": "\n".join(summary)}
+    for key, value in fills.items():
+        text = text.replace("{{" + key + "}}", value)
+    return text
+
+
 def main(argv):
     if len(argv) < 2 or argv[1].startswith("-"):
         print(__doc__.strip(), file=sys.stderr)
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, rtf_rows, service_rows,
-                 nav_latency_rows, memory_rows):
+    for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, sim_robot_rows,
+                 rtf_rows, service_rows, nav_latency_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format
             t.missing(rows.__name__, rows.__name__.replace("_rows", ""),
                       f"unexpected output: {type(e).__name__} {e}")
     info = machine()
-    if "--json" in argv[2:]:
+    if "--page" in argv[2:]:
+        index = argv.index("--page")
+        if index + 1 >= len(argv):
+            print("--page: the template's path is missing", file=sys.stderr)
+            return 2
+        print(page(argv[index + 1], t.rows, info), end="")
+    elif "--json" in argv[2:]:
         print(json.dumps({"machine": info, "rows": t.rows}, indent=2, ensure_ascii=False))
     else:
         print(markdown(t.rows, info, results))

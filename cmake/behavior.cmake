@@ -42,11 +42,11 @@ add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
 add_executable(roomba_fsm src/nodes/roomba_fsm_node.cpp)
 target_link_libraries(roomba_fsm roomba_behavior_node)
 
-# Headless coverage experiments: the simulation core and a behaviour in one process.
-add_executable(roomba_coverage src/tools/roomba_coverage.cpp)
-target_link_libraries(roomba_coverage roomba_sim_core roomba_behavior_core PkgConfig::CAIRO)
-target_compile_definitions(roomba_coverage PRIVATE
-  ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+# Headless coverage experiments: the simulation core and a behaviour in one process (its
+# arguments, runs, statistics and pictures in src/tools/coverage_*).
+add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_arguments.cpp
+  src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp)
+target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core)
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(behavior_core_test
@@ -137,9 +137,7 @@ target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
 
 # Navigation without ROS: random goals in one process (simulator, tree, planner).
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
-target_link_libraries(roomba_nav_eval roomba_nav_core PkgConfig::CAIRO)
-target_compile_definitions(roomba_nav_eval PRIVATE
-  ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+target_link_libraries(roomba_nav_eval roomba_nav_core roomba_tools)
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(nav_core_test

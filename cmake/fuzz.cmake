@@ -37,13 +37,13 @@ if(ROOMBA_RRT_SANITIZE)
     ${RR_GCC_OBJECTS})
   target_include_directories(rrt_planning_sanitized PUBLIC ${PROJECT_SOURCE_DIR}/include)
   target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
-  target_compile_definitions(rrt_planning_sanitized PRIVATE
-    RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
 
   # The node's own request conversion (src/nodes/planner_ros.cpp) in front of the library.
   roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp)
   target_include_directories(plan_path_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
   target_link_libraries(plan_path_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
+  target_compile_definitions(plan_path_fuzzer PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(plan_path_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
   # The planning unit tests on that library (scripts/fuzz --unit).

@@ -15,25 +15,22 @@ add_library(rrt_planning
   src/planning/rrt_star.cpp
   src/planning/scenarios.cpp
   src/planning/stop_condition.cpp
-  src/planning/tool_arguments.cpp
   src/planning/tree.cpp
   src/planning/validate.cpp
 )
 target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(rrt_planning PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
-target_compile_definitions(rrt_planning PRIVATE
-  RRT_SCENARIO_FILE="${PROJECT_SOURCE_DIR}/config/rrt_scenarios.yaml")
 # The room scenario reads the simulator's world files (sim::loadWorld), ROS-free too.
 
 find_package(Threads REQUIRED)
 
 # rrt_monte_carlo: the lab's monteCarloRRT statistics (no ROS master needed).
 add_executable(rrt_monte_carlo src/tools/rrt_monte_carlo.cpp)
-target_link_libraries(rrt_monte_carlo rrt_planning Threads::Threads)
+target_link_libraries(rrt_monte_carlo roomba_tools Threads::Threads)
 
 # rrt_plot: draws a plan (bounds, obstacles, tree, path) into a PNG with Cairo.
 add_executable(rrt_plot src/tools/rrt_plot.cpp)
-target_link_libraries(rrt_plot rrt_planning PkgConfig::CAIRO)
+target_link_libraries(rrt_plot roomba_tools)
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(test_rrt_planning
@@ -58,6 +55,8 @@ find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(planning_bench bench/planning_bench.cpp)
   target_link_libraries(planning_bench rrt_planning benchmark::benchmark)
+  target_compile_definitions(planning_bench PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
 endif()
 
 # --- rrt_planner node (owned by the node helper) ---
@@ -67,6 +66,8 @@ add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.
   src/nodes/master_watch.cpp)
 target_include_directories(rrt_planner PRIVATE include ${catkin_INCLUDE_DIRS})
 target_link_libraries(rrt_planner rrt_planning ${catkin_LIBRARIES})
+# Its scenario file when the package is not on ROS_PACKAGE_PATH (ros::package finds it otherwise).
+target_compile_definitions(rrt_planner PRIVATE ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 add_executable(plan_path_bench bench/plan_path_bench.cpp)

@@ -14,7 +14,9 @@ target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
-add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/master_watch.cpp)
+# The node wires parameters, topics and timers; src/nodes/sim_ros.cpp builds its messages.
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/sim_ros.cpp
+  src/nodes/master_watch.cpp)
 target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
@@ -38,6 +40,14 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(sim_core_test roomba_sim_core gtest_main)
     target_compile_definitions(sim_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
+  # roomba_sim's messages (odometry, tf, bumper, markers, coverage map), without a master.
+  catkin_add_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/nodes/sim_ros.cpp)
+  if(TARGET sim_ros_test)
+    target_include_directories(sim_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(sim_ros_test roomba_sim_core ${catkin_LIBRARIES} gtest_main)
+    add_dependencies(sim_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()
 
   # A rostest whose test node (gtest) talks to roomba_sim through a real master.

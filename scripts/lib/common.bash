@@ -17,6 +17,7 @@ RR_PACKAGES=(
   catkin libroscpp-dev libroslib-dev ros-message-generation ros-message-runtime
   ros-core rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic
   python3-rosgraph python3-rosparam python3-rosmsg python3-rosbag python3-genpy python3-genmsg
+  python3-yaml  # the documentation test reads PlanPath requests
   # messages this package uses or depends on: definitions, C++ headers, Python classes
   ros-std-msgs libstd-msgs-dev python3-std-msgs
   ros-std-srvs libstd-srvs-dev python3-std-srvs

@@ -34,23 +34,21 @@
 #include "master_watch.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/world.h"
+#include "sim_ros.h"
 
 namespace roomba_rrt {
 namespace {
 
 using sim::World;
-using Clock = std::chrono::steady_clock;
+using Clock = std::chrono::steady_clock;        // the node's one wall clock
+using Seconds = std::chrono::duration<double>;  // of wall-clock time
 
-constexpr double kMarkerPeriod = 0.1;        // wall s between ~markers (10 Hz)
-constexpr double kCoveragePeriod = 0.5;      // wall s between ~coverage (2 Hz)
-constexpr double kCoverageMapPeriod = 0.5;   // wall s between ~coverage_map (2 Hz)
-constexpr double kTrailSpacing = 0.02;       // m between trail points
-constexpr std::size_t kTrailLength = 5000;   // points kept (100 m of path)
+constexpr Seconds kMarkerPeriod(0.1);        // between ~markers (10 Hz)
+constexpr Seconds kCoveragePeriod(0.5);      // between ~coverage (2 Hz)
+constexpr Seconds kCoverageMapPeriod(0.5);   // between ~coverage_map (2 Hz)
 constexpr std::uint32_t kStateQueue = 1000;  // /odom and /bumper publisher queues
-constexpr double kMaxLag = 0.25;             // wall s behind schedule before the schedule resets
-constexpr std::chrono::duration<double> kMaxSleep(0.05);  // longest uninterrupted sleep, wall s
-constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
-constexpr double kWallThickness = 0.05;
+constexpr Seconds kMaxLag(0.25);             // behind schedule before the schedule resets
+constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 
 /// Reads the world file, then lets every scalar be overridden by a private parameter of the same
 /// path (~real_time_factor, ~initial_pose/x, ~robot/radius, ...). Nothing is written back: a
@@ -86,47 +84,6 @@ World loadWorldParameters(const ros::NodeHandle& pnh) {
   return world;
 }
 
-geometry_msgs::Quaternion yawToQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * yaw);
-  q.w = std::cos(0.5 * yaw);
-  return q;
-}
-
-struct Rgb {
-  double r, g, b;
-};
-const Rgb kWallColour{0.55, 0.55, 0.55}, kFurnitureColour{0.55, 0.35, 0.2},
-    kTrailColour{0.1, 0.8, 0.3}, kRobotColour{0.2, 0.6, 0.9}, kPressedColour{0.9, 0.2, 0.2};
-
-visualization_msgs::Marker makeMarker(const std::string& ns, int id, int type, Rgb colour) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = "map";
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.color.r = colour.r;
-  m.color.g = colour.g;
-  m.color.b = colour.b;
-  m.color.a = 1.0;
-  return m;
-}
-
-/// A box marker over [x0, x1] × [y0, y1], `height` tall, standing on the floor.
-visualization_msgs::Marker makeBox(const std::string& ns, int id, double x0, double y0, double x1,
-                                   double y1, double height, Rgb colour) {
-  auto m = makeMarker(ns, id, visualization_msgs::Marker::CUBE, colour);
-  m.pose.position.x = 0.5 * (x0 + x1);
-  m.pose.position.y = 0.5 * (y0 + y1);
-  m.pose.position.z = 0.5 * height;
-  m.scale.x = x1 - x0;
-  m.scale.y = y1 - y0;
-  m.scale.z = height;
-  return m;
-}
-
 class RoombaSimNode {
  public:
   RoombaSimNode(const World& world, bool use_sim_time)
@@ -138,27 +95,24 @@ class RoombaSimNode {
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       RobotIo& io = robots_[i];
       const std::string& name = sim_.spec(i).name;
-      io.prefix = name.empty() ? "" : name + "/";  // topics and frames of a named robot
-      io.odom_frame = io.prefix + "odom";
-      io.base_frame = io.prefix + "base_link";
+      io.frames = sim_node::robotFrames(name);
+      const std::string& prefix = io.frames.prefix;
       // Deep queues: at real_time_factor 50 these go out 3000 times per second, and a subscriber
       // that is descheduled for a moment must not lose any.
-      io.odom_pub = nh_.advertise<nav_msgs::Odometry>(io.prefix + "odom", kStateQueue);
-      io.bumper_pub = nh_.advertise<roomba_rrt::Bumper>(io.prefix + "bumper", kStateQueue);
+      io.odom_pub = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", kStateQueue);
+      io.bumper_pub = nh_.advertise<roomba_rrt::Bumper>(prefix + "bumper", kStateQueue);
       if (!name.empty()) {
-        io.coverage_pub = pnh_.advertise<std_msgs::Float32>(io.prefix + "coverage", 1, true);
+        io.coverage_pub = pnh_.advertise<std_msgs::Float32>(prefix + "coverage", 1, true);
       }
       io.cmd_sub = nh_.subscribe<geometry_msgs::Twist>(
-          io.prefix + "cmd_vel", 10,
+          prefix + "cmd_vel", 10,
           [this, i](const geometry_msgs::Twist::ConstPtr& msg) { onCommand(i, *msg); },
           ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
-      io.trail = makeMarker("trail", static_cast<int>(i), visualization_msgs::Marker::LINE_STRIP,
-                            kTrailColour);
-      io.trail.scale.x = 0.02;  // line width, m
+      trails_.push_back(sim_node::makeTrail(i));
     }
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
     publishStaticTransforms();
-    wall_markers_ = worldMarkers();
+    world_markers_ = sim_node::worldMarkers(sim_.world());
   }
 
   /// The fixed-step loop: sense contact, publish the state, apply the latest command, keep pace
@@ -166,7 +120,8 @@ class RoombaSimNode {
   void run() {
     const World& world = sim_.world();
     const double factor = use_sim_time_ ? world.real_time_factor : 1.0;
-    const auto wall_step = std::chrono::duration<double>(world.step / factor);
+    const auto wall_step =
+        std::chrono::duration_cast<Clock::duration>(Seconds(world.step / factor));
     auto next_step = Clock::now();
     while (ros::ok()) {
       ros::spinOnce();
@@ -178,11 +133,11 @@ class RoombaSimNode {
       ++steps_;
       publishSlowTopics(now);
 
-      next_step += std::chrono::duration_cast<Clock::duration>(wall_step);
+      next_step += wall_step;
       const auto wall_now = Clock::now();
       if (wall_now < next_step) {
         waitUntil(next_step);
-      } else if (wall_now - next_step > std::chrono::duration<double>(kMaxLag)) {
+      } else if (wall_now - next_step > kMaxLag) {
         ROS_WARN_STREAM_THROTTLE(5.0, "roomba_sim cannot keep real_time_factor "
                                           << factor << "; simulated time is running slower");
         next_step = wall_now;  // drop the lag instead of racing to catch up
@@ -211,7 +166,7 @@ class RoombaSimNode {
       ROS_WARN_THROTTLE(1.0,
                         "roomba_sim: rejecting /%scmd_vel with a NaN or infinite component "
                         "(linear.x=%g, angular.z=%g)",
-                        robots_[robot].prefix.c_str(), msg.linear.x, msg.angular.z);
+                        robots_[robot].frames.prefix.c_str(), msg.linear.x, msg.angular.z);
       return;
     }
     robots_[robot].command = {msg.linear.x, msg.angular.z};  // clamped by the simulator
@@ -232,8 +187,8 @@ class RoombaSimNode {
     for (RobotIo& io : robots_) {
       io.command = {};
       io.command_time.reset();
-      io.trail.points.clear();
     }
+    for (auto& trail : trails_) trail.points.clear();
     ROS_INFO("roomba_sim: reset to the initial pose, coverage cleared");
     return true;
   }
@@ -242,12 +197,7 @@ class RoombaSimNode {
   void publishStaticTransforms() {
     std::vector<geometry_msgs::TransformStamped> transforms;
     for (const RobotIo& io : robots_) {
-      geometry_msgs::TransformStamped map_to_odom;
-      map_to_odom.header.stamp = ros::Time::now();
-      map_to_odom.header.frame_id = "map";
-      map_to_odom.child_frame_id = io.prefix + "odom";
-      map_to_odom.transform.rotation.w = 1.0;
-      transforms.push_back(map_to_odom);
+      transforms.push_back(sim_node::toMapTransform(io.frames, ros::Time::now()));
     }
     static_tf_.sendTransform(transforms);
   }
@@ -260,177 +210,42 @@ class RoombaSimNode {
       clock_pub_.publish(clock);
     }
     transforms_.resize(robots_.size());
-    for (std::size_t i = 0; i < robots_.size(); ++i) publishRobotState(i, stamp, transforms_[i]);
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      const RobotIo& io = robots_[i];
+      const sim::Pose2D& pose = sim_.pose(i);
+      io.odom_pub.publish(sim_node::toOdometry(pose, sim_.lastCommand(i), io.frames, stamp));
+      io.bumper_pub.publish(sim_node::toBumper(sim_.bumper(i), io.frames, stamp));
+      transforms_[i] = sim_node::toOdomTransform(pose, io.frames, stamp);
+    }
     tf_.sendTransform(transforms_);
-  }
-
-  void publishRobotState(std::size_t i, const ros::Time& stamp,
-                         geometry_msgs::TransformStamped& tf) {
-    const RobotIo& io = robots_[i];
-    const sim::Pose2D& pose = sim_.pose(i);
-    const sim::Velocity applied = sim_.lastCommand(i);
-    const sim::BumperState& bumper = sim_.bumper(i);
-    nav_msgs::Odometry odom;
-    odom.header.stamp = stamp;
-    odom.header.frame_id = io.odom_frame;
-    odom.child_frame_id = io.base_frame;
-    odom.pose.pose.position.x = pose.x;
-    odom.pose.pose.position.y = pose.y;
-    odom.pose.pose.orientation = yawToQuaternion(pose.theta);
-    odom.twist.twist.linear.x = applied.v;
-    odom.twist.twist.angular.z = applied.w;
-    io.odom_pub.publish(odom);
-
-    roomba_rrt::Bumper bumper_msg;
-    bumper_msg.header.stamp = stamp;
-    bumper_msg.header.frame_id = odom.child_frame_id;
-    bumper_msg.pressed = bumper.pressed;
-    bumper_msg.left = bumper.left;
-    bumper_msg.right = bumper.right;
-    io.bumper_pub.publish(bumper_msg);
-
-    tf.header = odom.header;
-    tf.child_frame_id = odom.child_frame_id;
-    tf.transform.translation.x = pose.x;
-    tf.transform.translation.y = pose.y;
-    tf.transform.rotation = odom.pose.pose.orientation;
   }
 
   /// Markers, coverage and the coverage map, a few times per wall-clock second.
   void publishSlowTopics(const ros::Time& stamp) {
-    for (std::size_t i = 0; i < robots_.size(); ++i) extendTrail(i);
-    const ros::WallTime wall = ros::WallTime::now();
-    if ((wall - last_markers_).toSec() >= kMarkerPeriod) {
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+      sim_node::extendTrail(sim_.pose(i), trails_[i]);
+    const Clock::time_point wall = Clock::now();
+    if (wall - last_markers_ >= kMarkerPeriod) {
       last_markers_ = wall;
-      if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(robotMarkers(stamp));
+      if (markers_pub_.getNumSubscribers() > 0) {
+        markers_pub_.publish(sim_node::toMarkers(world_markers_, sim_, trails_, stamp));
+      }
     }
-    if ((wall - last_coverage_).toSec() >= kCoveragePeriod) {
+    if (wall - last_coverage_ >= kCoveragePeriod) {
       last_coverage_ = wall;
-      std_msgs::Float32 coverage;
-      coverage.data = static_cast<float>(sim_.unionCoverage());
-      coverage_pub_.publish(coverage);
+      coverage_pub_.publish(sim_node::toCoverageMessage(sim_.unionCoverage()));
       for (std::size_t i = 0; i < robots_.size(); ++i) {
-        if (!robots_[i].coverage_pub) continue;
-        coverage.data = static_cast<float>(sim_.coverage(i));
-        robots_[i].coverage_pub.publish(coverage);
+        if (robots_[i].coverage_pub) {
+          robots_[i].coverage_pub.publish(sim_node::toCoverageMessage(sim_.coverage(i)));
+        }
       }
     }
-    if ((wall - last_coverage_map_).toSec() >= kCoverageMapPeriod) {
+    if (wall - last_coverage_map_ >= kCoverageMapPeriod) {
       last_coverage_map_ = wall;
-      if (coverage_map_pub_.getNumSubscribers() > 0) coverage_map_pub_.publish(coverageMap(stamp));
-    }
-  }
-
-  void extendTrail(std::size_t i) {
-    const sim::Pose2D& pose = sim_.pose(i);
-    std::vector<geometry_msgs::Point>& points = robots_[i].trail.points;
-    if (!points.empty()) {
-      const auto& last = points.back();
-      if (std::hypot(pose.x - last.x, pose.y - last.y) < kTrailSpacing) return;
-    }
-    if (points.size() >= kTrailLength) {
-      points.erase(points.begin(), points.begin() + kTrailLength / 2);
-    }
-    geometry_msgs::Point p;
-    p.x = pose.x;
-    p.y = pose.y;
-    p.z = 0.01;
-    points.push_back(p);
-  }
-
-  /// Walls and furniture: they never change, built once.
-  std::vector<visualization_msgs::Marker> worldMarkers() const {
-    using visualization_msgs::Marker;
-    const World& w = sim_.world();
-    const double t = kWallThickness;
-    std::vector<Marker> markers = {
-        makeBox("walls", 0, -t, -t, 0, w.height + t, kWallHeight, kWallColour),
-        makeBox("walls", 1, w.width, -t, w.width + t, w.height + t, kWallHeight, kWallColour),
-        makeBox("walls", 2, 0, -t, w.width, 0, kWallHeight, kWallColour),
-        makeBox("walls", 3, 0, w.height, w.width, w.height + t, kWallHeight, kWallColour),
-    };
-    int id = 0;
-    for (const sim::Circle& c : w.circles) {
-      auto m = makeMarker("furniture", id++, Marker::CYLINDER, kFurnitureColour);
-      m.pose.position.x = c.center.x;
-      m.pose.position.y = c.center.y;
-      m.pose.position.z = 0.5 * kFurnitureHeight;
-      m.scale.x = m.scale.y = 2 * c.radius;
-      m.scale.z = kFurnitureHeight;
-      markers.push_back(m);
-    }
-    for (const sim::Rectangle& b : w.rectangles) {
-      markers.push_back(makeBox("furniture", id++, b.min_x, b.min_y, b.max_x, b.max_y,
-                                kFurnitureHeight, kFurnitureColour));
-    }
-    return markers;
-  }
-
-  visualization_msgs::MarkerArray robotMarkers(const ros::Time& stamp) const {
-    visualization_msgs::MarkerArray array;
-    array.markers = wall_markers_;
-    for (std::size_t i = 0; i < robots_.size(); ++i) addRobotMarkers(i, array);
-    for (auto& m : array.markers) m.header.stamp = stamp;
-    return array;
-  }
-
-  /// Robot i's disc (red while its bumper is pressed), heading, trail and, when named, its name.
-  void addRobotMarkers(std::size_t i, visualization_msgs::MarkerArray& array) const {
-    using visualization_msgs::Marker;
-    const sim::Pose2D& pose = sim_.pose(i);
-    const double r = sim_.spec(i).radius;
-    const int id = static_cast<int>(i);
-    const bool pressed = sim_.bumper(i).pressed;
-    auto robot = makeMarker("robot", id, Marker::CYLINDER, pressed ? kPressedColour : kRobotColour);
-    robot.pose.position.x = pose.x;
-    robot.pose.position.y = pose.y;
-    robot.pose.position.z = 0.5 * kRobotHeight;
-    robot.scale.x = robot.scale.y = 2 * r;
-    robot.scale.z = kRobotHeight;
-    array.markers.push_back(robot);
-
-    auto heading = makeMarker("heading", id, Marker::ARROW, Rgb{1.0, 1.0, 1.0});
-    heading.pose.position.x = pose.x;
-    heading.pose.position.y = pose.y;
-    heading.pose.position.z = kRobotHeight + 0.01;
-    heading.pose.orientation = yawToQuaternion(pose.theta);
-    heading.scale.x = r;
-    heading.scale.y = 0.04;
-    heading.scale.z = 0.04;
-    array.markers.push_back(heading);
-
-    if (robots_[i].trail.points.size() >= 2) array.markers.push_back(robots_[i].trail);
-    if (!sim_.spec(i).name.empty()) {
-      auto name = makeMarker("names", id, Marker::TEXT_VIEW_FACING, Rgb{0.1, 0.1, 0.1});
-      name.text = sim_.spec(i).name;
-      name.pose.position.x = pose.x;
-      name.pose.position.y = pose.y;
-      name.pose.position.z = kRobotHeight + 0.15;
-      name.scale.z = 0.15;  // text height, m
-      array.markers.push_back(name);
-    }
-  }
-
-  /// Swept floor 0 (white in rviz's "map" colours), floor not yet swept −1 (unknown),
-  /// furniture 100 (black).
-  nav_msgs::OccupancyGrid coverageMap(const ros::Time& stamp) const {
-    const sim::CoverageGrid grid = sim_.unionCoverageGrid();
-    nav_msgs::OccupancyGrid map;
-    map.header.stamp = stamp;
-    map.header.frame_id = "map";
-    map.info.map_load_time = stamp;
-    map.info.resolution = static_cast<float>(grid.cellSize());
-    map.info.width = grid.columns();
-    map.info.height = grid.rows();
-    map.info.origin.orientation.w = 1.0;
-    map.data.resize(static_cast<std::size_t>(grid.columns()) * grid.rows());
-    for (int row = 0; row < grid.rows(); ++row) {
-      for (int column = 0; column < grid.columns(); ++column) {
-        const bool free = grid.isFree(column, row);
-        map.data[row * grid.columns() + column] = !free ? 100 : grid.isSwept(column, row) ? 0 : -1;
+      if (coverage_map_pub_.getNumSubscribers() > 0) {
+        coverage_map_pub_.publish(sim_node::toCoverageMap(sim_.unionCoverageGrid(), stamp));
       }
     }
-    return map;
   }
 
   ros::NodeHandle nh_;
@@ -439,27 +254,26 @@ class RoombaSimNode {
   const bool use_sim_time_;
   long steps_ = 0;  ///< steps since start (never reset: simulated time only moves forward)
 
-  /// One robot's topics, latest command and trail.
+  /// One robot's topics and latest command.
   struct RobotIo {
-    std::string prefix;                  ///< "" for the unnamed robot, "<name>/" for a named one
-    std::string odom_frame, base_frame;  ///< odom and base_link, or <name>/odom, <name>/base_link
+    sim_node::RobotFrames frames;  ///< topic prefix and tf frames, built once
     ros::Publisher odom_pub, bumper_pub, coverage_pub;
     ros::Subscriber cmd_sub;
     sim::Velocity command;
     std::optional<ros::Time> command_time;
-    visualization_msgs::Marker trail;
   };
   std::vector<RobotIo> robots_;
   std::vector<sim::Velocity> commands_ = std::vector<sim::Velocity>(robots_.size());
   std::vector<geometry_msgs::TransformStamped> transforms_;
+  std::vector<visualization_msgs::Marker> trails_;  ///< one per robot
 
   ros::Publisher clock_pub_, markers_pub_, coverage_pub_, coverage_map_pub_;
   ros::ServiceServer reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
 
-  std::vector<visualization_msgs::Marker> wall_markers_;
-  ros::WallTime last_markers_, last_coverage_, last_coverage_map_;
+  std::vector<visualization_msgs::Marker> world_markers_;
+  Clock::time_point last_markers_, last_coverage_, last_coverage_map_;  ///< wall clock
 };
 
 }  // namespace

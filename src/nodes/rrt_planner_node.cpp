@@ -132,7 +132,7 @@ class RrtPlannerNode {
     const std::string package = ros::package::getPath("roomba_rrt");
     const std::string scenarios_file = param<std::string>(
         pnh, "scenarios_file",
-        package.empty() ? planning::defaultScenarioFile()  // not on ROS_PACKAGE_PATH
+        package.empty() ? ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"  // not on ROS_PACKAGE_PATH
                         : package + "/config/rrt_scenarios.yaml");
     scenarios_ = planning::loadScenarios(scenarios_file);  // throws with the reason
     frame_id_ = param<std::string>(pnh, "frame_id", "map");

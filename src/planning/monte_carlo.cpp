@@ -2,28 +2,12 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "roomba_rrt/planning/planner.h"
+#include "roomba_rrt/util/statistics.h"
 
 namespace roomba_rrt::planning {
-namespace {
-
-// Mean and sample standard deviation (N - 1), as MATLAB's mean() and std(); NaN if undefined.
-std::pair<double, double> meanAndStd(const std::vector<double>& values) {
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  if (values.empty()) return {kNaN, kNaN};
-  double sum = 0;
-  for (double v : values) sum += v;
-  const double mean = sum / values.size();
-  if (values.size() < 2) return {mean, kNaN};
-  double squares = 0;
-  for (double v : values) squares += (v - mean) * (v - mean);
-  return {mean, std::sqrt(squares / (values.size() - 1))};
-}
-
-}  // namespace
 
 MonteCarloStats runMonteCarlo(const Problem& problem, const PlannerOptions& options, int runs,
                               std::uint32_t seed, const std::function<void(int)>& on_run) {
@@ -41,8 +25,8 @@ MonteCarloStats runMonteCarlo(const Problem& problem, const PlannerOptions& opti
   stats.runs = runs;
   stats.solved = static_cast<int>(lengths.size());
   stats.success_pct = runs > 0 ? 100.0 * stats.solved / runs : 0;
-  std::tie(stats.mean_length, stats.std_length) = meanAndStd(lengths);
-  std::tie(stats.mean_iterations, stats.std_iterations) = meanAndStd(iterations);
+  std::tie(stats.mean_length, stats.std_length) = util::meanAndStd(lengths);
+  std::tie(stats.mean_iterations, stats.std_iterations) = util::meanAndStd(iterations);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return stats;
 }

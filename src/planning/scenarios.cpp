@@ -84,8 +84,6 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
   return scenarios;
 }
 
-std::string defaultScenarioFile() { return RRT_SCENARIO_FILE; }
-
 Problem roomProblem(const sim::World& world) {
   Problem p;
   p.bounds = {0, world.width, 0, world.height};

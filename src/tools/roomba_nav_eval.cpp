@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "room_drawing.h"
+#include "drawing.h"
 #include "roomba_rrt/behavior/nav_eval.h"
 #include "roomba_rrt/bt/tree_factory.h"
 
@@ -42,13 +42,9 @@ void drawPng(const std::string& file, const roomba_rrt::sim::World& world,
   const roomba_rrt::tools::RoomCanvas c{world.height};
   const int width = static_cast<int>(world.width * c.scale + 2 * c.margin);
   const int height = static_cast<int>(world.height * c.scale + 2 * c.margin + c.header);
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);  // floor
-  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
-  cairo_fill(cr);
+  roomba_rrt::tools::PngImage image(width, height);
+  cairo_t* cr = image.cr();
+  roomba_rrt::tools::drawFloor(cr, world, c);
   roomba_rrt::tools::drawFurnitureAndWalls(cr, world, c);
   cairo_set_line_width(cr, 1.0);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -76,10 +72,7 @@ void drawPng(const std::string& file, const roomba_rrt::sim::World& world,
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_move_to(cr, c.margin, 24);
   cairo_show_text(cr, title.c_str());
-  const cairo_status_t status = cairo_surface_write_to_png(surface, file.c_str());
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + file);
+  image.write(file);
 }
 
 [[noreturn]] void usage(const std::string& problem) {

@@ -22,9 +22,10 @@
 #include "progress_bar.h"
 #include "roomba_rrt/planning/monte_carlo.h"
 #include "roomba_rrt/planning/planner.h"
-#include "roomba_rrt/planning/tool_arguments.h"
+#include "tool_arguments.h"
 
 namespace rp = roomba_rrt::planning;
+namespace tools = roomba_rrt::tools;
 
 namespace {
 
@@ -36,7 +37,7 @@ struct Job {
 
 void printUsage() {
   std::cerr << "usage: rrt_monte_carlo --scenario a|b|c|d|all [--runs 200] [--seed 42] [--json]\n"
-            << rp::commonFlagsHelp()
+            << tools::commonFlagsHelp()
             << "  --runs N                 runs per scenario (default 200)\n"
             << "  --threads N              worker threads (default: all cores)\n"
             << "  --json                   print a JSON array instead of a table\n";
@@ -89,7 +90,7 @@ void printTable(const std::vector<Job>& jobs, const rp::PlannerOptions& o, int r
 }  // namespace
 
 int main(int argc, char** argv) {
-  rp::ToolArguments args;
+  tools::ToolArguments args;
   int runs = 200;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<Job> jobs;
@@ -100,11 +101,11 @@ int main(int argc, char** argv) {
         return 0;
       }
     }
-    args = rp::parseToolArguments(argc, argv, {"--runs", "--threads"}, {"--json"});
-    if (args.tool.count("--runs")) runs = rp::parseIntFlag("--runs", args.tool["--runs"]);
+    args = tools::parseToolArguments(argc, argv, {"--runs", "--threads"}, {"--json"});
+    if (args.tool.count("--runs")) runs = tools::parseIntFlag("--runs", args.tool["--runs"]);
     if (runs < 1) throw std::invalid_argument("--runs: must be >= 1");
     if (args.tool.count("--threads")) {
-      threads = std::max(1, rp::parseIntFlag("--threads", args.tool["--threads"]));
+      threads = std::max(1, tools::parseIntFlag("--threads", args.tool["--threads"]));
     }
     const auto scenarios = rp::loadScenarios(args.scenario_file);
     for (const auto& [name, problem] : scenarios) {

@@ -15,26 +15,25 @@
 #include <stdexcept>
 #include <string>
 
+#include "drawing.h"
 #include "roomba_rrt/planning/planner.h"
-#include "roomba_rrt/planning/tool_arguments.h"
+#include "tool_arguments.h"
 
 namespace rp = roomba_rrt::planning;
+namespace tools = roomba_rrt::tools;
 
 namespace {
 
-struct Rgb {
-  double r, g, b;
-};
+using tools::drawText;
+using tools::Rgb;
+using tools::setColour;
+
 constexpr Rgb kBoundsColor{0.1, 0.1, 0.1};
 constexpr Rgb kObstacleColor{0.55, 0.55, 0.6};
 constexpr Rgb kTreeColor{0.25, 0.5, 0.85};
 constexpr Rgb kPathColor{0.85, 0.1, 0.1};
 constexpr Rgb kStartColor{0.1, 0.65, 0.2};
 constexpr Rgb kGoalColor{0.95, 0.6, 0.0};
-
-void setColor(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
-  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
 
 // World metres -> image pixels (y up in the world, down in the image).
 struct View {
@@ -43,13 +42,6 @@ struct View {
   double x(double wx) const { return left + (wx - bounds.x_min) * scale; }
   double y(double wy) const { return top + (bounds.y_max - wy) * scale; }
 };
-
-void text(cairo_t* cr, const std::string& s, double x, double y, double align_x, double align_y) {
-  cairo_text_extents_t e;
-  cairo_text_extents(cr, s.c_str(), &e);
-  cairo_move_to(cr, x - e.x_bearing - align_x * e.width, y - e.y_bearing - align_y * e.height);
-  cairo_show_text(cr, s.c_str());
-}
 
 std::string number(double v, int decimals) {
   char buffer[64];
@@ -68,20 +60,20 @@ void drawAxes(cairo_t* cr, const View& v) {
   for (double t = std::ceil(b.x_min / tick) * tick; t <= b.x_max + 1e-9; t += tick) {
     cairo_move_to(cr, v.x(t), v.y(b.y_min));
     cairo_line_to(cr, v.x(t), v.y(b.y_min) + 6);
-    text(cr, number(t, decimals), v.x(t), v.y(b.y_min) + 9, 0.5, 0);
+    drawText(cr, number(t, decimals), v.x(t), v.y(b.y_min) + 9, 0.5, 0);
   }
   for (double t = std::ceil(b.y_min / tick) * tick; t <= b.y_max + 1e-9; t += tick) {
     cairo_move_to(cr, v.x(b.x_min), v.y(t));
     cairo_line_to(cr, v.x(b.x_min) - 6, v.y(t));
-    text(cr, number(t, decimals), v.x(b.x_min) - 9, v.y(t), 1, 0.5);
+    drawText(cr, number(t, decimals), v.x(b.x_min) - 9, v.y(t), 1, 0.5);
   }
   cairo_stroke(cr);
   cairo_set_font_size(cr, 15);
-  text(cr, "x [m]", v.x((b.x_min + b.x_max) / 2), v.y(b.y_min) + 32, 0.5, 0);
+  drawText(cr, "x [m]", v.x((b.x_min + b.x_max) / 2), v.y(b.y_min) + 32, 0.5, 0);
   cairo_save(cr);
   cairo_translate(cr, v.x(b.x_min) - 48, v.y((b.y_min + b.y_max) / 2));
   cairo_rotate(cr, -M_PI / 2);
-  text(cr, "y [m]", 0, 0, 0.5, 0.5);
+  drawText(cr, "y [m]", 0, 0, 0.5, 0.5);
   cairo_restore(cr);
 }
 
@@ -89,9 +81,9 @@ void drawAxes(cairo_t* cr, const View& v) {
 void outlinedDisc(cairo_t* cr, double x, double y, double radius, const Rgb& fill,
                   const Rgb& outline) {
   cairo_arc(cr, x, y, radius, 0, 2 * M_PI);
-  setColor(cr, fill);
+  setColour(cr, fill);
   cairo_fill_preserve(cr);
-  setColor(cr, outline);
+  setColour(cr, outline);
   cairo_set_line_width(cr, 1.2);
   cairo_stroke(cr);
 }
@@ -106,15 +98,15 @@ void drawWorld(cairo_t* cr, const View& v, const rp::Problem& problem,
   for (const rp::Rectangle& r : problem.rectangles) {
     cairo_rectangle(cr, v.x(r.min_x), v.y(r.max_y), (r.max_x - r.min_x) * v.scale,
                     (r.max_y - r.min_y) * v.scale);
-    setColor(cr, kObstacleColor);
+    setColour(cr, kObstacleColor);
     cairo_fill_preserve(cr);
-    setColor(cr, {0.3, 0.3, 0.35});
+    setColour(cr, {0.3, 0.3, 0.35});
     cairo_set_line_width(cr, 1.2);
     cairo_stroke(cr);
   }
   // Tree: every edge, then the nodes.
   const rp::Tree& tree = result.tree;
-  setColor(cr, kTreeColor, 0.8);
+  setColour(cr, kTreeColor, 0.8);
   cairo_set_line_width(cr, 0.9);
   for (int i = 0; i < tree.size(); ++i) {
     const int p = tree.parent[i];
@@ -129,7 +121,7 @@ void drawWorld(cairo_t* cr, const View& v, const rp::Problem& problem,
   }
   // Path.
   if (!result.path.empty()) {
-    setColor(cr, kPathColor);
+    setColour(cr, kPathColor);
     cairo_set_line_width(cr, 3.0);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_move_to(cr, v.x(result.path[0].x), v.y(result.path[0].y));
@@ -143,7 +135,7 @@ void drawWorld(cairo_t* cr, const View& v, const rp::Problem& problem,
   }
   // Bounds.
   const rp::Bounds& b = problem.bounds;
-  setColor(cr, kBoundsColor);
+  setColour(cr, kBoundsColor);
   cairo_set_line_width(cr, 1.5);
   cairo_rectangle(cr, v.x(b.x_min), v.y(b.y_max), (b.x_max - b.x_min) * v.scale,
                   (b.y_max - b.y_min) * v.scale);
@@ -163,7 +155,7 @@ void drawLegend(cairo_t* cr, double x, double y) {
       {"start", kStartColor, Mark::kDisc},   {"goal", kGoalColor, Mark::kDisc}};
   cairo_set_font_size(cr, 14);
   for (const Item& item : items) {
-    setColor(cr, item.color);
+    setColour(cr, item.color);
     switch (item.mark) {
       case Mark::kLine:
       case Mark::kThinLine:
@@ -183,7 +175,7 @@ void drawLegend(cairo_t* cr, double x, double y) {
         break;
     }
     cairo_set_source_rgb(cr, 0, 0, 0);
-    text(cr, item.label, x + 38, y, 0, 0.5);
+    drawText(cr, item.label, x + 38, y, 0, 0.5);
     y += 26;
   }
 }
@@ -212,7 +204,7 @@ rp::Point2 pointFlag(const std::string& flag, const std::string& value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  rp::ToolArguments args;
+  tools::ToolArguments args;
   rp::Problem problem;
   std::string output;
   int width = 900;
@@ -222,7 +214,8 @@ int main(int argc, char** argv) {
         std::cerr << "usage: rrt_plot --scenario a [--goal-bias P] [--seed S] -o file.png\n"
                   << "       rrt_plot --world config/roomba_world_furnished.yaml --start 3.2,2.4"
                      " --goal 3.0,4.55 -o room.png\n"
-                  << rp::commonFlagsHelp() << "  -o FILE                  output PNG (required)\n"
+                  << tools::commonFlagsHelp()
+                  << "  -o FILE                  output PNG (required)\n"
                   << "  --width PX               image width (default 900)\n"
                   << "  --world FILE             plan in the simulator's room (scenario room:\n"
                      "                           its furniture and robot radius), from --start\n"
@@ -230,11 +223,11 @@ int main(int argc, char** argv) {
         return 0;
       }
     }
-    args = rp::parseToolArguments(
+    args = tools::parseToolArguments(
         argc, argv, {"-o", "--output", "--width", "--world", "--start", "--goal"}, {});
     output = args.tool.count("-o") ? args.tool["-o"] : args.tool["--output"];
     if (output.empty()) throw std::invalid_argument("-o: an output file is required");
-    if (args.tool.count("--width")) width = rp::parseIntFlag("--width", args.tool["--width"]);
+    if (args.tool.count("--width")) width = tools::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
     if (args.tool.count("--world")) {
       problem = rp::loadRoom(args.tool["--world"]);
@@ -267,24 +260,20 @@ int main(int argc, char** argv) {
   const double scale = plot_w / std::max(b.x_max - b.x_min, b.y_max - b.y_min);
   const double left = 80 * k, top = 60 * k;
   const int height = static_cast<int>(top + (b.y_max - b.y_min) * scale + 70 * k);
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-  cairo_t* cr = cairo_create(surface);
+  tools::PngImage image(width, height, CAIRO_FORMAT_RGB24);
+  cairo_t* cr = image.cr();
   cairo_scale(cr, k, k);  // draw in a 900-pixel-wide design space
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
   const View view{b, left / k, top / k, scale / k};
   drawWorld(cr, view, problem, result);
   drawAxes(cr, view);
   drawLegend(cr, view.x(b.x_max) + 30, view.y(b.y_max) + 15);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_font_size(cr, 16);
-  text(cr, title(args.scenario, args.options, result), 450, 22, 0.5, 0.5);
-  cairo_destroy(cr);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, output.c_str());
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::cerr << "rrt_plot: cannot write " << output << ": " << cairo_status_to_string(status)
-              << "\n";
+  drawText(cr, title(args.scenario, args.options, result), 450, 22, 0.5, 0.5);
+  try {
+    image.write(output);
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rrt_plot: " << e.what() << "\n";
     return 1;
   }
   std::cout << output << ": " << title(args.scenario, args.options, result) << "\n";

@@ -147,7 +147,7 @@ void require(bool ok, const char* what) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::map<std::string, planning::Problem> scenarios =
-      planning::loadScenarios(planning::defaultScenarioFile());
+      planning::loadScenarios(ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml");
   PlanPath::Request request;
   if (size > 0 && data[0] == '{') {
     try {

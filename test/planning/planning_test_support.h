@@ -12,7 +12,7 @@ namespace roomba_rrt::planning::testing {
 
 /// A lab scenario from config/rrt_scenarios.yaml.
 inline Problem labScenario(const std::string& name) {
-  return loadScenarios(defaultScenarioFile()).at(name);
+  return loadScenarios(ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml").at(name);
 }
 
 /// The message of the util::InvalidInput that validate() throws for the query; "" when it can be

@@ -46,7 +46,7 @@ TEST(PlannerOptions, names_round_trip_and_unknown_names_are_rejected) {
 }
 
 TEST(Scenarios, the_lab_file_holds_the_four_scenarios_of_the_lab) {
-  const auto s = loadScenarios(defaultScenarioFile());
+  const auto s = loadScenarios(ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml");
   ASSERT_EQ(s.size(), 4u);
   EXPECT_EQ(s.at("a").obstacles.size(), 1u);
   EXPECT_EQ(s.at("b").obstacles.size(), 3u);

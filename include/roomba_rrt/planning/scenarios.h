@@ -14,9 +14,6 @@ namespace roomba_rrt::planning {
 /// util::InvalidInput naming the file and the field on a malformed file.
 std::map<std::string, Problem> loadScenarios(const std::string& path);
 
-/// config/rrt_scenarios.yaml of the source tree this library was built from.
-std::string defaultScenarioFile();
-
 /// The simulator's room as a planning problem (scenario `room`): bounds = the room's walls,
 /// obstacles = its furniture (circles and rectangles), robot_radius = the world's robot, start and
 /// goal = the robot's initial position (callers set their own).

@@ -1,12 +1,11 @@
-#include "roomba_rrt/planning/tool_arguments.h"
+#include "tool_arguments.h"
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 
-#include "roomba_rrt/planning/scenarios.h"
-
-namespace roomba_rrt::planning {
+namespace roomba_rrt::tools {
 namespace {
 
 [[noreturn]] void bad(const std::string& flag, const std::string& why) {
@@ -22,6 +21,8 @@ Enum parseEnumFlag(const std::string& flag, const std::string& value,
 }
 
 }  // namespace
+
+std::string defaultScenarioFile() { return ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"; }
 
 int parseIntFlag(const std::string& flag, const std::string& value) {
   std::size_t used = 0;
@@ -45,7 +46,8 @@ double parseDoubleFlag(const std::string& flag, const std::string& value) {
   } catch (const std::exception&) {
     bad(flag, "expected a number, got '" + value + "'");
   }
-  if (used != value.size() || !std::isfinite(v)) bad(flag, "expected a finite number");
+  if (used != value.size()) bad(flag, "expected a number, got '" + value + "'");
+  if (!std::isfinite(v)) bad(flag, "expected a finite number");
   return v;
 }
 
@@ -54,7 +56,7 @@ ToolArguments parseToolArguments(int argc, const char* const* argv,
                                  const std::set<std::string>& switches) {
   ToolArguments args;
   args.scenario_file = defaultScenarioFile();
-  PlannerOptions& o = args.options;
+  planning::PlannerOptions& o = args.options;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--smooth") {
@@ -72,11 +74,11 @@ ToolArguments parseToolArguments(int argc, const char* const* argv,
     } else if (flag == "--scenarios") {
       args.scenario_file = value;
     } else if (flag == "--algorithm") {
-      o.algorithm = parseEnumFlag(flag, value, &parseAlgorithm);
+      o.algorithm = parseEnumFlag(flag, value, &planning::parseAlgorithm);
     } else if (flag == "--collision") {
-      o.collision = parseEnumFlag(flag, value, &parseCollisionCheck);
+      o.collision = parseEnumFlag(flag, value, &planning::parseCollisionCheck);
     } else if (flag == "--nearest") {
-      o.nearest = parseEnumFlag(flag, value, &parseNearestSearch);
+      o.nearest = parseEnumFlag(flag, value, &planning::parseNearestSearch);
     } else if (flag == "--step") {
       o.step = parseDoubleFlag(flag, value);
     } else if (flag == "--goal-bias") {
@@ -114,4 +116,4 @@ std::string commonFlagsHelp() {
          "  --smooth                 shortcut-smooth each path found\n";
 }
 
-}  // namespace roomba_rrt::planning
+}  // namespace roomba_rrt::tools

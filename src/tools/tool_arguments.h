@@ -1,4 +1,6 @@
-// Command-line flags shared by the planning tools (rrt_monte_carlo, rrt_plot).
+// Command-line flags shared by the tools (rrt_monte_carlo and rrt_plot share the planner's;
+// roomba_coverage parses its numbers the same way). Part of the tools' library, roomba_tools:
+// the core libraries know nothing of command lines or of where the source tree is.
 #pragma once
 
 #include <map>
@@ -7,14 +9,17 @@
 
 #include "roomba_rrt/planning/planner_options.h"
 
-namespace roomba_rrt::planning {
+namespace roomba_rrt::tools {
+
+/// config/rrt_scenarios.yaml of the source tree the tools were built from.
+std::string defaultScenarioFile();
 
 /// What the tools' common flags set.
 struct ToolArguments {
-  std::string scenario = "a";  ///< --scenario NAME
-  std::string scenario_file;   ///< --scenarios FILE (default: defaultScenarioFile())
-  PlannerOptions options;      ///< --algorithm --collision --nearest --step --goal-bias
-                               ///< --max-iterations --goal-tolerance --seed --smooth
+  std::string scenario = "a";        ///< --scenario NAME
+  std::string scenario_file;         ///< --scenarios FILE (default: defaultScenarioFile())
+  planning::PlannerOptions options;  ///< --algorithm --collision --nearest --step --goal-bias
+                                     ///< --max-iterations --goal-tolerance --seed --smooth
   std::map<std::string, std::string> tool;  ///< the tool's own flags ("--runs" -> "200")
 };
 
@@ -32,4 +37,4 @@ std::string commonFlagsHelp();
 int parseIntFlag(const std::string& flag, const std::string& value);
 double parseDoubleFlag(const std::string& flag, const std::string& value);
 
-}  // namespace roomba_rrt::planning
+}  // namespace roomba_rrt::tools

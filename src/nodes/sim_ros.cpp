@@ -1,0 +1,230 @@
+#include "sim_ros.h"
+
+#include <cmath>
+
+namespace roomba_rrt::sim_node {
+namespace {
+
+using visualization_msgs::Marker;
+
+constexpr double kTrailSpacing = 0.02;      // m between trail points
+constexpr std::size_t kTrailLength = 5000;  // points kept (100 m of path)
+constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
+constexpr double kWallThickness = 0.05;
+
+struct Rgb {
+  double r, g, b;
+};
+const Rgb kWallColour{0.55, 0.55, 0.55}, kFurnitureColour{0.55, 0.35, 0.2},
+    kTrailColour{0.1, 0.8, 0.3}, kRobotColour{0.2, 0.6, 0.9}, kPressedColour{0.9, 0.2, 0.2},
+    kHeadingColour{1.0, 1.0, 1.0}, kNameColour{0.1, 0.1, 0.1};
+
+Marker makeMarker(const std::string& ns, int id, int type, Rgb colour) {
+  Marker m;
+  m.header.frame_id = "map";
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.color.r = colour.r;
+  m.color.g = colour.g;
+  m.color.b = colour.b;
+  m.color.a = 1.0;
+  return m;
+}
+
+/// A box marker over [x0, x1] × [y0, y1], `height` tall, standing on the floor.
+Marker makeBox(const std::string& ns, int id, double x0, double y0, double x1, double y1,
+               double height, Rgb colour) {
+  auto m = makeMarker(ns, id, Marker::CUBE, colour);
+  m.pose.position.x = 0.5 * (x0 + x1);
+  m.pose.position.y = 0.5 * (y0 + y1);
+  m.pose.position.z = 0.5 * height;
+  m.scale.x = x1 - x0;
+  m.scale.y = y1 - y0;
+  m.scale.z = height;
+  return m;
+}
+
+/// Robot i's disc, heading, trail (when it has two points) and, when named, its name.
+void addRobotMarkers(const sim::MultiRobotSimulator& sim, std::size_t i, const Marker& trail,
+                     visualization_msgs::MarkerArray& array) {
+  const sim::Pose2D& pose = sim.pose(i);
+  const double r = sim.spec(i).radius;
+  const int id = static_cast<int>(i);
+  auto robot = makeMarker("robot", id, Marker::CYLINDER,
+                          sim.bumper(i).pressed ? kPressedColour : kRobotColour);
+  robot.pose.position.x = pose.x;
+  robot.pose.position.y = pose.y;
+  robot.pose.position.z = 0.5 * kRobotHeight;
+  robot.scale.x = robot.scale.y = 2 * r;
+  robot.scale.z = kRobotHeight;
+  array.markers.push_back(robot);
+
+  auto heading = makeMarker("heading", id, Marker::ARROW, kHeadingColour);
+  heading.pose.position.x = pose.x;
+  heading.pose.position.y = pose.y;
+  heading.pose.position.z = kRobotHeight + 0.01;
+  heading.pose.orientation = yawToQuaternion(pose.theta);
+  heading.scale.x = r;
+  heading.scale.y = 0.04;
+  heading.scale.z = 0.04;
+  array.markers.push_back(heading);
+
+  if (trail.points.size() >= 2) array.markers.push_back(trail);
+  const std::string& name = sim.spec(i).name;
+  if (!name.empty()) {
+    auto label = makeMarker("names", id, Marker::TEXT_VIEW_FACING, kNameColour);
+    label.text = name;
+    label.pose.position.x = pose.x;
+    label.pose.position.y = pose.y;
+    label.pose.position.z = kRobotHeight + 0.15;
+    label.scale.z = 0.15;  // text height, m
+    array.markers.push_back(label);
+  }
+}
+
+}  // namespace
+
+RobotFrames robotFrames(const std::string& name) {
+  const std::string prefix = name.empty() ? "" : name + "/";
+  return {prefix, prefix + "odom", prefix + "base_link"};
+}
+
+geometry_msgs::Quaternion yawToQuaternion(double yaw) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(0.5 * yaw);
+  q.w = std::cos(0.5 * yaw);
+  return q;
+}
+
+nav_msgs::Odometry toOdometry(const sim::Pose2D& pose, const sim::Velocity& applied,
+                              const RobotFrames& frames, const ros::Time& stamp) {
+  nav_msgs::Odometry odom;
+  odom.header.stamp = stamp;
+  odom.header.frame_id = frames.odom;
+  odom.child_frame_id = frames.base_link;
+  odom.pose.pose.position.x = pose.x;
+  odom.pose.pose.position.y = pose.y;
+  odom.pose.pose.orientation = yawToQuaternion(pose.theta);
+  odom.twist.twist.linear.x = applied.v;
+  odom.twist.twist.angular.z = applied.w;
+  return odom;
+}
+
+Bumper toBumper(const sim::BumperState& bumper, const RobotFrames& frames, const ros::Time& stamp) {
+  Bumper msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frames.base_link;
+  msg.pressed = bumper.pressed;
+  msg.left = bumper.left;
+  msg.right = bumper.right;
+  return msg;
+}
+
+geometry_msgs::TransformStamped toOdomTransform(const sim::Pose2D& pose, const RobotFrames& frames,
+                                                const ros::Time& stamp) {
+  geometry_msgs::TransformStamped tf;
+  tf.header.stamp = stamp;
+  tf.header.frame_id = frames.odom;
+  tf.child_frame_id = frames.base_link;
+  tf.transform.translation.x = pose.x;
+  tf.transform.translation.y = pose.y;
+  tf.transform.rotation = yawToQuaternion(pose.theta);
+  return tf;
+}
+
+geometry_msgs::TransformStamped toMapTransform(const RobotFrames& frames, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped map_to_odom;
+  map_to_odom.header.stamp = stamp;
+  map_to_odom.header.frame_id = "map";
+  map_to_odom.child_frame_id = frames.odom;
+  map_to_odom.transform.rotation.w = 1.0;
+  return map_to_odom;
+}
+
+std_msgs::Float32 toCoverageMessage(double coverage) {
+  std_msgs::Float32 msg;
+  msg.data = static_cast<float>(coverage);
+  return msg;
+}
+
+nav_msgs::OccupancyGrid toCoverageMap(const sim::CoverageGrid& grid, const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid map;
+  map.header.stamp = stamp;
+  map.header.frame_id = "map";
+  map.info.map_load_time = stamp;
+  map.info.resolution = static_cast<float>(grid.cellSize());
+  map.info.width = grid.columns();
+  map.info.height = grid.rows();
+  map.info.origin.orientation.w = 1.0;
+  map.data.resize(static_cast<std::size_t>(grid.columns()) * grid.rows());
+  for (int row = 0; row < grid.rows(); ++row) {
+    for (int column = 0; column < grid.columns(); ++column) {
+      const bool free = grid.isFree(column, row);
+      map.data[row * grid.columns() + column] = !free ? 100 : grid.isSwept(column, row) ? 0 : -1;
+    }
+  }
+  return map;
+}
+
+Marker makeTrail(std::size_t robot) {
+  auto trail = makeMarker("trail", static_cast<int>(robot), Marker::LINE_STRIP, kTrailColour);
+  trail.scale.x = 0.02;  // line width, m
+  return trail;
+}
+
+void extendTrail(const sim::Pose2D& pose, Marker& trail) {
+  std::vector<geometry_msgs::Point>& points = trail.points;
+  if (!points.empty()) {
+    const auto& last = points.back();
+    if (std::hypot(pose.x - last.x, pose.y - last.y) < kTrailSpacing) return;
+  }
+  if (points.size() >= kTrailLength) {
+    points.erase(points.begin(), points.begin() + kTrailLength / 2);
+  }
+  geometry_msgs::Point p;
+  p.x = pose.x;
+  p.y = pose.y;
+  p.z = 0.01;
+  points.push_back(p);
+}
+
+std::vector<Marker> worldMarkers(const sim::World& w) {
+  const double t = kWallThickness;
+  std::vector<Marker> markers = {
+      makeBox("walls", 0, -t, -t, 0, w.height + t, kWallHeight, kWallColour),
+      makeBox("walls", 1, w.width, -t, w.width + t, w.height + t, kWallHeight, kWallColour),
+      makeBox("walls", 2, 0, -t, w.width, 0, kWallHeight, kWallColour),
+      makeBox("walls", 3, 0, w.height, w.width, w.height + t, kWallHeight, kWallColour),
+  };
+  int id = 0;
+  for (const sim::Circle& c : w.circles) {
+    auto m = makeMarker("furniture", id++, Marker::CYLINDER, kFurnitureColour);
+    m.pose.position.x = c.center.x;
+    m.pose.position.y = c.center.y;
+    m.pose.position.z = 0.5 * kFurnitureHeight;
+    m.scale.x = m.scale.y = 2 * c.radius;
+    m.scale.z = kFurnitureHeight;
+    markers.push_back(m);
+  }
+  for (const sim::Rectangle& b : w.rectangles) {
+    markers.push_back(makeBox("furniture", id++, b.min_x, b.min_y, b.max_x, b.max_y,
+                              kFurnitureHeight, kFurnitureColour));
+  }
+  return markers;
+}
+
+visualization_msgs::MarkerArray toMarkers(const std::vector<Marker>& world_markers,
+                                          const sim::MultiRobotSimulator& sim,
+                                          const std::vector<Marker>& trails,
+                                          const ros::Time& stamp) {
+  visualization_msgs::MarkerArray array;
+  array.markers = world_markers;
+  for (std::size_t i = 0; i < sim.size(); ++i) addRobotMarkers(sim, i, trails[i], array);
+  for (auto& m : array.markers) m.header.stamp = stamp;
+  return array;
+}
+
+}  // namespace roomba_rrt::sim_node

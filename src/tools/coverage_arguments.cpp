@@ -1,0 +1,117 @@
+#include "coverage_arguments.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "roomba_rrt/sim/multi_robot_simulator.h"
+#include "tool_arguments.h"
+
+namespace roomba_rrt::tools {
+namespace {
+
+const char* const kUsage =
+    "usage: roomba_coverage --behavior fsm|bt [--duration 600] [--seed 1] [--seeds N]\n"
+    "                       [--world FILE] [--config FILE] [--tree FILE]\n"
+    "                       [--csv traj.csv] [--png map.png]\n"
+    "                       [--robots N[,N...]] [--plot coverage.png]\n"
+    "  --behavior  fsm (state machine) or bt (behavior tree)\n"
+    "  --duration  simulated seconds per run (default 600)\n"
+    "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
+    "  --world     world YAML (default config/roomba_world.yaml)\n"
+    "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
+    "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree)\n"
+    "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
+    "  --png       picture of a typical run: with --seeds N, the seed whose final coverage is\n"
+    "              closest to the mean of the N (its title says which)\n"
+    "  --robots    N robots spread evenly over the room (replacing the world's), each running the\n"
+    "              behaviour with its own seed (robot k of seed s: s + 1000 k); the coverage is\n"
+    "              their union's. A list (1,2,4) runs each count. A world that names robots runs\n"
+    "              those without --robots. --csv and --png need one unnamed robot.\n"
+    "  --plot      union coverage over time, mean ± std over the seeds, one curve per count\n"
+    "A progress bar counts the runs on stderr when it is a terminal.\n";
+
+std::vector<int> parseCounts(const std::string& flag, const std::string& text) {
+  std::vector<int> counts;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string item = text.substr(begin, end - begin);
+    double n = 0;
+    try {
+      n = parseDoubleFlag(flag, item);
+    } catch (const std::invalid_argument&) {
+      n = -1;
+    }
+    if (n < 1 || n > static_cast<double>(sim::kMaxRobots) || n != std::floor(n)) {
+      throw std::invalid_argument(flag + " needs robot counts in [1, " +
+                                  std::to_string(sim::kMaxRobots) + "] like 4 or 1,2,4, got '" +
+                                  text + "'");
+    }
+    counts.push_back(static_cast<int>(n));
+    begin = end + 1;
+  }
+  return counts;
+}
+
+}  // namespace
+
+const char* coverageUsage() { return kUsage; }
+
+CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
+  CoverageOptions o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "-h" || flag == "--help") {
+      o.help = true;
+      return o;
+    }
+    if (i + 1 >= argc) throw std::invalid_argument(flag + " needs a value");
+    const std::string value = argv[++i];
+    if (flag == "--behavior") {
+      o.behavior = value;
+    } else if (flag == "--duration") {
+      o.duration = parseDoubleFlag(flag, value);
+    } else if (flag == "--seed") {
+      const double seed = parseDoubleFlag(flag, value);
+      if (seed < 0 || seed > 4294967295.0 || seed != std::floor(seed)) {
+        throw std::invalid_argument("--seed needs an integer in [0, 2^32), got " + value);
+      }
+      o.seed = static_cast<unsigned>(seed);
+    } else if (flag == "--seeds") {
+      const double seeds = parseDoubleFlag(flag, value);
+      if (seeds < 1 || seeds != std::floor(seeds)) {
+        throw std::invalid_argument("--seeds needs a positive integer, got " + value);
+      }
+      o.seeds = static_cast<int>(seeds);
+    } else if (flag == "--world") {
+      o.world = value;
+    } else if (flag == "--config") {
+      o.config = value;
+    } else if (flag == "--tree") {
+      o.tree = value;
+    } else if (flag == "--csv") {
+      o.csv = value;
+    } else if (flag == "--png") {
+      o.png = value;
+    } else if (flag == "--robots") {
+      o.robots = parseCounts(flag, value);
+    } else if (flag == "--plot") {
+      o.plot = value;
+    } else {
+      throw std::invalid_argument("unknown option " + flag);
+    }
+  }
+  if (o.behavior != "fsm" && o.behavior != "bt") {
+    throw std::invalid_argument("--behavior must be fsm or bt, got '" + o.behavior + "'");
+  }
+  if (!(o.duration > 0)) throw std::invalid_argument("--duration must be > 0");
+  if (!o.tree.empty() && o.behavior != "bt") {
+    throw std::invalid_argument("--tree needs --behavior bt");
+  }
+  if (!o.robots.empty() && (!o.csv.empty() || !o.png.empty())) {
+    throw std::invalid_argument("--csv and --png draw one robot; with --robots use --plot");
+  }
+  return o;
+}
+
+}  // namespace roomba_rrt::tools

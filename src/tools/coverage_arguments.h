@@ -1,0 +1,33 @@
+// roomba_coverage's command line: what to run (behaviour, duration, seeds, robots, files) and
+// what to write (CSV, picture, plot).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace roomba_rrt::tools {
+
+struct CoverageOptions {
+  std::string behavior;  ///< "fsm" or "bt"
+  double duration = 600;
+  unsigned seed = 1;
+  int seeds = 1;
+  std::string world = ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml";
+  std::string config = ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml";
+  std::string tree;
+  std::string csv;
+  std::string png;
+  std::vector<int> robots;  ///< robot counts (--robots); empty: the world's robots
+  std::string plot;
+  bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
+};
+
+/// The usage message, one line per flag.
+const char* coverageUsage();
+
+/// Parses `--flag value` pairs. Throws std::invalid_argument naming the flag on an unknown flag, a
+/// missing or malformed value, or flags that do not go together (--tree without bt, --csv or
+/// --png with --robots).
+CoverageOptions parseCoverageArguments(int argc, const char* const* argv);
+
+}  // namespace roomba_rrt::tools

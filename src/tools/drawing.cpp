@@ -1,0 +1,62 @@
+#include "drawing.h"
+
+#include <stdexcept>
+
+namespace roomba_rrt::tools {
+
+void setColour(cairo_t* cr, const Rgb& colour, double alpha) {
+  cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, alpha);
+}
+
+PngImage::PngImage(int width, int height, cairo_format_t format)
+    : surface_(cairo_image_surface_create(format, width, height)), cr_(cairo_create(surface_)) {
+  cairo_set_source_rgb(cr_, 1, 1, 1);
+  cairo_paint(cr_);
+}
+
+PngImage::~PngImage() {
+  cairo_destroy(cr_);
+  cairo_surface_destroy(surface_);
+}
+
+void PngImage::write(const std::string& file) const {
+  const cairo_status_t status = cairo_surface_write_to_png(surface_, file.c_str());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(file + ": cannot write the PNG (" + cairo_status_to_string(status) +
+                             ")");
+  }
+}
+
+void drawText(cairo_t* cr, const std::string& text, double x, double y, double align_x,
+              double align_y) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  cairo_move_to(cr, x - e.x_bearing - align_x * e.width, y - e.y_bearing - align_y * e.height);
+  cairo_show_text(cr, text.c_str());
+}
+
+void drawFloor(cairo_t* cr, const sim::World& world, const RoomCanvas& c) {
+  cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
+  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
+  cairo_fill(cr);
+}
+
+void drawFurnitureAndWalls(cairo_t* cr, const sim::World& world, const RoomCanvas& c) {
+  cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
+  for (const sim::Circle& circle : world.circles) {
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, c.px(circle.center.x), c.py(circle.center.y), circle.radius * c.scale, 0,
+              2 * kPi);
+  }
+  for (const sim::Rectangle& r : world.rectangles) {
+    cairo_rectangle(cr, c.px(r.min_x), c.py(r.max_y), (r.max_x - r.min_x) * c.scale,
+                    (r.max_y - r.min_y) * c.scale);
+  }
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 3);
+  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
+  cairo_stroke(cr);
+}
+
+}  // namespace roomba_rrt::tools

@@ -1,0 +1,62 @@
+// Drawing PNGs with cairo, shared by the tools that write them (rrt_plot, roomba_coverage,
+// roomba_nav_eval): the white image and its file, colours, aligned text, and the simulator's room
+// (floor, furniture, walls).
+#pragma once
+
+#include <cairo.h>
+
+#include <string>
+
+#include "roomba_rrt/sim/world.h"
+
+namespace roomba_rrt::tools {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+struct Rgb {
+  double r, g, b;
+};
+
+void setColour(cairo_t* cr, const Rgb& colour, double alpha = 1.0);
+
+/// A white image of width × height pixels to draw on through cr(), then written to a PNG file.
+class PngImage {
+ public:
+  PngImage(int width, int height, cairo_format_t format = CAIRO_FORMAT_ARGB32);
+  ~PngImage();
+  PngImage(const PngImage&) = delete;
+  PngImage& operator=(const PngImage&) = delete;
+
+  cairo_t* cr() const { return cr_; }
+
+  /// Throws std::runtime_error "<file>: cannot write the PNG (<cairo's reason>)".
+  void write(const std::string& file) const;
+
+ private:
+  cairo_surface_t* surface_;
+  cairo_t* cr_;
+};
+
+/// `text` placed by its ink box: (x, y) is its left/top edge at align 0, its centre at 0.5, its
+/// right/bottom edge at 1.
+void drawText(cairo_t* cr, const std::string& text, double x, double y, double align_x,
+              double align_y);
+
+/// Maps room metres to image pixels: x to the right, y up, the room's top-left corner at
+/// (margin, header + margin).
+struct RoomCanvas {
+  double height;         ///< the room's height (m)
+  double scale = 100.0;  ///< pixels per metre
+  double margin = 20.0;
+  double header = 30.0;
+  double px(double x) const { return margin + x * scale; }
+  double py(double y) const { return header + margin + (height - y) * scale; }
+};
+
+/// The floor, light grey.
+void drawFloor(cairo_t* cr, const sim::World& world, const RoomCanvas& c);
+
+/// Furniture (filled, brown) and the walls (black outline).
+void drawFurnitureAndWalls(cairo_t* cr, const sim::World& world, const RoomCanvas& c);
+
+}  // namespace roomba_rrt::tools
