@@ -38,7 +38,7 @@ RR_PACKAGES=(
   libgtest-dev librostest-dev python3-rostest python3-rosunit
   libompl-dev libbenchmark-dev
   clang libfuzzer-14-dev libclang-rt-14-dev
-  rviz xvfb libgl1-mesa-dri imagemagick iproute2 procps
+  rviz xvfb libgl1-mesa-dri imagemagick iproute2 util-linux procps
 )
 
 rr_log() { printf '\033[1m[roomba_rrt]\033[0m %s\n' "$*" >&2; }
