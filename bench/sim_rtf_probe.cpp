@@ -4,12 +4,22 @@
 //   rosparam set /use_sim_time true
 //   rosrun roomba_rrt roomba_sim _real_time_factor:=50 &
 //   rosrun roomba_rrt sim_rtf_probe 20        # wall seconds to listen (default 10)
+//
+// With named robots (a world file with `robots:`), --robots N reads /robot1/odom .. /robotN/odom
+// (scripts/run --robots and scripts/lib/place_robots.py name them so): one line per robot, then
+// the totals, whose real-time factor is the slowest robot's; a robot that sends nothing fails.
+//
+//   rosrun roomba_rrt sim_rtf_probe 10 --robots 10
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <string>
 
 namespace {
 
@@ -34,32 +44,72 @@ struct Tally {
     last_wall = now;
     ++received;
   }
+  double wall() const { return (last_wall - first_wall).toSec(); }
+  double simulated() const { return last_stamp - first_stamp; }
 };
+
+void print(const char* label, long received, long missed, double simulated, double wall,
+           double factor) {
+  std::printf(
+      "%sreceived %ld /odom (%.0f/s wall), missed %ld; %.1f s simulated in %.1f s wall: "
+      "real-time factor %.1f\n",
+      label, received, received / wall, missed, simulated, wall, factor);
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "sim_rtf_probe", ros::init_options::AnonymousName);
-  const double listen = argc > 1 ? std::atof(argv[1]) : 10.0;
+  double listen = 10.0;
+  int robots = 0;  // 0: the unnamed robot's /odom
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--robots") == 0 && i + 1 < argc) {
+      robots = std::atoi(argv[++i]);
+      if (robots < 1) {
+        std::fprintf(stderr, "sim_rtf_probe: --robots needs a number >= 1\n");
+        return 2;
+      }
+    } else {
+      listen = std::atof(argv[i]);
+    }
+  }
   ros::NodeHandle nh;
-  Tally tally;
-  tally.step = ros::param::param("/roomba_sim/step", 1.0 / 60.0);
-  ros::Subscriber sub =
-      nh.subscribe("/odom", 10000, &Tally::onOdom, &tally, ros::TransportHints().tcpNoDelay());
+  const double step = ros::param::param("/roomba_sim/step", 1.0 / 60.0);
+  std::deque<Tally> tallies(std::max(robots, 1));  // stable addresses for the callbacks
+  std::deque<ros::Subscriber> subs;
+  for (int k = 0; k < static_cast<int>(tallies.size()); ++k) {
+    tallies[k].step = step;
+    const std::string topic = robots == 0 ? "/odom" : "/robot" + std::to_string(k + 1) + "/odom";
+    subs.push_back(nh.subscribe(topic, 10000, &Tally::onOdom, &tallies[k],
+                                ros::TransportHints().tcpNoDelay()));
+  }
   const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(listen);
   while (ros::ok() && ros::WallTime::now() < end) {
     ros::spinOnce();
     ros::WallDuration(0.0005).sleep();
   }
-  const double wall = (tally.last_wall - tally.first_wall).toSec();
-  if (tally.received < 2 || wall <= 0) {
-    std::fprintf(stderr, "sim_rtf_probe: no /odom received (is roomba_sim running?)\n");
-    return 1;
+  long received = 0, missed = 0;
+  double factor = INFINITY, simulated = INFINITY, wall = 0;
+  for (std::size_t k = 0; k < tallies.size(); ++k) {
+    const Tally& t = tallies[k];
+    const std::string name = robots == 0 ? "" : "robot" + std::to_string(k + 1);
+    if (t.received < 2 || t.wall() <= 0) {
+      std::fprintf(stderr, "sim_rtf_probe: no /%sodom received (is roomba_sim running%s?)\n",
+                   robots == 0 ? "" : (name + "/").c_str(),
+                   robots == 0 ? "" : " with a world file that names this robot");
+      return 1;
+    }
+    if (robots > 0) {
+      print(("/" + name + "/odom: ").c_str(), t.received, t.missed, t.simulated(), t.wall(),
+            t.simulated() / t.wall());
+    }
+    received += t.received;
+    missed += t.missed;
+    factor = std::min(factor, t.simulated() / t.wall());
+    simulated = std::min(simulated, t.simulated());
+    wall = std::max(wall, t.wall());
   }
-  const double simulated = tally.last_stamp - tally.first_stamp;
-  std::printf(
-      "received %ld /odom (%.0f/s wall), missed %ld; %.1f s simulated in %.1f s wall: "
-      "real-time factor %.1f\n",
-      tally.received, tally.received / wall, tally.missed, simulated, wall, simulated / wall);
+  print(robots == 0 ? "" : ("all " + std::to_string(robots) + " robots: ").c_str(), received,
+        missed, simulated, wall, factor);
   return 0;
 }
