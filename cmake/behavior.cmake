@@ -164,6 +164,8 @@ if(CATKIN_ENABLE_TESTING)
   # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.
   add_rostest_gtest(nav_rostest test/behavior/nav_goal.test test/behavior/nav_rostest.cpp)
   add_rostest(test/behavior/nav_action.test DEPENDENCIES nav_rostest)
+  # Issue 13: two named robots, each with its own navigation roomba_bt, one shared rrt_planner.
+  add_rostest(test/behavior/nav_two_robots.test DEPENDENCIES nav_rostest)
   if(TARGET nav_rostest)
     target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(nav_rostest ${catkin_LIBRARIES})

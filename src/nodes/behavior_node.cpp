@@ -16,14 +16,6 @@
 namespace roomba_rrt::nodes {
 namespace {
 
-/// The robot's body frame by default: base_link, or <ns>/base_link in a namespace (roomba_sim's
-/// frames for a named robot), so `rosrun roomba_rrt roomba_fsm __ns:=robot1` needs no parameter.
-std::string defaultBaseFrame() {
-  std::string ns = ros::this_node::getNamespace();
-  while (!ns.empty() && ns.front() == '/') ns.erase(0, 1);
-  return ns.empty() ? "base_link" : ns + "/base_link";
-}
-
 /// The node: one behaviour, its inputs and outputs.
 class BehaviorNode {
  public:
@@ -34,7 +26,7 @@ class BehaviorNode {
         period_(1.0 / rate),
         max_catch_up_(std::max(1, static_cast<int>(rate))),
         bumper_timeout_(bumper_timeout),
-        base_frame_(pnh.param<std::string>("base_frame", defaultBaseFrame())) {
+        base_frame_(pnh.param<std::string>("base_frame", robotFrame("base_link"))) {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     state_pub_ = pnh.advertise<std_msgs::String>("state", 10, /*latch=*/true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
@@ -139,6 +131,12 @@ class BehaviorNode {
 };
 
 }  // namespace
+
+std::string robotFrame(const std::string& frame) {
+  std::string ns = ros::this_node::getNamespace();
+  while (!ns.empty() && ns.front() == '/') ns.erase(0, 1);
+  return ns.empty() ? frame : ns + "/" + frame;
+}
 
 std::string packageConfigFile(const std::string& file_name) {
   return ros::package::getPath("roomba_rrt") + "/config/" + file_name;

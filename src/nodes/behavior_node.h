@@ -27,6 +27,11 @@ using BehaviorMaker = std::function<std::unique_ptr<behavior::RoombaBehavior>(
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
                     const BehaviorMaker& make_behavior);
 
+/// One of the robot's frames by default: `frame` (base_link), or <ns>/`frame` when the node runs
+/// in a namespace (roomba_sim's frames for a named robot), so that
+/// `rosrun roomba_rrt roomba_fsm __ns:=robot1` needs no frame parameter. Call after ros::init.
+std::string robotFrame(const std::string& frame);
+
 /// The path of a file in the package's config/ folder (ros::package::getPath).
 std::string packageConfigFile(const std::string& file_name);
 

@@ -285,7 +285,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
   s.world = sim::loadWorld(world_file);
   s.clearance = finiteParam(pnh, "clearance", 0.05, 0.0);
   s.global_frame = pnh.param<std::string>("global_frame", s.global_frame);
-  s.robot_frame = pnh.param<std::string>("robot_frame", s.robot_frame);
+  s.robot_frame = pnh.param<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
   const std::string planner = pnh.param<std::string>("planner", "service");
   const std::string service = pnh.param<std::string>("plan_path_service", "/rrt_planner/plan_path");
 

@@ -19,7 +19,8 @@ bool isNavigationTree(const std::string& tree_file);
 
 /// The navigation behaviour of roomba_bt, set up from the private parameters (see README,
 /// "Navigation: click a goal"): ~world_file, ~planner ("service" or "in_process"),
-/// ~plan_path_service, ~clearance, ~global_frame, ~robot_frame, ~max_linear_speed,
+/// ~plan_path_service, ~clearance, ~global_frame, ~robot_frame (default base_link, or
+/// <ns>/base_link in a namespace: a named robot of roomba_sim), ~max_linear_speed,
 /// ~max_angular_speed, ~xy_tolerance, ~yaw_tolerance. std::invalid_argument naming the
 /// parameter when one is invalid.
 std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& private_nh,

@@ -10,6 +10,11 @@
 // ABORTED at once with a message naming it, the robot standing still; a goal in an unknown frame
 // or with NaN refused with a message; a second goal preempts the first; a cancel stops the robot
 // within 0.1 s of robot time.
+//
+// NavTwoRobots (nav_two_robots.test, issue 13): two named robots in one roomba_sim, each with its
+// own roomba_bt under its namespace (as `scripts/run --robots 2 nav` starts them), one shared
+// rrt_planner: a goal to each robot's /<name>/move_base at the same time, and each robot reaches
+// its own goal.
 #include <actionlib/client/simple_action_client.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
@@ -19,12 +24,14 @@
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -34,14 +41,14 @@ using actionlib::SimpleClientGoalState;
 constexpr double kXyTolerance = 0.05;  // the follower's default, m
 constexpr double kWallTimeout = 40.0;  // s of wall time per goal (a loaded 2-core machine)
 
-/// What the simulator says about the robot.
+/// What the simulator says about the robot (a named robot's topics with `ns` = "/robot1").
 class Robot {
  public:
-  Robot() {
+  explicit Robot(const std::string& ns = "") {
     ros::NodeHandle nh;
-    odom_sub_ = nh.subscribe("/odom", 100, &Robot::onOdom, this);
-    bumper_sub_ = nh.subscribe("/bumper", 100, &Robot::onBumper, this);
-    state_sub_ = nh.subscribe("/roomba_bt/state", 10, &Robot::onState, this);
+    odom_sub_ = nh.subscribe(ns + "/odom", 100, &Robot::onOdom, this);
+    bumper_sub_ = nh.subscribe(ns + "/bumper", 100, &Robot::onBumper, this);
+    state_sub_ = nh.subscribe(ns + "/roomba_bt/state", 10, &Robot::onState, this);
   }
   std::string state() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -243,6 +250,48 @@ TEST_F(Nav, a_cancel_stops_the_robot_within_a_tenth_of_a_second) {
   // And stays stopped.
   ros::WallDuration(0.3).sleep();
   EXPECT_EQ(robot_.latest().v, 0.0);
+}
+
+TEST(NavTwoRobots, each_robot_reaches_its_own_goal) {
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  struct Task {
+    std::string name;
+    double x, y;  // its goal; config/roomba_world_two_robots.yaml: robot1 at (1.6, 2.4), robot2
+  };              // at (4.8, 2.4): the two paths do not cross
+  const Task tasks[] = {{"robot1", 1.0, 4.0}, {"robot2", 5.6, 0.8}};
+  std::vector<std::unique_ptr<Robot>> robots;
+  std::vector<std::unique_ptr<Client>> clients;
+  for (const Task& task : tasks) {
+    robots.push_back(std::make_unique<Robot>("/" + task.name));
+    const Robot& robot = *robots.back();
+    ASSERT_TRUE(waitFor([&] { return !std::isnan(robot.latest().x); }, 30.0))
+        << "no /" << task.name << "/odom";
+    clients.push_back(std::make_unique<Client>("/" + task.name + "/move_base", true));
+    ASSERT_TRUE(clients.back()->waitForServer(ros::Duration(30.0)))
+        << "no /" << task.name << "/move_base action server";
+  }
+  for (std::size_t i = 0; i < clients.size(); ++i) {
+    clients[i]->sendGoal(goalAt(tasks[i].x, tasks[i].y));
+  }
+  const ros::Time start = ros::Time::now();
+  waitFor(
+      [&] {
+        return std::all_of(clients.begin(), clients.end(),
+                           [](const auto& c) { return c->getState().isDone(); });
+      },
+      kWallTimeout);
+  std::printf("both goals done after %.1f s of robot time\n", (ros::Time::now() - start).toSec());
+  for (std::size_t i = 0; i < clients.size(); ++i) {
+    const Robot::Sample s = robots[i]->latest();
+    EXPECT_EQ(clients[i]->getState(), SimpleClientGoalState::SUCCEEDED)
+        << tasks[i].name << ": " << clients[i]->getState().getText();
+    EXPECT_LT(std::hypot(s.x - tasks[i].x, s.y - tasks[i].y), kXyTolerance + 0.01)
+        << tasks[i].name << " is at (" << s.x << ", " << s.y << ")";
+    EXPECT_FALSE(robots[i]->everPressed()) << tasks[i].name << " bumped into something";
+    std::printf("%s: at (%.3f, %.3f), its goal (%.1f, %.1f)\n", tasks[i].name.c_str(), s.x, s.y,
+                tasks[i].x, tasks[i].y);
+  }
 }
 
 }  // namespace
