@@ -24,6 +24,11 @@ a=rr2m_a_$$ b=rr2m_b_$$  # the namespaces ("machines"), unique per run
 ip_a=10.77.0.1 ip_b=10.77.0.2
 master_uri=http://$ip_a:$port
 made=()
+# ip netns add bind-mounts /run/netns onto itself when it is not a mount point yet. In a chroot
+# (CI's fresh Debian) that mount would outlive the test and keep the chroot from being removed:
+# cleanup undoes it when this run made it and no other namespace is left in it.
+netns_dir=/run/netns netns_was_mounted=0
+if mountpoint -q "$netns_dir" 2>/dev/null; then netns_was_mounted=1; fi
 cleanup() {
   local ns pids
   trap - EXIT
@@ -39,6 +44,10 @@ cleanup() {
     if [ -n "$pids" ]; then kill -KILL $pids 2>/dev/null || true; fi
     ip netns delete "$ns" 2>/dev/null || true  # the veth pair goes with it
   done
+  if [ "$netns_was_mounted" = 0 ] && mountpoint -q "$netns_dir" 2>/dev/null &&
+    [ -z "$(ls -A "$netns_dir")" ]; then
+    umount "$netns_dir" 2>/dev/null || true
+  fi
   wait 2>/dev/null || true
   cleanup_env
 }
