@@ -63,6 +63,14 @@ int main(int argc, char** argv) {
   double listen = 10.0;
   int robots = 0;  // 0: the unnamed robot's /odom
   for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+      std::printf(
+          "usage: sim_rtf_probe [SECONDS] [--robots N]\n"
+          "  listens SECONDS of wall time (default 10) to /odom, or with --robots N to\n"
+          "  /robot1/odom .. /robotN/odom, and prints the messages received and missed and the\n"
+          "  real-time factor (with N robots: one line each, then the totals)\n");
+      return 0;
+    }
     if (std::strcmp(argv[i], "--robots") == 0 && i + 1 < argc) {
       robots = std::atoi(argv[++i]);
       if (robots < 1) {
