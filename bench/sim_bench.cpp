@@ -1,4 +1,4 @@
-// Speed of the simulation core (Google Benchmark). Numbers: README.md, "The simulated Roomba".
+// Speed of the simulation core (Google Benchmark). Numbers: doc/performance.md.
 //   devel/lib/roomba_rrt/sim_bench   (after scripts/bench or any Release build)
 // The commands imitate the lab behaviour's mix (forward, spiral-like arcs, backing up, turning
 // in place), held for a random number of steps, so the robot keeps hitting walls and furniture.

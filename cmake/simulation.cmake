@@ -21,7 +21,7 @@ target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
-# Measures the node's sustained real-time factor while reading every /odom (see README.md, "The simulated Roomba").
+# Measures the node's sustained real-time factor while reading every /odom (doc/performance.md).
 add_executable(sim_rtf_probe bench/sim_rtf_probe.cpp)
 target_include_directories(sim_rtf_probe PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_rtf_probe ${catkin_LIBRARIES})

@@ -7,7 +7,7 @@
 // /<name>/odom, /<name>/bumper, tf <name>/odom→<name>/base_link, static map→<name>/odom,
 // ~<name>/coverage — each with its own command timeout. Always one /clock (when /use_sim_time is
 // true), ~markers (every robot, with its name), ~coverage and ~coverage_map (the union); service
-// ~reset. Parameters: see README.md, "The simulated Roomba".
+// ~reset. Parameters: doc/nodes.md, "roomba_sim".
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/OccupancyGrid.h>

@@ -7,7 +7,7 @@
 // are served by several threads, so a long plan does not hold up other clients; beyond ~threads
 // plans at once a request is answered "busy" at once, and every plan stops after
 // ~max_planning_time seconds (or less, if the request asks). Parameters and
-// examples: README.md, "The rrt_planner node".
+// examples: doc/nodes.md, "rrt_planner", and doc/planning.md.
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -140,7 +140,7 @@ class RrtPlannerNode {
     animate_ = param(pnh, "animate", false);
     animate_every_ = param(pnh, "animate_every", 10);
     const double animate_rate = param(pnh, "animate_rate", 20.0);
-    // Documented ranges (README): outside them the node stops at start naming the parameter.
+    // Documented ranges (doc/nodes.md): outside them the node stops at start naming the parameter.
     if (max_marker_nodes_ < 0 || max_marker_nodes_ > planning::kDefaultMaxIterationsCap) {
       throw std::invalid_argument("~max_marker_nodes: must be in [0, " +
                                   std::to_string(planning::kDefaultMaxIterationsCap) + "] (got " +

@@ -7,7 +7,7 @@
 // coloured by state): the seed whose final coverage is closest to the mean. Shows a progress bar
 // on a terminal. With --robots N (or a world that names robots) several Roombas run the behaviour
 // in one room, each its own, and the coverage is that of their union; --plot draws it over time
-// for each N. See README.md, "Behaviours" and "Several robots".
+// for each N. See doc/behaviours.md and doc/simulation.md, "Several robots".
 //
 // Arguments: coverage_arguments.h; runs: coverage_run.h; statistics: coverage_statistics.h;
 // pictures: coverage_drawing.h.

@@ -3,7 +3,7 @@
 // The simulator, a navigation tree (config/roomba_nav_tree.xml) and the in-process planner in one
 // loop, deterministic by seed: N random reachable goal poses one after another. Prints reached %,
 // bumper presses, time per goal, driven length ÷ the shortest length for the robot's disc, and
-// the planning time. See README.md, "Navigation".
+// the planning time. See doc/navigation.md.
 #include <unistd.h>
 
 #include <cairo.h>

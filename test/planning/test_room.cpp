@@ -233,7 +233,7 @@ TEST(RrtStar, length_on_scenario_a_is_never_below_the_true_shortest_path) {
   EXPECT_NEAR(shortest, 11.4916, 1e-3);  // tangent 5.568, arc 0.178, tangent 5.568
   PlannerOptions options;
   options.algorithm = Algorithm::kRrtStar;
-  options.max_iterations = 3000;  // the README's example
+  options.max_iterations = 3000;  // doc/planning.md's example
   for (CollisionCheck mode : {CollisionCheck::kPoints, CollisionCheck::kSegments}) {
     options.collision = mode;
     for (std::uint32_t seed = 1; seed <= 30; ++seed) {

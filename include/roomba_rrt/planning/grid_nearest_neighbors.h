@@ -29,7 +29,7 @@ namespace roomba_rrt::planning {
 /// small one contiguous scan is faster than any index. The scan reads the coordinates as two
 /// separate arrays (x's, y's), four points per SIMD instruction (see linearNearest() in the .cpp).
 /// Why not a kd-tree: at 10^6 nodes the cost is cache misses, and this layout touches three
-/// short contiguous runs of memory per query (see README.md, "RRT path planning" > Speed, for the
+/// short contiguous runs of memory per query (see doc/performance.md for the
 /// measurements).
 class GridNearestNeighbors final : public NearestNeighbors {
  public:
