@@ -253,21 +253,22 @@ def sim_rows(t, results):
 def sim_robot_rows(t, results):
     """MultiRobotSimulator in the furnished room: the cost per robot must stay within 2x of one
     robot's step (robot-robot contact through a spatial index, not all pairs)."""
-    what = "Simulator core, {} robots in the furnished room: steps/s; cost per robot-step vs one robot"
+    what = "Simulator core, {} in the furnished room: steps/s; cost per robot-step vs one robot"
     try:
         data = load(results, "sim")
     except Missing as e:
-        t.missing("sim_robots", what.format("1/10/100"), str(e), "≤ 2× at 100")
+        t.missing("sim_robots", what.format("1/10/100 robots"), str(e), "≤ 2× at 100")
         return
     for n in (1, 10, 100):
+        robots = f"{n} robot" + ("s" if n > 1 else "")
         try:
             steps = gbench(data, f"BM_StepRobotsFurnishedRoom/{n}", "steps/s")
             per_robot = gbench(data, f"BM_StepRobotsFurnishedRoom/{n}", "per_robot_vs_one")
         except Missing as e:
-            t.missing(f"sim_robots_{n}", what.format(n), str(e))
+            t.missing(f"sim_robots_{n}", what.format(robots), str(e))
             continue
         judged = n == 100
-        t.add(f"sim_robots_{n}", what.format(n), per_robot,
+        t.add(f"sim_robots_{n}", what.format(robots), per_robot,
               target="≤ 2×" if judged else None, met=per_robot <= 2 if judged else None,
               ours_text=f"{fmt(steps / 1e3)} k steps/s · {per_robot:.2f}× per robot")
 
