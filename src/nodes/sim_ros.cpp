@@ -77,8 +77,10 @@ void addRobotMarkers(const sim::MultiRobotSimulator& sim, std::size_t i, const M
   if (!name.empty()) {
     auto label = makeMarker("names", id, Marker::TEXT_VIEW_FACING, kNameColour);
     label.text = name;
+    // Below the disc as rviz's top-down view shows it: a behaviour node's state text sits on the
+    // robot itself, and the two must not overlap.
     label.pose.position.x = pose.x;
-    label.pose.position.y = pose.y;
+    label.pose.position.y = pose.y - r - 0.12;
     label.pose.position.z = kRobotHeight + 0.15;
     label.scale.z = 0.15;  // text height, m
     array.markers.push_back(label);

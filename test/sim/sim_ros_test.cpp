@@ -175,7 +175,10 @@ TEST(SimRos, named_robots_get_a_disc_a_heading_and_their_name_with_ids_by_index)
     EXPECT_EQ(headings[i].id, i);
     EXPECT_EQ(names[i].id, i);
     EXPECT_EQ(names[i].type, Marker::TEXT_VIEW_FACING);
-    EXPECT_DOUBLE_EQ(names[i].pose.position.x, robots[i].pose.position.x) << "above its disc";
+    EXPECT_DOUBLE_EQ(names[i].pose.position.x, robots[i].pose.position.x);
+    EXPECT_LT(names[i].pose.position.y + 0.5 * names[i].scale.z,
+              robots[i].pose.position.y - 0.5 * robots[i].scale.y)
+        << "below its disc in the top-down view, clear of the state text on the robot";
     EXPECT_GT(names[i].pose.position.z, robots[i].scale.z);
     EXPECT_DOUBLE_EQ(robots[i].scale.x, 0.34);  // the disc's diameter
     EXPECT_DOUBLE_EQ(headings[i].scale.x, 0.17);
