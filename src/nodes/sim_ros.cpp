@@ -17,7 +17,8 @@ struct Rgb {
 };
 const Rgb kWallColour{0.55, 0.55, 0.55}, kFurnitureColour{0.55, 0.35, 0.2},
     kTrailColour{0.1, 0.8, 0.3}, kRobotColour{0.2, 0.6, 0.9}, kPressedColour{0.9, 0.2, 0.2},
-    kHeadingColour{1.0, 1.0, 1.0}, kNameColour{0.1, 0.1, 0.1};
+    kHeadingColour{1.0, 1.0, 1.0},
+    kNameColour{0.9, 0.1, 0.7};  // names: readable on light and dark floor
 
 Marker makeMarker(const std::string& ns, int id, int type, Rgb colour) {
   Marker m;
