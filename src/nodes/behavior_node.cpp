@@ -1,6 +1,7 @@
 #include "behavior_node.h"
 
 #include "master_watch.h"
+#include "message_parts.h"
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -96,19 +97,13 @@ class BehaviorNode {
     msg.data = state;
     state_pub_.publish(msg);
 
-    visualization_msgs::Marker marker;
-    marker.header.frame_id = base_frame_;
-    marker.header.stamp = ros::Time(0);  // the robot's latest transform...
-    marker.frame_locked = true;          // ...every frame, so the text follows the robot
-    marker.ns = ros::this_node::getName();
-    marker.id = 0;
-    marker.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
-    marker.action = visualization_msgs::Marker::ADD;
+    // Stamp 0: the robot's latest transform, every frame (frame_locked), so the text follows it.
+    visualization_msgs::Marker marker =
+        makeMarker(base_frame_, ros::Time(0), ros::this_node::getName(), 0,
+                   visualization_msgs::Marker::TEXT_VIEW_FACING, color(1.0f, 1.0f, 1.0f));
+    marker.frame_locked = true;
     marker.pose.position.z = 0.45;  // a little above the robot
-    marker.pose.orientation.w = 1.0;
-    marker.scale.z = 0.2;  // text height, m
-    marker.color.r = marker.color.g = marker.color.b = 1.0;
-    marker.color.a = 1.0;
+    marker.scale.z = 0.2;           // text height, m
     marker.text = state;
     marker_pub_.publish(marker);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "message_parts.h"
 #include "roomba_rrt/behavior/nav_bt.h"
 
 namespace roomba_rrt::nav_node {
@@ -48,8 +49,7 @@ geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::str
   msg.header.stamp = stamp;
   msg.pose.position.x = pose.x;
   msg.pose.position.y = pose.y;
-  msg.pose.orientation.z = std::sin(0.5 * pose.theta);
-  msg.pose.orientation.w = std::cos(0.5 * pose.theta);
+  msg.pose.orientation = nodes::yawToQuaternion(pose.theta);
   return msg;
 }
 

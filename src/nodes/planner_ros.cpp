@@ -3,9 +3,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "message_parts.h"
+
 namespace roomba_rrt::planner_node {
 namespace {
 
+using nodes::color;
+using nodes::makeMarker;
 using planning::Point2;
 using visualization_msgs::Marker;
 
@@ -156,29 +160,6 @@ std::string checkPlanningTimeLimit(const PlanPath::Request& r, const NodeDefault
   out << "max_planning_time: " << r.max_planning_time << " s is above the node's limit of " << limit
       << " s (~max_planning_time)";
   return out.str();
-}
-
-std_msgs::ColorRGBA color(float r, float g, float b, float a = 1.0f) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
-
-Marker makeMarker(const std::string& frame_id, const ros::Time& stamp, const std::string& ns,
-                  int id, int type, const std_msgs::ColorRGBA& rgba) {
-  Marker m;
-  m.header.frame_id = frame_id;
-  m.header.stamp = stamp;
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = Marker::ADD;
-  m.pose.orientation.w = 1.0;  // rviz rejects an all-zero quaternion
-  m.color = rgba;
-  return m;
 }
 
 Marker boundsMarker(const planning::Bounds& b, const Marker& base) {

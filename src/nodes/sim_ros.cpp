@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "message_parts.h"
+
 namespace roomba_rrt::sim_node {
 namespace {
 
@@ -12,32 +14,22 @@ constexpr std::size_t kTrailLength = 5000;  // points kept (100 m of path)
 constexpr double kRobotHeight = 0.09, kFurnitureHeight = 0.4, kWallHeight = 0.3;
 constexpr double kWallThickness = 0.05;
 
-struct Rgb {
-  double r, g, b;
-};
-const Rgb kWallColour{0.55, 0.55, 0.55}, kFurnitureColour{0.55, 0.35, 0.2},
-    kTrailColour{0.1, 0.8, 0.3}, kRobotColour{0.2, 0.6, 0.9}, kPressedColour{0.9, 0.2, 0.2},
-    kHeadingColour{1.0, 1.0, 1.0},
-    kNameColour{0.9, 0.1, 0.7};  // names: readable on light and dark floor
+using nodes::color;
+using nodes::yawToQuaternion;
+using Rgba = std_msgs::ColorRGBA;
+const Rgba kWallColour = color(0.55, 0.55, 0.55), kFurnitureColour = color(0.55, 0.35, 0.2),
+           kTrailColour = color(0.1, 0.8, 0.3), kRobotColour = color(0.2, 0.6, 0.9),
+           kPressedColour = color(0.9, 0.2, 0.2), kHeadingColour = color(1.0, 1.0, 1.0),
+           kNameColour = color(0.9, 0.1, 0.7);  // names: readable on light and dark floor
 
-Marker makeMarker(const std::string& ns, int id, int type, Rgb colour) {
-  Marker m;
-  m.header.frame_id = "map";
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.color.r = colour.r;
-  m.color.g = colour.g;
-  m.color.b = colour.b;
-  m.color.a = 1.0;
-  return m;
+/// A marker in the map frame; toMarkers() stamps the whole array.
+Marker makeMarker(const std::string& ns, int id, int type, const Rgba& colour) {
+  return nodes::makeMarker("map", ros::Time(), ns, id, type, colour);
 }
 
 /// A box marker over [x0, x1] × [y0, y1], `height` tall, standing on the floor.
 Marker makeBox(const std::string& ns, int id, double x0, double y0, double x1, double y1,
-               double height, Rgb colour) {
+               double height, const Rgba& colour) {
   auto m = makeMarker(ns, id, Marker::CUBE, colour);
   m.pose.position.x = 0.5 * (x0 + x1);
   m.pose.position.y = 0.5 * (y0 + y1);
@@ -93,13 +85,6 @@ void addRobotMarkers(const sim::MultiRobotSimulator& sim, std::size_t i, const M
 RobotFrames robotFrames(const std::string& name) {
   const std::string prefix = name.empty() ? "" : name + "/";
   return {prefix, prefix + "odom", prefix + "base_link"};
-}
-
-geometry_msgs::Quaternion yawToQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * yaw);
-  q.w = std::cos(0.5 * yaw);
-  return q;
 }
 
 nav_msgs::Odometry toOdometry(const sim::Pose2D& pose, const sim::Velocity& applied,

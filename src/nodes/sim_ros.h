@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
@@ -34,9 +33,6 @@ struct RobotFrames {
 
 /// The frames of the robot called `name` ("" for the unnamed robot of today's world files).
 RobotFrames robotFrames(const std::string& name);
-
-/// A rotation by `yaw` about z.
-geometry_msgs::Quaternion yawToQuaternion(double yaw);
 
 /// The robot's pose in its odom frame (which is the room's: odometry is perfect, so every
 /// covariance is zero) and the command it applied, as velocities in base_link.
