@@ -228,11 +228,7 @@ void drawRunPicture(const std::string& file, const sim::Simulator& simulator, co
   drawFurnitureAndWalls(cr, world, c);
   drawPath(cr, run.path, c);
 
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 15);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_move_to(cr, c.margin, 26);
-  cairo_show_text(cr, title.c_str());
+  drawTitle(cr, title, c.margin, 26, 15);
   drawRunLegend(cr, c.px(world.width) + 25, c.py(world.height) + 10);
   image.write(file);
 }
@@ -249,10 +245,7 @@ void drawCoveragePlot(const std::string& file, const std::vector<FleetStatistics
     drawCurve(cr, frame, bandOf(fleets[f].curves), colourOfCount(f));
     legend_y = drawCountLegend(cr, frame, fleets[f], legend_y);
   }
-  cairo_set_font_size(cr, 15);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_move_to(cr, frame.left, 30);
-  cairo_show_text(cr, title.c_str());
+  drawTitle(cr, title, frame.left, 30, 15);
   image.write(file);
 }
 

@@ -35,6 +35,14 @@ void drawText(cairo_t* cr, const std::string& text, double x, double y, double a
   cairo_show_text(cr, text.c_str());
 }
 
+void drawTitle(cairo_t* cr, const std::string& title, double x, double baseline, double size) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_move_to(cr, x, baseline);
+  cairo_show_text(cr, title.c_str());
+}
+
 void drawFloor(cairo_t* cr, const sim::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
   cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);

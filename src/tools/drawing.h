@@ -42,6 +42,9 @@ class PngImage {
 void drawText(cairo_t* cr, const std::string& text, double x, double y, double align_x,
               double align_y);
 
+/// A picture's title: black sans-serif of `size` points, its baseline starting at (x, baseline).
+void drawTitle(cairo_t* cr, const std::string& title, double x, double baseline, double size);
+
 /// Maps room metres to image pixels: x to the right, y up, the room's top-left corner at
 /// (margin, header + margin).
 struct RoomCanvas {

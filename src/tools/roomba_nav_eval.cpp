@@ -67,11 +67,7 @@ void drawPng(const std::string& file, const roomba_rrt::sim::World& world,
     cairo_arc(cr, gx, gy, 2.5, 0, 2 * M_PI);
     cairo_fill(cr);
   }
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 13);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_move_to(cr, c.margin, 24);
-  cairo_show_text(cr, title.c_str());
+  roomba_rrt::tools::drawTitle(cr, title, c.margin, 24, 13);
   image.write(file);
 }
 
