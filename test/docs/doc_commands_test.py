@@ -47,6 +47,12 @@ class Doc:
         self.bin = os.path.join(devel, "lib", "roomba_rrt")
         self.failures = []
         self.help_cache = {}
+        # What the checks compare against, read once.
+        self.node_sources = "".join(
+            open(f, encoding="utf-8").read()
+            for f in glob.glob(os.path.join(root, "src", "nodes", "*.*")))
+        srv = open(os.path.join(root, "srv", "PlanPath.srv"), encoding="utf-8").read()
+        self.plan_fields = set(re.findall(r"^\S+\s+(\w+)", srv.split("---")[0], re.M))
 
     def fail(self, where, message):
         self.failures.append(f"{where}: {message}")
@@ -109,12 +115,6 @@ class Doc:
                 self.help_cache[exe] = (e.stdout or b"").decode() + (e.stderr or b"").decode()
         return self.help_cache[exe]
 
-    def node_sources(self):
-        text = ""
-        for f in glob.glob(os.path.join(self.root, "src", "nodes", "*.*")):
-            text += open(f, encoding="utf-8").read()
-        return text
-
     def check_program(self, where, name, args):
         exe = os.path.join(self.bin, name)
         if not os.access(exe, os.X_OK):
@@ -129,18 +129,15 @@ class Doc:
             for flag in flags:
                 if flag not in text:
                     self.fail(where, f"{name} {flag}: not in `{name} --help`")
-        sources = None
         for a in args:
             m = re.match(r"^_([A-Za-z0-9][A-Za-z0-9_/]*):=", a)  # not __ns, __name
             if m:
-                sources = sources or self.node_sources()
                 first = m.group(1).split("/")[0]
-                if f'"{m.group(1)}"' not in sources and f'"{first}"' not in sources:
+                if f'"{m.group(1)}"' not in self.node_sources and \
+                        f'"{first}"' not in self.node_sources:
                     self.fail(where, f"{name} _{m.group(1)}: no node reads that parameter")
 
     def check_plan_request(self, where, request):
-        srv = open(os.path.join(self.root, "srv", "PlanPath.srv"), encoding="utf-8").read()
-        fields = set(re.findall(r"^\S+\s+(\w+)", srv.split("---")[0], re.M))
         try:
             data = yaml.safe_load(request)
         except yaml.YAMLError as e:
@@ -150,7 +147,7 @@ class Doc:
             self.fail(where, "plan_path request is not a mapping")
             return
         for key in data:
-            if key not in fields:
+            if key not in self.plan_fields:
                 self.fail(where, f"plan_path request: no field '{key}' in PlanPath.srv")
 
     def check_command(self, where, command):
@@ -277,8 +274,7 @@ class Doc:
         for k, c in enumerate(commands):
             script.append(f"echo '@@ {k}' >&2")
             script.append(c.rstrip())
-            if shlex.split(c, comments=True)[-1:] == ["&"] or \
-                    re.sub(r"\s+#[^'\"]*$", "", c).rstrip().endswith("&"):
+            if shlex.split(c, comments=True)[-1:] == ["&"]:  # a trailing comment is dropped
                 script.append("__bg+=($!); sleep 3")
         self.logs = None
         procs = self.start(setup)
