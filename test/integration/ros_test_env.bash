@@ -1,6 +1,7 @@
 # Sourced by the integration test scripts: the built package on the ROS paths (RR_DEVEL, default
 # ./devel), a scratch directory $work (logs, ROS_HOME; removed at exit by cleanup_env), a free
-# master port in ROS_MASTER_URI, and start_master (a roscore on that port, pid in $master).
+# master port in ROS_MASTER_URI, start_master (a roscore on that port, pid in $master) and
+# started (pids that cleanup_env stops).
 here=$(cd "$(dirname "${BASH_SOURCE[1]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 export PATH=/usr/bin:/bin:$PATH
@@ -26,7 +27,11 @@ stop_master() {
   if [ "$master" -gt 0 ]; then kill -INT "$master" 2>/dev/null && wait "$master" 2>/dev/null; fi
   master=0
 }
+# Background processes a test started (append their pids): cleanup_env interrupts them first.
+started=()
 cleanup_env() {
+  local pid
+  for pid in "${started[@]}"; do kill -INT "$pid" 2>/dev/null && wait "$pid" 2>/dev/null; done
   stop_master
   rm -rf "$work"
 }
