@@ -10,6 +10,7 @@ add_library(roomba_behavior_core
   src/bt/status.cpp
   src/bt/control_node.cpp
   src/bt/sequence_node.cpp
+  src/bt/sequence_with_memory.cpp
   src/bt/selector_node.cpp
   src/bt/reactive_sequence.cpp
   src/bt/reactive_selector.cpp
@@ -54,6 +55,7 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/control_nodes_test.cpp
     test/behavior/decorators_test.cpp
     test/behavior/tree_factory_test.cpp
+    test/behavior/tree_file_format_test.cpp
     test/behavior/blackboard_ports_test.cpp
     test/behavior/nav_control_nodes_test.cpp
     test/behavior/roomba_params_test.cpp
@@ -62,7 +64,7 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/fsm_bt_equivalence_test.cpp
   )
   if(TARGET behavior_core_test)
-    target_link_libraries(behavior_core_test roomba_behavior_core gtest_main)
+    target_link_libraries(behavior_core_test roomba_behavior_core PkgConfig::TINYXML2 gtest_main)
     target_compile_definitions(behavior_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   endif()

@@ -1,7 +1,9 @@
 #include "roomba_rrt/behavior/nav_bt.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "roomba_rrt/behavior/roomba_tree.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -29,7 +31,34 @@ bt::Tree buildTree(const NavLeafConfig& config, NavContext& context, const std::
                    : factory.buildFromText(text, source, std::move(board));
 }
 
+/// Factories that only describe leaves (their builders are never called): one with the lab's
+/// leaves, one with the lab's and the navigation leaves.
+struct LeafCatalogue {
+  LeafCatalogue() : context(0) {
+    config.planners = [] { return std::unique_ptr<PathPlanner>(); };  // never called
+    registerRoombaLeaves(lab, config.params, context);
+    registerRoombaLeaves(all, config.params, context);
+    registerNavLeaves(all, config, context);
+  }
+  NavLeafConfig config;
+  NavContext context;
+  bt::TreeFactory lab, all;
+};
+
 }  // namespace
+
+std::string treeNodesModel() { return LeafCatalogue().all.treeNodesModel(); }
+
+bool usesNavigationLeaves(const std::string& tree_file) {
+  const LeafCatalogue catalogue;
+  const std::vector<std::string> lab = catalogue.lab.registeredTypes();
+  for (const std::string& type : catalogue.all.typesUsedIn(tree_file)) {
+    if (!std::binary_search(lab.begin(), lab.end(), type)) {
+      return true;  // a type only the navigation leaves register
+    }
+  }
+  return false;
+}
 
 planning::PlannerOptions defaultNavPlannerOptions() {
   planning::PlannerOptions options;

@@ -211,11 +211,11 @@ class FollowPath final : public NavLeaf {
   std::uint64_t path_writes_ = 0;
 };
 
-class GoalUpdated final : public bt::LeafNode {
+class GoalUpdated final : public bt::ConditionNode {
  public:
   static PortList providedPorts() { return {inputPort<sim::Pose2D>("goal", "the goal")}; }
   explicit GoalUpdated(const NodeSpec& spec)
-      : LeafNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")), clock_(*spec.blackboard) {}
+      : ConditionNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")), clock_(*spec.blackboard) {}
 
  private:
   Status onTick() override {
@@ -233,36 +233,36 @@ class GoalUpdated final : public bt::LeafNode {
   std::uint64_t last_tick_ = 0;
 };
 
-class HasGoal final : public bt::LeafNode {
+class HasGoal final : public bt::ConditionNode {
  public:
   static PortList providedPorts() { return {inputPort<sim::Pose2D>("goal", "the goal")}; }
   explicit HasGoal(const NodeSpec& spec)
-      : LeafNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")) {}
+      : ConditionNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")) {}
 
  private:
   Status onTick() override { return goal_.get() ? Status::kSuccess : Status::kFailure; }
   InputPort<sim::Pose2D> goal_;
 };
 
-class IsBumped final : public bt::LeafNode {
+class IsBumped final : public bt::ConditionNode {
  public:
   static PortList providedPorts() { return {}; }
   IsBumped(const NodeSpec& spec, const NavContext& context)
-      : LeafNode(spec.name), context_(context) {}
+      : ConditionNode(spec.name), context_(context) {}
 
  private:
   Status onTick() override { return context_.bumper.pressed ? Status::kSuccess : Status::kFailure; }
   const NavContext& context_;
 };
 
-class IsPathValid final : public bt::LeafNode {
+class IsPathValid final : public bt::ConditionNode {
  public:
   static PortList providedPorts() {
     return {inputPort<Path>("path", "the path to check"),
             outputPort<std::string>("error", "why the path is not valid", "{error}")};
   }
   IsPathValid(const NodeSpec& spec, std::shared_ptr<const PathPlanner> checker)
-      : LeafNode(spec.name),
+      : ConditionNode(spec.name),
         path_(spec.input<Path>("path")),
         error_(spec.output<std::string>("error")),
         checker_(std::move(checker)) {}

@@ -6,9 +6,9 @@
 
 namespace roomba_rrt::behavior {
 
-const char* const kLabTreeXml = R"(<root main_tree_to_execute="Roomba">
+const char* const kLabTreeXml = R"(<root BTCPP_format="4" main_tree_to_execute="Roomba">
   <BehaviorTree ID="Roomba">
-    <Selector name="root">
+    <Fallback name="root">
       <Sequence name="clean">
         <MoveForward/>
         <MoveInSpiral/>
@@ -17,7 +17,7 @@ const char* const kLabTreeXml = R"(<root main_tree_to_execute="Roomba">
         <GoBack/>
         <Rotate/>
       </Sequence>
-    </Selector>
+    </Fallback>
   </BehaviorTree>
 </root>
 )";

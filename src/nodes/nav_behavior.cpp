@@ -10,9 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <regex>
 #include <stdexcept>
 
 #include "behavior_node.h"
@@ -265,15 +262,6 @@ double finiteParam(ros::NodeHandle& pnh, const std::string& name, double fallbac
 }
 
 }  // namespace
-
-bool isNavigationTree(const std::string& tree_file) {
-  std::ifstream in(tree_file);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  static const std::regex kNavLeaf(
-      "<(ComputePath|FollowPath|BackUp|Spin|GoalUpdated|HasGoal|IsBumped|IsPathValid|"
-      "GoalSucceeded|GoalAborted)[\\s/>]");
-  return std::regex_search(text, kNavLeaf);
-}
 
 std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
                                                           const behavior::RoombaParams& params,

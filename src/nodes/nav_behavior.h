@@ -14,9 +14,6 @@
 
 namespace roomba_rrt::nav_node {
 
-/// Whether the tree file uses navigation leaves (then roomba_bt runs it as navigation).
-bool isNavigationTree(const std::string& tree_file);
-
 /// The navigation behaviour of roomba_bt, set up from the private parameters (see doc/nodes.md,
 /// "roomba_bt with a navigation tree"): ~world_file, ~planner ("service" or "in_process"),
 /// ~plan_path_service, ~clearance, ~global_frame, ~robot_frame (default base_link, or

@@ -1,11 +1,32 @@
 // roomba_bt: a behavior tree read from ~tree_file (default config/roomba_tree.xml, the lab's
 // Roomba). A tree with navigation leaves (config/roomba_nav_tree.xml) runs as navigation behind
 // move_base's interface (nav_behavior.h); see behavior_node.h for the rest.
+//
+// `roomba_bt --tree-nodes-model` prints the BehaviorTree.CPP v4 <TreeNodesModel> of every node
+// our trees can use (for Groot2) and exits, without a master.
+#include <cstring>
+#include <iostream>
+
 #include "behavior_node.h"
 #include "nav_behavior.h"
+#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--tree-nodes-model") == 0) {
+      std::cout << roomba_rrt::behavior::treeNodesModel();
+      return 0;
+    }
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+      std::cout << "Usage: rosrun roomba_rrt roomba_bt [_tree_file:=FILE] [_param:=value ...]\n"
+                   "       rosrun roomba_rrt roomba_bt --tree-nodes-model > nodes.xml\n"
+                   "  --tree-nodes-model  print the BehaviorTree.CPP v4 <TreeNodesModel> of our\n"
+                   "                      leaves and control nodes (Groot2 loads it) and exit\n"
+                   "Parameters: doc/nodes.md (roomba_bt).\n";
+      return 0;
+    }
+  }
   using roomba_rrt::behavior::RoombaBt;
   return roomba_rrt::nodes::runBehaviorNode(
       argc, argv, "roomba_bt",
@@ -14,7 +35,7 @@ int main(int argc, char** argv) {
         const std::string tree_file = private_nh.param<std::string>(
             "tree_file", roomba_rrt::nodes::packageConfigFile("roomba_tree.xml"));
         ROS_INFO("roomba_bt: tree from %s", tree_file.c_str());
-        if (roomba_rrt::nav_node::isNavigationTree(tree_file)) {
+        if (roomba_rrt::behavior::usesNavigationLeaves(tree_file)) {
           return roomba_rrt::nav_node::makeNavBehavior(private_nh, params, seed, tree_file);
         }
         return std::make_unique<RoombaBt>(params, seed, tree_file);

@@ -53,6 +53,23 @@ double distanceTo(const sim::Pose2D& a, const sim::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
 
+TEST(NavBt, a_tree_is_navigation_when_it_or_its_include_uses_a_navigation_leaf) {
+  EXPECT_TRUE(usesNavigationLeaves(kNavTree));
+  EXPECT_TRUE(usesNavigationLeaves(kCleanNavTree));  // through <include> and SubTree
+  EXPECT_FALSE(usesNavigationLeaves(ROOMBA_RRT_CONFIG_DIR "/roomba_tree.xml"));
+  EXPECT_THROW(usesNavigationLeaves("/nonexistent/tree.xml"), bt::TreeFileError);
+}
+
+TEST(NavBt, the_tree_nodes_model_describes_every_leaf_roomba_bt_knows) {
+  const std::string model = treeNodesModel();
+  for (const char* node :
+       {"<Action ID=\"MoveForward\"", "<Action ID=\"ComputePath\"", "<Condition ID=\"HasGoal\"",
+        "<Condition ID=\"IsBumped\"", "<Control ID=\"RecoveryNode\"",
+        "<Decorator ID=\"RateController\"", "<output_port name=\"path\" type=\"Path\""}) {
+    EXPECT_NE(model.find(node), std::string::npos) << node;
+  }
+}
+
 TEST(NavBt, without_a_goal_the_robot_stands_still) {
   Loop loop(kNavTree);
   for (int i = 0; i < 120; ++i) {

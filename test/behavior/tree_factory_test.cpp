@@ -87,9 +87,13 @@ TEST_F(TreeFactoryTest, bad_attributes_are_rejected) {
             "test.xml:3: <Repeat>: unknown attribute 'cycles'");
   EXPECT_EQ(errorOf("<Repeat num_cycles=\"three\"><Ok/></Repeat>"),
             "test.xml:3: <Repeat>: attribute 'num_cycles' must be an integer, got 'three'");
-  EXPECT_EQ(errorOf("<Timeout ticks=\"0\"><Ok/></Timeout>")
-                .rfind("test.xml:3: <Timeout>: attribute 'ticks' must be in [1, ", 0),
+  EXPECT_EQ(errorOf("<Timeout ticks=\"-1\"><Ok/></Timeout>")
+                .rfind("test.xml:3: <Timeout>: attribute 'ticks' must be in [0, ", 0),
             0u);
+  EXPECT_EQ(errorOf("<Timeout><Ok/></Timeout>"),
+            "test.xml:3: <Timeout>: give either msec (BehaviorTree.CPP v4) or ticks, not neither");
+  EXPECT_EQ(errorOf("<Timeout msec=\"100\" ticks=\"2\"><Ok/></Timeout>"),
+            "test.xml:3: <Timeout>: give either msec (BehaviorTree.CPP v4) or ticks, not both");
 }
 
 TEST_F(TreeFactoryTest, a_value_the_node_itself_refuses_names_the_element_and_the_field) {

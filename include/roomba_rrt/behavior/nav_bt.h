@@ -68,4 +68,13 @@ NavLeafConfig inProcessNavConfig(
     const NavWorld& world, const planning::PlannerOptions& options = defaultNavPlannerOptions(),
     InProcessPlanner::Mode mode = InProcessPlanner::Mode::kThread);
 
+/// The <TreeNodesModel> (BehaviorTree.CPP v4, for Groot2) of every node a roomba_bt tree can
+/// use: the lab's leaves, the navigation leaves and our control nodes, with their ports.
+std::string treeNodesModel();
+
+/// Whether the tree file (or a file it includes) uses a navigation leaf: the factory that knows
+/// the lab's and the navigation leaves is asked which of its types the file uses
+/// (bt::TreeFileError when the file cannot be read or parsed).
+bool usesNavigationLeaves(const std::string& tree_file);
+
 }  // namespace roomba_rrt::behavior

@@ -9,7 +9,7 @@ namespace roomba_rrt::behavior {
 
 /// The lab's tree (config/roomba_tree.xml holds the same text):
 ///
-///     Selector
+///     Fallback
 ///     ├── Sequence "clean":   MoveForward, MoveInSpiral
 ///     └── Sequence "recover": GoBack, Rotate
 extern const char* const kLabTreeXml;

@@ -1,4 +1,4 @@
-// Timeout: give its child a fixed number of ticks to finish.
+// Timeout: give its child a fixed number of ticks (or milliseconds at the tick rate) to finish.
 #pragma once
 
 #include <limits>
@@ -18,13 +18,21 @@ namespace roomba_rrt::bt {
 ///   then the child is halted and Timeout returns FAILURE.
 class TimeoutNode final : public DecoratorNode {
  public:
-  /// `ticks` (long, required): ticks the child may run, >= 1.
+  /// Exactly one of `msec` (BehaviorTree.CPP v4's port: milliseconds, turned into ticks at the
+  /// tree's tick rate) and `ticks` (ticks the child may run); the other stays 0.
   static PortList providedPorts() {
-    return {inputPort<long>("ticks", "ticks the child may run")
-                .range(1, static_cast<double>(std::numeric_limits<long>::max()))};
+    constexpr double kMax = static_cast<double>(std::numeric_limits<long>::max());
+    return {
+        inputPort<long>("msec", "milliseconds the child may run (at the tick rate)", "0")
+            .range(0, kMax),
+        inputPort<long>("ticks", "ticks the child may run (instead of msec)", "0").range(0, kMax)};
   }
   /// `ticks` ≥ 1 (util::InvalidInput naming it otherwise).
   TimeoutNode(std::string name, long ticks);
+
+  /// The ticks in `msec` milliseconds at `tick_rate` Hz, rounded to the nearest tick, at least
+  /// one (and at most the largest long).
+  static long ticksFor(long msec, double tick_rate);
 
  private:
   void onEnter() override { elapsed_ = 0; }

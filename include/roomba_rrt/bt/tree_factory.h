@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -81,39 +82,54 @@ struct NodeSpec {
   Blackboard& board() const;
 };
 
-/// Which children an element takes.
+/// Which children an element takes, and how BehaviorTree.CPP's tools draw it.
 enum class NodeKind {
-  kLeaf,       ///< no children
+  kLeaf,       ///< an action: no children
+  kCondition,  ///< a condition (a ConditionNode): no children
   kDecorator,  ///< exactly one child
   kControl,    ///< one or more children
 };
 
-/// Maps element names to node builders and builds trees from XML in the style of
-/// BehaviorTree.CPP:
+/// Maps element names to node builders and builds trees from XML in BehaviorTree.CPP v4's format
+/// (doc/behaviours.md, "Tree files"):
 ///
-///     <root main_tree_to_execute="Roomba">
+///     <root BTCPP_format="4" main_tree_to_execute="Roomba">
+///       <include path="other_trees.xml"/>
 ///       <BehaviorTree ID="Roomba">
-///         <Selector>
+///         <Fallback>
 ///           <Sequence name="clean"> <MoveForward/> <MoveInSpiral/> </Sequence>
-///           <Sequence name="recover"> <GoBack/> <Rotate/> </Sequence>
-///         </Selector>
+///           <SubTree ID="Recover" _autoremap="true"/>
+///         </Fallback>
 ///       </BehaviorTree>
+///       <BehaviorTree ID="Recover"> <Sequence> <GoBack/> <Rotate/> </Sequence> </BehaviorTree>
 ///     </root>
 ///
-/// Built in: the control nodes Sequence, Selector (alias Fallback), ReactiveSequence,
-/// ReactiveSelector (alias ReactiveFallback), PipelineSequence, RecoveryNode
-/// (`number_of_retries`, two children) and the decorators Inverter, Repeat (`num_cycles`), Retry
-/// (`num_attempts`), Timeout (`ticks`) and RateController (`hz`). Leaves are registered by the
-/// application.
+/// Built in, with BehaviorTree.CPP v4's names and ports: the control nodes Sequence,
+/// SequenceWithMemory, Fallback, ReactiveSequence, ReactiveFallback, and Nav2's
+/// PipelineSequence and RecoveryNode (`number_of_retries`, two children); the decorators
+/// Inverter, Repeat (`num_cycles`), RetryUntilSuccessful (`num_attempts`), Timeout (`msec`, or
+/// our deterministic `ticks`) and Nav2's RateController (`hz`); SubTree (`ID`, port remapping
+/// `port="{parent_key}"` or `port="literal"`, `_autoremap`); `<include path="...">` (relative to
+/// the including file) under <root>; a <TreeNodesModel> under <root> (Groot2 writes one) is
+/// ignored. Leaves are registered by the application. The spellings of BehaviorTree.CPP v3 and of
+/// our earlier files (Selector, ReactiveSelector, Retry, RetryUntilSuccesful, SequenceStar) are
+/// read as their v4 names, with a notice naming the v4 spelling (setNoticeHandler()).
 ///
 /// Rejected with a TreeFileError naming the element and its line: malformed XML, an unknown
 /// element, a leaf with children, a composite without children, a decorator without exactly one
 /// child, an unknown or invalid attribute, a missing or ambiguous <BehaviorTree>, two
-/// <BehaviorTree> elements with the same ID, nesting deeper than kMaxDepth, more than kMaxNodes
-/// nodes; and for ports: a missing required port, a literal of the wrong type or out of its
-/// range (e.g. num_cycles="4294967295"), a literal where an output needs a key, a key used
-/// with two types (by two ports, or by a port and the application), and a key that an input
-/// reads but that no output port of the tree writes and the application did not declare.
+/// <BehaviorTree> elements with the same ID (also across included files), a SubTree naming no
+/// tree or itself, an include that cannot be read or includes itself, a BTCPP_format other than
+/// 3 or 4, nesting deeper than kMaxDepth, more than kMaxNodes nodes; and for ports: a missing
+/// required port, a literal of the wrong type or out of its range (e.g.
+/// num_cycles="4294967295"), a literal where an output needs a key, a key used with two types
+/// (by two ports, or by a port and the application), and a key that an input reads but that no
+/// output port of the tree writes and the application did not declare.
+///
+/// A SubTree's keys are its own, as in BehaviorTree.CPP: `{key}` inside it is the parent's
+/// `{key}` only when the SubTree element remaps it (`key="{parent_key}"`, or a literal value) or
+/// says `_autoremap="true"`; otherwise it is private to that SubTree instance (on the shared
+/// blackboard as "ID#n/key").
 class TreeFactory {
  public:
   using Builder = std::function<std::unique_ptr<TreeNode>(const NodeSpec&)>;
@@ -134,16 +150,22 @@ class TreeFactory {
   void registerNodeWithPorts(const std::string& type, NodeKind kind, Builder builder,
                              PortList ports);
   /// Registers node class `Node` as element `type`: its kind from its base class (ControlNode,
-  /// DecoratorNode, else a leaf), its ports from `Node::providedPorts()`.
+  /// DecoratorNode, ConditionNode, else an action leaf), its ports from `Node::providedPorts()`.
   template <class Node>
   void registerNodeType(const std::string& type, Builder builder) {
     constexpr NodeKind kind = std::is_base_of_v<ControlNode, Node>     ? NodeKind::kControl
                               : std::is_base_of_v<DecoratorNode, Node> ? NodeKind::kDecorator
+                              : std::is_base_of_v<ConditionNode, Node> ? NodeKind::kCondition
                                                                        : NodeKind::kLeaf;
     registerNodeWithPorts(type, kind, std::move(builder), Node::providedPorts());
   }
   /// Shorthand for a leaf without attributes.
   void registerLeaf(const std::string& type, Builder builder);
+
+  /// Where notices about a tree file go (a v3 spelling, a missing BTCPP_format): one line each,
+  /// "FILE:LINE: ...". By default they are written to std::cerr; an empty handler drops them.
+  using NoticeHandler = std::function<void(const std::string&)>;
+  void setNoticeHandler(NoticeHandler handler) { notice_ = std::move(handler); }
 
   /// Tick rate of the trees built (Hz, default 60): RateController turns its `hz` into ticks
   /// with it. Must be finite and > 0 (util::InvalidInput).
@@ -161,6 +183,17 @@ class TreeFactory {
 
   /// The ports of element `type` (std::invalid_argument when it is unknown).
   const PortList& ports(const std::string& type) const;
+  /// Every registered element name, sorted (built-ins and the application's).
+  std::vector<std::string> registeredTypes() const;
+  /// The registered types that the tree file at `path` (and what it includes) uses anywhere, under
+  /// their v4 names; elements that are no registered type are left out. TreeFileError when the
+  /// file or an include cannot be read or parsed.
+  std::set<std::string> typesUsedIn(const std::string& path) const;
+
+  /// The <TreeNodesModel> of every registered type that BehaviorTree.CPP does not build in, with
+  /// its ports (name, type, default, description), as a BTCPP_format="4" document: Groot2 opens
+  /// our trees with it and edits their ports.
+  std::string treeNodesModel() const;
 
  private:
   struct Entry {
@@ -168,13 +201,34 @@ class TreeFactory {
     Builder builder;
     PortList ports;
   };
+  struct Library;
+  struct Scope;
   struct BuildState;
+
+  /// Parses `xml` (from `source`) into `library`: its <BehaviorTree> definitions and, recursively,
+  /// those of the files it includes. Returns the document's <root>.
+  const tinyxml2::XMLElement& load(const std::string& xml, const std::string& source,
+                                   Library& library) const;
+  /// The registered entry for element `element` (a v3 spelling: its v4 entry, with a notice).
+  const Entry& entryFor(const tinyxml2::XMLElement& element, const BuildState& state) const;
   /// Builds `element` at `depth` and, recursively, its children.
   std::unique_ptr<TreeNode> buildNode(const tinyxml2::XMLElement& element, int depth,
                                       BuildState& state) const;
+  /// Builds a <SubTree> element: the tree it names, in a scope of its own.
+  std::unique_ptr<TreeNode> buildSubTree(const tinyxml2::XMLElement& element, int depth,
+                                         BuildState& state) const;
+  /// The NodeSpec of `element`: its name and attributes, keys resolved through the scope.
+  NodeSpec readAttributes(const tinyxml2::XMLElement& element, const Entry& entry,
+                          BuildState& state) const;
+  /// Checks every port of `spec` (required, literal type and range, key types) and declares
+  /// the keys; fills in defaults.
+  void bindPorts(const tinyxml2::XMLElement& element, const Entry& entry, NodeSpec& spec,
+                 BuildState& state) const;
+  void notice(const std::string& text) const;
 
   std::map<std::string, Entry> entries_;
   double tick_rate_ = 60.0;
+  NoticeHandler notice_;
 };
 
 }  // namespace roomba_rrt::bt

@@ -65,4 +65,12 @@ class LeafNode : public TreeNode {
   using TreeNode::TreeNode;
 };
 
+/// A leaf that only looks (HasGoal, IsBumped): it answers SUCCESS or FAILURE and commands
+/// nothing. It ticks like any leaf; the tree factory registers it as a Condition, which is how
+/// BehaviorTree.CPP's tools (Groot2) draw it.
+class ConditionNode : public LeafNode {
+ public:
+  using LeafNode::LeafNode;
+};
+
 }  // namespace roomba_rrt::bt
