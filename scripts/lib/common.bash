@@ -32,6 +32,8 @@ RR_PACKAGES=(
   # tf2 (C++ and Python) and its tools (tf2_echo, view_frames), actionlib (C++ and Python)
   libtf2-dev libtf2-ros-dev python3-tf2-ros tf2-tools
   libactionlib-dev python3-actionlib python3-actionlib-tools
+  # dynamic_reconfigure: cfg generator, C++ server and its messages; Python client and dynparam
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # libraries of the ROS-free cores and the tools
   libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
   # tests, benchmarks, fuzzing (clang's libFuzzer and sanitizer runtimes), pictures

@@ -93,11 +93,26 @@ NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string&
 NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string& text,
              const std::string& source, bool from_file)
     : context_(seed),
+      params_(config.params),
       board_(makeBoard()),
       goal_(&board_->declare<sim::Pose2D>("goal")),
       pose_(&board_->declare<sim::Pose2D>("pose")),
       tree_(buildTree(config, context_, text, source, from_file, board_)) {
   context_.state_name = &kIdle;
+  context_.params = &params_;
+  context_.follower = config.follower;
+}
+
+void NavBt::setFollowerParams(const FollowerParams& params) {
+  FollowerParams next = params;
+  next.rate = context_.follower.rate;
+  validate(next);
+  context_.follower = next;
+  ++context_.follower_version;
+}
+
+void NavBt::setRoombaParams(const RoombaParams& params) {
+  retuneMotions(params_, params, context_);
 }
 
 void NavBt::setGoal(const sim::Pose2D& goal) {

@@ -178,6 +178,10 @@ class FollowPath final : public NavLeaf {
       error_.set("bumped");
       return Status::kFailure;
     }
+    if (context_.follower_version != follower_version_) {  // tuned while running
+      follower_.setParams(context_.follower);
+      follower_version_ = context_.follower_version;
+    }
     if (path_.writes() != path_writes_) {  // a new plan: follow it from here
       path_writes_ = path_.writes();
       follower_.start(*path, *goal, context_.previous_cmd);
@@ -209,13 +213,16 @@ class FollowPath final : public NavLeaf {
   OutputPort<std::string> error_;
   PathFollower follower_;
   std::uint64_t path_writes_ = 0;
+  std::uint64_t follower_version_ = 0;  ///< the context's follower_version in force
 };
 
 class GoalUpdated final : public bt::ConditionNode {
  public:
   static PortList providedPorts() { return {inputPort<sim::Pose2D>("goal", "the goal")}; }
   explicit GoalUpdated(const NodeSpec& spec)
-      : ConditionNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")), clock_(*spec.blackboard) {}
+      : ConditionNode(spec.name),
+        goal_(spec.input<sim::Pose2D>("goal")),
+        clock_(*spec.blackboard) {}
 
  private:
   Status onTick() override {

@@ -39,6 +39,16 @@ void validate(const FollowerParams& p) {
   requirePositive("rotate_threshold", p.rotate_threshold);
   requirePositive("heading_gain", p.heading_gain);
   requirePositive("rate", p.rate);
+  const auto requireAtMost = [](const char* field, double value, double max) {
+    if (value > max) {
+      throw util::InvalidInput(field,
+                               "must be at most " + util::show(max) + ", got " + util::show(value));
+    }
+  };
+  requireAtMost("max_linear_speed", p.max_linear_speed, FollowerLimits::kMaxSpeed);
+  requireAtMost("max_angular_speed", p.max_angular_speed, FollowerLimits::kMaxSpeed);
+  requireAtMost("xy_tolerance", p.xy_tolerance, FollowerLimits::kMaxXyTolerance);
+  requireAtMost("yaw_tolerance", p.yaw_tolerance, FollowerLimits::kMaxYawTolerance);
   if (p.max_deviation <= p.xy_tolerance) {
     throw util::InvalidInput("max_deviation", "must be > xy_tolerance (" +
                                                   util::show(p.xy_tolerance) + "), got " +
@@ -61,6 +71,11 @@ const char* toString(FollowStatus status) {
 }
 
 PathFollower::PathFollower(const FollowerParams& params) : params_(params) { validate(params_); }
+
+void PathFollower::setParams(const FollowerParams& params) {
+  validate(params);
+  params_ = params;
+}
 
 void PathFollower::start(const Path& path, const sim::Pose2D& goal, const sim::Velocity& current) {
   path_ = &path;

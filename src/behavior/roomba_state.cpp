@@ -16,4 +16,12 @@ const char* toString(RoombaState state) {
   return "Invalid";
 }
 
+void retuneMotions(RoombaParams& in_force, const RoombaParams& requested, RoombaContext& context) {
+  RoombaParams next = requested;
+  next.rate = in_force.rate;
+  validate(next);
+  in_force = next;
+  ++context.params_version;
+}
+
 }  // namespace roomba_rrt::behavior

@@ -2,10 +2,12 @@
 
 #include "master_watch.h"
 #include "message_parts.h"
+#include "reconfigure.h"
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
+#include <roomba_rrt/RoombaBehaviorConfig.h>
 #include <ros/package.h>
 #include <std_msgs/String.h>
 #include <visualization_msgs/Marker.h>
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <utility>
 
 namespace roomba_rrt::nodes {
 namespace {
@@ -34,9 +37,34 @@ class BehaviorNode {
     bumper_sub_ = nh.subscribe("bumper", 1, &BehaviorNode::onBumper, this);
     odom_sub_ = nh.subscribe("odom", 1, &BehaviorNode::onOdom, this);
     timer_ = nh.createTimer(period_, &BehaviorNode::onTimer, this);
+    startReconfigure(pnh);
   }
 
  private:
+  /// dynamic_reconfigure (cfg/RoombaBehavior.cfg): the lab's constants, used by every motion
+  /// that starts after the change (RoombaBehavior::setParams); refused (and kept) when invalid.
+  void startReconfigure(const ros::NodeHandle& pnh) {
+    using P = behavior::RoombaParams;
+    using C = RoombaBehaviorConfig;
+    // Every constant of the .cfg and where it lives in RoombaParams (~rate is not reconfigurable).
+    static constexpr std::pair<double P::*, double C::*> kFields[] = {
+        {&P::move_forward_time, &C::move_forward_time},
+        {&P::move_in_spiral_time, &C::move_in_spiral_time},
+        {&P::go_back_time, &C::go_back_time},
+        {&P::forward_speed, &C::forward_speed},
+        {&P::backward_speed, &C::backward_speed},
+        {&P::angular_speed, &C::angular_speed},
+        {&P::initial_radius_spiral, &C::initial_radius_spiral},
+        {&P::spiral_factor, &C::spiral_factor}};
+    C in_force;
+    for (const auto& [param, config] : kFields) in_force.*config = behavior_->params().*param;
+    reconfigure_ = std::make_unique<Reconfigure<C>>(pnh, in_force, [this](const C& requested) {
+      P next = behavior_->params();
+      for (const auto& [param, config] : kFields) next.*param = requested.*config;
+      behavior_->setParams(next);
+    });
+  }
+
   void onBumper(const roomba_rrt::Bumper& msg) {
     bumper_.pressed = msg.pressed;
     bumper_.left = msg.left;
@@ -109,6 +137,7 @@ class BehaviorNode {
   }
 
   std::unique_ptr<behavior::RoombaBehavior> behavior_;
+  std::unique_ptr<Reconfigure<RoombaBehaviorConfig>> reconfigure_;
   ros::Duration period_;
   int max_catch_up_;  ///< at most one second of ticks per timer event
   double bumper_timeout_;

@@ -4,6 +4,7 @@
 #include <geometry_msgs/Twist.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/Path.h>
+#include <roomba_rrt/NavFollowerConfig.h>
 #include <tf2/LinearMath/Transform.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -15,6 +16,7 @@
 #include "behavior_node.h"
 #include "nav_ros.h"
 #include "planner_ros.h"
+#include "reconfigure.h"
 #include "roomba_rrt/behavior/nav_bt.h"
 
 namespace roomba_rrt::nav_node {
@@ -81,6 +83,13 @@ class NavBehavior final : public behavior::RoombaBehavior {
     server_.registerGoalCallback([this] { onGoal(); });
     server_.registerPreemptCallback([this] { onPreempt(); });
     server_.start();
+    startFollowerReconfigure();
+  }
+
+  /// The lab's constants for the cleaning leaves (BehaviorNode's dynamic_reconfigure).
+  void setParams(const behavior::RoombaParams& params) override {
+    nav_.setRoombaParams(params);
+    RoombaBehavior::setParams(params);
   }
 
   sim::Velocity tick(const sim::BumperState& bumper) override {
@@ -229,6 +238,27 @@ class NavBehavior final : public behavior::RoombaBehavior {
     return "";
   }
 
+  /// dynamic_reconfigure on ~follower (cfg/NavFollower.cfg): FollowPath's limits and
+  /// tolerances, from its next tick; refused (and kept) when invalid.
+  void startFollowerReconfigure() {
+    const behavior::FollowerParams& f = settings_.config.follower;
+    NavFollowerConfig in_force;
+    in_force.max_linear_speed = f.max_linear_speed;
+    in_force.max_angular_speed = f.max_angular_speed;
+    in_force.xy_tolerance = f.xy_tolerance;
+    in_force.yaw_tolerance = f.yaw_tolerance;
+    follower_reconfigure_ = std::make_unique<nodes::Reconfigure<NavFollowerConfig>>(
+        ros::NodeHandle("~follower"), in_force, [this](const NavFollowerConfig& c) {
+          behavior::FollowerParams next = settings_.config.follower;
+          next.max_linear_speed = c.max_linear_speed;
+          next.max_angular_speed = c.max_angular_speed;
+          next.xy_tolerance = c.xy_tolerance;
+          next.yaw_tolerance = c.yaw_tolerance;
+          nav_.setFollowerParams(next);
+          settings_.config.follower = next;
+        });
+  }
+
   static geometry_msgs::Twist toTwist(const sim::Velocity& cmd) {
     geometry_msgs::Twist twist;
     twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
@@ -243,6 +273,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
   MoveBaseServer server_;
+  std::unique_ptr<nodes::Reconfigure<NavFollowerConfig>> follower_reconfigure_;
   ros::Publisher cmd_pub_, plan_pub_, action_goal_pub_;
   ros::Subscriber simple_goal_sub_;
 
@@ -297,10 +328,11 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
   s.config.params = params;
   behavior::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
-  f.max_linear_speed = finiteParam(pnh, "max_linear_speed", f.max_linear_speed, 1e-3);
-  f.max_angular_speed = finiteParam(pnh, "max_angular_speed", f.max_angular_speed, 1e-3);
-  f.xy_tolerance = finiteParam(pnh, "xy_tolerance", f.xy_tolerance, 1e-3);
-  f.yaw_tolerance = finiteParam(pnh, "yaw_tolerance", f.yaw_tolerance, 1e-3);
+  using L = behavior::FollowerLimits;  // also cfg/NavFollower.cfg's minimum; validate() the maxima
+  f.max_linear_speed = finiteParam(pnh, "max_linear_speed", f.max_linear_speed, L::kMin);
+  f.max_angular_speed = finiteParam(pnh, "max_angular_speed", f.max_angular_speed, L::kMin);
+  f.xy_tolerance = finiteParam(pnh, "xy_tolerance", f.xy_tolerance, L::kMin);
+  f.yaw_tolerance = finiteParam(pnh, "yaw_tolerance", f.yaw_tolerance, L::kMin);
   behavior::validate(f);
   ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
            planner == "service" ? (" (" + service + ")").c_str() : "");

@@ -118,10 +118,13 @@ std::string resolveGeometry(const PlanPath::Request& r, const NodeDefaults& defa
   return "";
 }
 
-// The robot's size: the request's where given, otherwise the scenario's (the room's robot) or 0.
-void resolveRobot(const PlanPath::Request& r, planning::Problem* problem) {
-  problem->robot_radius = orDefault(r.robot_radius, problem->robot_radius);
-  problem->clearance = orDefault(r.clearance, problem->clearance);
+// The robot's size: the request's where given, otherwise the scenario's (the room's robot),
+// otherwise the node's (~robot_radius, ~clearance; 0 by default: the lab's point).
+void resolveRobot(const PlanPath::Request& r, const NodeDefaults& defaults,
+                  planning::Problem* problem) {
+  problem->robot_radius =
+      orDefault(r.robot_radius, orDefault(problem->robot_radius, defaults.robot_radius));
+  problem->clearance = orDefault(r.clearance, orDefault(problem->clearance, defaults.clearance));
 }
 
 // Planner options: the node's, overridden by every request field that is set.
@@ -203,7 +206,7 @@ ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefau
   resolved.error = nonFiniteHeight(request);
   if (resolved.error.empty()) {
     resolved.error = resolveGeometry(request, defaults, scenarios, &resolved.problem);
-    resolveRobot(request, &resolved.problem);
+    resolveRobot(request, defaults, &resolved.problem);
   }
   if (resolved.error.empty()) resolved.error = resolveOptions(request, defaults, &resolved.options);
   if (resolved.error.empty()) {

@@ -26,6 +26,8 @@ struct NodeDefaults {
   planning::Bounds bounds;           // the lab's [0, 10] x [0, 10]
   planning::PlannerOptions options;  // the lab's step, goal bias, iterations, tolerance, seed;
                                      // its max_planning_time is also the requests' limit
+  double robot_radius = 0;           // m, when neither the request nor its scenario gives one
+  double clearance = 0;              // m, likewise
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
   std::optional<planning::Problem> room;  // scenario "room": the simulator's world (~world_file)
 };

@@ -13,6 +13,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
+#include <roomba_rrt/RoombaSimConfig.h>
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -32,6 +34,7 @@
 #include <vector>
 
 #include "master_watch.h"
+#include "reconfigure.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/world.h"
 #include "sim_ros.h"
@@ -113,18 +116,19 @@ class RoombaSimNode {
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
     publishStaticTransforms();
     world_markers_ = sim_node::worldMarkers(sim_.world());
+    startReconfigure();
   }
 
   /// The fixed-step loop: sense contact, publish the state, apply the latest command, keep pace
   /// with the wall clock (× real_time_factor when the simulator owns /clock).
   void run() {
-    const World& world = sim_.world();
-    const double factor = use_sim_time_ ? world.real_time_factor : 1.0;
-    const auto wall_step =
-        std::chrono::duration_cast<Clock::duration>(Seconds(world.step / factor));
     auto next_step = Clock::now();
     while (ros::ok()) {
       ros::spinOnce();
+      // Read every step: dynamic_reconfigure may change the factor between two.
+      const double factor = use_sim_time_ ? real_time_factor_ : 1.0;
+      const auto wall_step =
+          std::chrono::duration_cast<Clock::duration>(Seconds(sim_.world().step / factor));
       const ros::Time now = currentTime();
       sim_.senseContact();
       publishState(now);
@@ -176,7 +180,7 @@ class RoombaSimNode {
   /// Robot i's latest command, or a stop when it is older than command_timeout.
   sim::Velocity activeCommand(std::size_t robot, const ros::Time& now) const {
     const RobotIo& io = robots_[robot];
-    if (!io.command_time || (now - *io.command_time).toSec() > sim_.world().command_timeout) {
+    if (!io.command_time || (now - *io.command_time).toSec() > command_timeout_) {
       return {};
     }
     return io.command;
@@ -191,6 +195,32 @@ class RoombaSimNode {
     for (auto& trail : trails_) trail.points.clear();
     ROS_INFO("roomba_sim: reset to the initial pose, coverage cleared");
     return true;
+  }
+
+  /// dynamic_reconfigure (cfg/RoombaSim.cfg): the real-time factor, the command timeout and
+  /// every robot's speed limits, from the next step; refused (and kept) when World's rules say no.
+  void startReconfigure() {
+    RoombaSimConfig in_force;
+    in_force.real_time_factor = real_time_factor_;
+    in_force.command_timeout = command_timeout_;
+    in_force.max_linear_speed = sim_.world().max_linear_speed;
+    in_force.max_angular_speed = sim_.world().max_angular_speed;
+    reconfigure_ = std::make_unique<nodes::Reconfigure<RoombaSimConfig>>(
+        pnh_, in_force, [this](const RoombaSimConfig& c) {
+          World next = sim_.world();
+          next.real_time_factor = c.real_time_factor;
+          next.command_timeout = c.command_timeout;
+          sim::validate(next);
+          sim_.setSpeedLimits(c.max_linear_speed, c.max_angular_speed);
+          real_time_factor_ = c.real_time_factor;
+          command_timeout_ = c.command_timeout;
+          if (!use_sim_time_ && c.real_time_factor != 1.0) {
+            ROS_WARN(
+                "roomba_sim: ~real_time_factor %g needs /use_sim_time true; running in real "
+                "time",
+                c.real_time_factor);
+          }
+        });
   }
 
   /// map → odom (or map → <name>/odom for every named robot): the identity.
@@ -252,6 +282,9 @@ class RoombaSimNode {
   ros::NodeHandle pnh_;
   sim::MultiRobotSimulator sim_;
   const bool use_sim_time_;
+  double real_time_factor_ = sim_.world().real_time_factor;  ///< dynamic_reconfigure may change
+  double command_timeout_ = sim_.world().command_timeout;    ///< these two while running
+  std::unique_ptr<nodes::Reconfigure<RoombaSimConfig>> reconfigure_;
   long steps_ = 0;  ///< steps since start (never reset: simulated time only moves forward)
 
   /// One robot's topics and latest command.

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -25,11 +26,13 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/PlanPath.h>
+#include <roomba_rrt/RrtPlannerConfig.h>
 #include <roomba_rrt/planning/planner.h>
 
 #include "master_watch.h"
 #include "plan_slots.h"
 #include "planner_ros.h"
+#include "reconfigure.h"
 
 namespace roomba_rrt::planner_node {
 namespace {
@@ -61,6 +64,21 @@ Enum enumParam(const ros::NodeHandle& pnh, const std::string& name, Enum fallbac
   return *value;
 }
 
+// The defaults must make a valid request on their own (the empty request plans with them):
+// util::InvalidInput naming the field otherwise.
+void validateDefaults(const NodeDefaults& d) {
+  planning::Problem problem;
+  problem.start = d.start;
+  problem.goal = d.goal;
+  problem.bounds = d.bounds;
+  problem.robot_radius = d.robot_radius;
+  problem.clearance = d.clearance;
+  if (!(d.options.max_planning_time > 0)) {  // the upper end is validate()'s
+    throw util::InvalidInput("max_planning_time", "must be > 0 s (every plan has a time limit)");
+  }
+  planning::validate(problem, d.options, d.max_iterations_cap);
+}
+
 // Seconds a plan may take unless ~max_planning_time says otherwise.
 constexpr double kDefaultMaxPlanningTime = 5.0;
 
@@ -86,23 +104,17 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   o.algorithm = enumParam(pnh, "algorithm", o.algorithm, planning::parseAlgorithm);
   o.collision = enumParam(pnh, "collision_check", o.collision, planning::parseCollisionCheck);
   o.nearest = enumParam(pnh, "nearest", o.nearest, planning::parseNearestSearch);
+  d.robot_radius = param(pnh, "robot_radius", d.robot_radius);
+  d.clearance = param(pnh, "clearance", d.clearance);
   o.max_planning_time = param(pnh, "max_planning_time", kDefaultMaxPlanningTime);
-  if (!(o.max_planning_time > 0)) {  // the upper end is validate()'s
-    throw std::invalid_argument("~max_planning_time: must be > 0 s (every plan has a time limit)");
-  }
   d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
   // planning::plan() validates again with the library's own cap, so it bounds ours.
   if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
     throw std::invalid_argument("~max_iterations_cap: must be in [1, " +
                                 std::to_string(planning::kDefaultMaxIterationsCap) + "]");
   }
-  // The defaults must make a valid request on their own (the empty request plans with them).
-  planning::Problem problem;
-  problem.start = d.start;
-  problem.goal = d.goal;
-  problem.bounds = d.bounds;
   try {
-    planning::validate(problem, o, d.max_iterations_cap);
+    validateDefaults(d);
   } catch (const util::InvalidInput& invalid) {
     throw std::invalid_argument("parameter ~" + std::string(invalid.what()));
   }
@@ -128,7 +140,8 @@ int threadsParam(const ros::NodeHandle& pnh) {
 class RrtPlannerNode {
  public:
   explicit RrtPlannerNode(ros::NodeHandle& pnh)
-      : defaults_(loadDefaults(pnh)), slots_(threadsParam(pnh)) {
+      : defaults_(std::make_shared<const NodeDefaults>(loadDefaults(pnh))),
+        slots_(threadsParam(pnh)) {
     const std::string package = ros::package::getPath("roomba_rrt");
     const std::string scenarios_file = param<std::string>(
         pnh, "scenarios_file",
@@ -158,7 +171,8 @@ class RrtPlannerNode {
     service_ = pnh.advertiseService("plan_path", &RrtPlannerNode::planPath, this);
     ROS_INFO_STREAM("rrt_planner: serving "
                     << service_.getService() << " with " << scenarios_.size() << " scenarios from "
-                    << scenarios_file << (defaults_.room ? " and scenario room" : ""));
+                    << scenarios_file << (defaults_->room ? " and scenario room" : ""));
+    startReconfigure(pnh);
   }
 
   /// How many plans run at once (~threads, at least 2).
@@ -171,7 +185,7 @@ class RrtPlannerNode {
     response.success = false;
     response.length = std::numeric_limits<double>::infinity();
     response.path.header.frame_id = frame_id_;
-    const ResolvedRequest resolved = resolveRequest(request, defaults_, scenarios_);
+    const ResolvedRequest resolved = resolveRequest(request, *defaults(), scenarios_);
     if (!resolved.error.empty()) {
       response.message = resolved.error;
       ROS_WARN_STREAM("plan_path: rejected: " << resolved.error);
@@ -230,7 +244,51 @@ class RrtPlannerNode {
     return toMarkers(scene, frame_id_, stamp);
   }
 
-  const NodeDefaults defaults_;
+  /// The defaults in force: a request takes a snapshot, dynamic_reconfigure swaps in new ones.
+  std::shared_ptr<const NodeDefaults> defaults() const { return std::atomic_load(&defaults_); }
+
+  /// dynamic_reconfigure (cfg/RrtPlanner.cfg): new defaults for the requests that arrive after
+  /// the change (a plan running keeps its own); refused (and kept) when they are not valid.
+  void startReconfigure(const ros::NodeHandle& pnh) {
+    const NodeDefaults& d = *defaults();
+    RrtPlannerConfig in_force;
+    in_force.step = d.options.step;
+    in_force.goal_bias = d.options.goal_bias;
+    in_force.max_iterations = d.options.max_iterations;
+    in_force.goal_tolerance = d.options.goal_tolerance;
+    in_force.algorithm = planning::toString(d.options.algorithm);
+    in_force.collision_check = planning::toString(d.options.collision);
+    in_force.robot_radius = d.robot_radius;
+    in_force.clearance = d.clearance;
+    in_force.max_planning_time = d.options.max_planning_time;
+    in_force.smooth = d.options.smooth;
+    reconfigure_ = std::make_unique<nodes::Reconfigure<RrtPlannerConfig>>(
+        pnh, in_force, [this](const RrtPlannerConfig& c) {
+          auto next = std::make_shared<NodeDefaults>(*defaults());
+          planning::PlannerOptions& o = next->options;
+          o.step = c.step;
+          o.goal_bias = c.goal_bias;
+          o.max_iterations = c.max_iterations;
+          o.goal_tolerance = c.goal_tolerance;
+          const auto algorithm = planning::parseAlgorithm(c.algorithm);
+          const auto collision = planning::parseCollisionCheck(c.collision_check);
+          if (!algorithm) throw util::InvalidInput("algorithm", "unknown '" + c.algorithm + "'");
+          if (!collision) {
+            throw util::InvalidInput("collision_check", "unknown '" + c.collision_check + "'");
+          }
+          o.algorithm = *algorithm;
+          o.collision = *collision;
+          o.max_planning_time = c.max_planning_time;
+          o.smooth = c.smooth;
+          next->robot_radius = c.robot_radius;
+          next->clearance = c.clearance;
+          validateDefaults(*next);
+          std::atomic_store(&defaults_, std::shared_ptr<const NodeDefaults>(std::move(next)));
+        });
+  }
+
+  std::shared_ptr<const NodeDefaults> defaults_;
+  std::unique_ptr<nodes::Reconfigure<RrtPlannerConfig>> reconfigure_;
   std::map<std::string, planning::Problem> scenarios_;
   std::string frame_id_;
   int max_marker_nodes_ = 0;

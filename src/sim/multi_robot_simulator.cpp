@@ -206,4 +206,20 @@ std::vector<RobotSpec> spreadRobots(const World& world, int n) {
                               " robots do not fit in the room");
 }
 
+void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_angular_speed) {
+  World next = world_;
+  next.max_linear_speed = max_linear_speed;
+  next.max_angular_speed = max_angular_speed;
+  for (RobotSpec& robot : next.robots) {
+    robot.max_linear_speed = max_linear_speed;
+    robot.max_angular_speed = max_angular_speed;
+  }
+  validate(next);  // the world's rules: ranges, and v·step below every robot's radius
+  world_ = next;
+  for (RobotSpec& spec : specs_) {
+    spec.max_linear_speed = max_linear_speed;
+    spec.max_angular_speed = max_angular_speed;
+  }
+}
+
 }  // namespace roomba_rrt::sim

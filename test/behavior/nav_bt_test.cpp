@@ -9,6 +9,7 @@
 #include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -68,6 +69,24 @@ TEST(NavBt, the_tree_nodes_model_describes_every_leaf_roomba_bt_knows) {
         "<Decorator ID=\"RateController\"", "<output_port name=\"path\" type=\"Path\""}) {
     EXPECT_NE(model.find(node), std::string::npos) << node;
   }
+}
+
+TEST(NavBt, new_follower_limits_apply_while_driving) {
+  Loop loop(kNavTree);
+  loop.nav.setGoal({1.0, 1.3, M_PI});         // past the round table, above the sofa
+  for (int i = 0; i < 120; ++i) loop.step();  // under way at up to 0.3 m/s
+  FollowerParams slow;
+  slow.max_linear_speed = 0.1;
+  loop.nav.setFollowerParams(slow);
+  double fastest = 0;
+  for (int i = 0; i < 600 && loop.nav.outcome() == GoalOutcome::kActive; ++i) {
+    fastest = std::max(fastest, std::fabs(loop.step().v));
+  }
+  EXPECT_LE(fastest, 0.1 + 1e-12);
+  EXPECT_GT(fastest, 0.05);  // still driving
+  FollowerParams bad;
+  bad.max_linear_speed = -1;
+  EXPECT_THROW(loop.nav.setFollowerParams(bad), util::InvalidInput);
 }
 
 TEST(NavBt, without_a_goal_the_robot_stands_still) {

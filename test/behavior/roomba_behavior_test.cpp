@@ -8,6 +8,7 @@
 #include "roomba_rrt/behavior/motion_primitives.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -124,6 +125,36 @@ TYPED_TEST(RoombaBehaviorTest, the_same_seed_reproduces_the_run_and_another_seed
   }
   EXPECT_TRUE(all_equal);
   EXPECT_TRUE(other_differs);
+}
+
+// dynamic_reconfigure's rule: new constants reach a motion when it starts, never mid-motion.
+TYPED_TEST(RoombaBehaviorTest, new_params_take_effect_when_the_next_motion_starts) {
+  this->run(10);  // in MoveForward at 0.5 m/s
+  RoombaParams tuned;
+  tuned.forward_speed = 0.3;
+  tuned.go_back_time = 1.0;  // 60 ticks instead of 30
+  this->roomba.setParams(tuned);
+  EXPECT_EQ(this->roomba.tick(kFree).v, 0.5);  // the running MoveForward keeps its speed
+  const sim::Velocity back = this->roomba.tick(kBump);
+  EXPECT_EQ(this->roomba.state(), RoombaState::kGoBack);
+  EXPECT_EQ(back.v, -0.1);
+  int go_back_ticks = 1;
+  while (this->roomba.tick(kFree), this->roomba.state() == RoombaState::kGoBack) ++go_back_ticks;
+  EXPECT_EQ(go_back_ticks, 60);  // the GoBack that started after the change lasts 1 s
+  while (this->roomba.state() != RoombaState::kMoveForward) this->roomba.tick(kFree);
+  EXPECT_EQ(this->roomba.tick(kFree).v, 0.3);  // the next MoveForward drives at the new speed
+}
+
+TYPED_TEST(RoombaBehaviorTest, invalid_new_params_are_refused_and_change_nothing) {
+  RoombaParams bad;
+  bad.forward_speed = 0;  // must be > 0
+  EXPECT_THROW(this->roomba.setParams(bad), util::InvalidInput);
+  bad = RoombaParams{};
+  bad.rate = 5;  // the sample time is the node's: ignored, not an error
+  this->roomba.setParams(bad);
+  EXPECT_EQ(this->roomba.params().rate, 60.0);
+  EXPECT_EQ(this->roomba.params().forward_speed, 0.5);
+  EXPECT_EQ(this->roomba.tick(kFree).v, 0.5);
 }
 
 }  // namespace

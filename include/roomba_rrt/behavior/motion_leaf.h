@@ -20,10 +20,10 @@ class MotionLeaf final : public bt::LeafNode {
       : bt::LeafNode(std::move(name)), id_(id), motion_(std::move(motion)), context_(context) {}
 
  private:
-  void onEnter() override { motion_.enter(); }
+  void onEnter() override { motion_.enter(context_); }
 
   bt::Status onTick() override {
-    switch (motion_.check(context_.bumper)) {
+    switch (motion_->check(context_.bumper)) {
       case MotionEvent::kBumped:
         return bt::Status::kFailure;
       case MotionEvent::kTimeUp:
@@ -31,14 +31,14 @@ class MotionLeaf final : public bt::LeafNode {
       case MotionEvent::kNone:
         break;
     }
-    context_.cmd = motion_.execute();
+    context_.cmd = motion_->execute();
     context_.state = id_;
     context_.state_name = &name();
     return bt::Status::kRunning;
   }
 
   RoombaState id_;
-  Motion motion_;
+  MotionHolder<Motion> motion_;
   RoombaContext& context_;
 };
 

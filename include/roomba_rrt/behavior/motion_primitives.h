@@ -1,7 +1,10 @@
 // The lab's four motions, written once and used by both the FSM states and the BT leaves.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <random>
+#include <type_traits>
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/sim/robot_state.h"
@@ -176,6 +179,41 @@ class BackUp : public StraightMotion<false> {
  public:
   BackUp(double distance, double speed, double rate)
       : StraightMotion(-speed, std::lround(distance / speed * rate)) {}
+};
+
+/// A motion as an FSM state or BT leaf holds it (MotionState, MotionLeaf). The lab's four motions
+/// are built from RoombaParams (Rotate also from the context's generator): when the context's
+/// parameters changed since the motion was built (RoombaBehavior::setParams), enter() rebuilds it
+/// from them first, so a change takes effect when a motion starts, never in the middle of one.
+/// The navigation's BackUp and Spin, built from their ports, keep what they were built with.
+template <class Motion>
+class MotionHolder {
+ public:
+  explicit MotionHolder(Motion motion) : motion_(std::move(motion)) {}
+
+  /// Starts the motion, rebuilt first if the context's parameters changed.
+  template <class Context>
+  Motion& enter(Context& context) {
+    if constexpr (std::is_constructible_v<Motion, const RoombaParams&>) {
+      if (context.params && context.params_version != version_) {
+        motion_.emplace(*context.params);
+        version_ = context.params_version;
+      }
+    } else if constexpr (std::is_constructible_v<Motion, const RoombaParams&, std::mt19937&>) {
+      if (context.params && context.params_version != version_) {
+        motion_.emplace(*context.params, context.rng);
+        version_ = context.params_version;
+      }
+    }
+    motion_->enter();
+    return *motion_;
+  }
+  Motion& operator*() { return *motion_; }
+  Motion* operator->() { return &*motion_; }
+
+ private:
+  std::optional<Motion> motion_;  // optional: Rotate holds a reference and cannot be assigned
+  std::uint64_t version_ = 0;     // the context's params_version it was built with
 };
 
 }  // namespace roomba_rrt::behavior

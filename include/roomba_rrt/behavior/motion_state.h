@@ -25,10 +25,10 @@ class MotionState final : public fsm::State {
         on_bump_(on_bump),
         on_time_up_(on_time_up) {}
 
-  void enter() override { motion_.enter(); }
+  void enter() override { motion_.enter(context_); }
 
   fsm::StateId checkTransition() override {
-    switch (motion_.check(context_.bumper)) {
+    switch (motion_->check(context_.bumper)) {
       case MotionEvent::kBumped:
         return on_bump_;
       case MotionEvent::kTimeUp:
@@ -40,14 +40,14 @@ class MotionState final : public fsm::State {
   }
 
   void execute() override {
-    context_.cmd = motion_.execute();
+    context_.cmd = motion_->execute();
     context_.state = id_;
     context_.state_name = &name();
   }
 
  private:
   RoombaState id_;
-  Motion motion_;
+  MotionHolder<Motion> motion_;
   RoombaContext& context_;
   fsm::StateId on_bump_;
   fsm::StateId on_time_up_;

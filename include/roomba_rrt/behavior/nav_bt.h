@@ -36,6 +36,13 @@ class NavBt {
   void setGoal(const sim::Pose2D& goal);
   void cancelGoal();
 
+  /// FollowPath's new limits and tolerances, from its next tick (validated first:
+  /// util::InvalidInput naming the field, and nothing changes). `params.rate` is ignored.
+  void setFollowerParams(const FollowerParams& params);
+  /// The lab's constants for the cleaning leaves of a tree that has them, from the next motion
+  /// that starts (as RoombaBehavior::setParams). `params.rate` is ignored.
+  void setRoombaParams(const RoombaParams& params);
+
   /// One tick: the bumper and pose of this step in, the command out (zero when no leaf runs).
   sim::Velocity tick(const sim::BumperState& bumper, const sim::Pose2D& pose);
 
@@ -53,6 +60,7 @@ class NavBt {
         const std::string& source, bool from_file);
 
   NavContext context_;
+  RoombaParams params_;  ///< the cleaning leaves' constants (context_.params points here)
   std::shared_ptr<bt::Blackboard> board_;
   bt::Blackboard::Entry<sim::Pose2D>* goal_;
   bt::Blackboard::Entry<sim::Pose2D>* pose_;

@@ -45,6 +45,10 @@ struct NavContext : RoombaContext {
   sim::Velocity previous_cmd;
   GoalOutcome outcome = GoalOutcome::kNone;
   std::string message;  ///< why the goal was aborted
+  /// FollowPath's limits and tolerances when they were changed after the tree was built
+  /// (NavBt::setFollowerParams), and how often: FollowPath takes them up on its next tick.
+  FollowerParams follower;
+  std::uint64_t follower_version = 0;
 };
 
 /// Makes one planner per ComputePath leaf (each leaf has its own pending plan).

@@ -33,8 +33,18 @@ struct FollowerParams {
   double dt() const { return 1.0 / rate; }
 };
 
+/// The ranges the navigation node and its dynamic_reconfigure (cfg/NavFollower.cfg) accept for
+/// the limits and tolerances users tune.
+struct FollowerLimits {
+  static constexpr double kMin = 1e-3;                 ///< speeds and tolerances ≥ this
+  static constexpr double kMaxSpeed = 100;             ///< m/s and rad/s
+  static constexpr double kMaxXyTolerance = 10;        ///< m
+  static constexpr double kMaxYawTolerance = 3.14159;  ///< rad
+};
+
 /// Throws util::InvalidInput naming the first bad field (non-finite, or ≤ 0; the tolerances
-/// and lookahead must be > 0, max_deviation > xy_tolerance).
+/// and lookahead must be > 0, max_deviation > xy_tolerance; speeds at most
+/// FollowerLimits::kMaxSpeed, tolerances at most their limits).
 void validate(const FollowerParams& params);
 
 /// What the follower reports after a step.
@@ -66,6 +76,9 @@ const char* toString(FollowStatus status);
 class PathFollower {
  public:
   explicit PathFollower(const FollowerParams& params);
+  /// New limits and tolerances (validated; util::InvalidInput and nothing changes), used from the
+  /// next step on.
+  void setParams(const FollowerParams& params);
 
   /// Starts following `path` to `goal` (its x, y should be the path's last point; its θ is the
   /// heading to end with). `current` is the robot's command of the last tick.

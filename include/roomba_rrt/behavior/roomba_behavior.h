@@ -29,6 +29,12 @@ class RoombaBehavior {
   const std::string& stateName() const { return *context_.state_name; }
   const RoombaParams& params() const { return params_; }
 
+  /// New constants (dynamic_reconfigure): validated (util::InvalidInput naming the field, and
+  /// nothing changes), then used by every motion that starts from now on; the motion running
+  /// keeps its own until it ends, as the lab's rules say. The rate is the sample time the
+  /// behaviour was started with and stays: `params.rate` is ignored.
+  virtual void setParams(const RoombaParams& params);
+
  protected:
   RoombaParams params_;
   RoombaContext context_;

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/sim/robot_state.h"
 
 namespace roomba_rrt::behavior {
@@ -28,6 +29,16 @@ struct RoombaContext {
   /// Its name: the FSM state's, or the BT leaf's instance name.
   const std::string* state_name = nullptr;
   std::mt19937 rng;  ///< Rotate's angle generator (see Rotate::drawAngle)
+  /// The constants the lab's motions are built from when they start (RoombaBehavior::setParams
+  /// changes them between motions), and how often they changed: a motion built with an older
+  /// version is rebuilt when it is next entered. Null: the motions keep what they were built with.
+  const RoombaParams* params = nullptr;
+  std::uint64_t params_version = 0;
 };
+
+/// Makes `requested` the constants in force (`in_force`, which context.params points to) for the
+/// motions that start from now on, keeping the sample time (`rate`) of `in_force`.
+/// util::InvalidInput naming the field, and nothing changes, when they are invalid.
+void retuneMotions(RoombaParams& in_force, const RoombaParams& requested, RoombaContext& context);
 
 }  // namespace roomba_rrt::behavior

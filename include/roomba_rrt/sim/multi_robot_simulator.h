@@ -64,6 +64,10 @@ class MultiRobotSimulator {
   void setPose(std::size_t robot, const Pose2D& pose);
   /// Every robot back to its initial pose, time 0, coverage cleared, commands zero.
   void reset();
+  /// Every robot's speed limits from now on (dynamic_reconfigure). util::InvalidInput naming the
+  /// field, and nothing changes, when a limit is outside World's range or lets some robot move
+  /// its radius or more in one step.
+  void setSpeedLimits(double max_linear_speed, double max_angular_speed);
 
  private:
   struct Robot {
