@@ -32,6 +32,14 @@ add_library(roomba_behavior_core
 )
 target_include_directories(roomba_behavior_core PUBLIC include)
 target_link_libraries(roomba_behavior_core PUBLIC yaml-cpp PRIVATE PkgConfig::TINYXML2)
+# The lab's tree exists once, in config/roomba_tree.xml: RoombaBt's default tree is that file's
+# text, compiled in (reconfigured whenever the file changes).
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+  ${CMAKE_CURRENT_SOURCE_DIR}/config/roomba_tree.xml)
+file(READ ${CMAKE_CURRENT_SOURCE_DIR}/config/roomba_tree.xml ROOMBA_LAB_TREE_XML)
+configure_file(cmake/lab_tree_xml.h.in
+  ${CMAKE_CURRENT_BINARY_DIR}/generated/roomba_rrt/behavior/lab_tree_xml.h @ONLY)
+target_include_directories(roomba_behavior_core PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
 
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
 add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/master_watch.cpp)

@@ -6,22 +6,6 @@
 
 namespace roomba_rrt::behavior {
 
-const char* const kLabTreeXml = R"(<root BTCPP_format="4" main_tree_to_execute="Roomba">
-  <BehaviorTree ID="Roomba">
-    <Fallback name="root">
-      <Sequence name="clean">
-        <MoveForward/>
-        <MoveInSpiral/>
-      </Sequence>
-      <Sequence name="recover">
-        <GoBack/>
-        <Rotate/>
-      </Sequence>
-    </Fallback>
-  </BehaviorTree>
-</root>
-)";
-
 namespace {
 
 template <class Motion>

@@ -8,8 +8,8 @@
 
 namespace roomba_rrt::behavior {
 
-/// A behavior tree of Roomba leaves, by default the lab's (kLabTreeXml), or one read from a tree
-/// file (bt::TreeFileError naming the element and line when it is invalid).
+/// A behavior tree of Roomba leaves, by default the lab's (config/roomba_tree.xml, compiled in), or
+/// one read from a tree file (bt::TreeFileError naming the element and line when it is invalid).
 ///
 /// **The idle tick.** Each tick starts with a zero command; the leaf that runs writes its
 /// command. When the root finishes (SUCCESS: MoveInSpiral's or Rotate's time is up; FAILURE:
@@ -21,7 +21,7 @@ namespace roomba_rrt::behavior {
 /// there without looking; a robot turning in place after backing off is not pressed).
 class RoombaBt final : public RoombaBehavior {
  public:
-  /// The lab's tree.
+  /// The lab's tree (config/roomba_tree.xml as it was at build time).
   RoombaBt(const RoombaParams& params, std::uint32_t seed);
   /// The tree in `tree_file` (XML, see bt::TreeFactory).
   RoombaBt(const RoombaParams& params, std::uint32_t seed, const std::string& tree_file);

@@ -1,4 +1,4 @@
-// The Roomba's leaves for the tree factory, and the lab's tree.
+// The Roomba's leaves for the tree factory (the lab's tree is config/roomba_tree.xml).
 #pragma once
 
 #include "roomba_rrt/behavior/roomba_params.h"
@@ -6,13 +6,6 @@
 #include "roomba_rrt/bt/tree_factory.h"
 
 namespace roomba_rrt::behavior {
-
-/// The lab's tree (config/roomba_tree.xml holds the same text):
-///
-///     Fallback
-///     ├── Sequence "clean":   MoveForward, MoveInSpiral
-///     └── Sequence "recover": GoBack, Rotate
-extern const char* const kLabTreeXml;
 
 /// Registers the leaves MoveForward, MoveInSpiral, GoBack and Rotate (no attributes; `name` sets
 /// the name reported on ~state). The leaves read and write `context`, which must outlive the

@@ -167,6 +167,12 @@ PortInfo makePort(PortDirection direction, std::string name, std::string descrip
 }  // namespace detail
 
 /// An input port: a literal in the tree file, or a blackboard key `{key}` the node reads.
+///
+/// The order of the arguments differs from BehaviorTree.CPP's: BT.CPP writes
+/// `InputPort<T>(name, default, description)`, we write `inputPort<T>(name, description,
+/// default)`, because here every port has a description and most have no default (a port
+/// without one is required). Both orders take strings, so a port ported from BT.CPP must have
+/// its last two arguments swapped; TreeNodesModel output (Groot2) is the same either way.
 template <class T>
 PortInfo inputPort(std::string name, std::string description,
                    std::optional<std::string> default_value = std::nullopt) {
@@ -174,7 +180,8 @@ PortInfo inputPort(std::string name, std::string description,
                              std::move(default_value));
 }
 
-/// An output port: always a blackboard key `{key}` the node writes.
+/// An output port: always a blackboard key `{key}` the node writes. Arguments in inputPort()'s
+/// order (name, description, default).
 template <class T>
 PortInfo outputPort(std::string name, std::string description,
                     std::optional<std::string> default_value = std::nullopt) {
