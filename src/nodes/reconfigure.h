@@ -12,6 +12,7 @@
 
 #include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
+#include <boost/thread/recursive_mutex.hpp>
 
 namespace roomba_rrt::nodes {
 
@@ -25,7 +26,7 @@ class Reconfigure {
   /// Serves the parameters of `Config` on `nh`'s namespace (the node's private one, or
   /// ~follower), starting from `in_force`.
   Reconfigure(const ros::NodeHandle& nh, const Config& in_force, Apply apply)
-      : server_(nh), in_force_(in_force), apply_(std::move(apply)) {
+      : server_(mutex_, nh), in_force_(in_force), apply_(std::move(apply)) {
     server_.updateConfig(in_force_);
     server_.setCallback([this](Config& requested, std::uint32_t) { onRequest(requested); });
   }
@@ -46,6 +47,7 @@ class Reconfigure {
     }
   }
 
+  boost::recursive_mutex mutex_;  // given to the server: updateConfig() takes it
   dynamic_reconfigure::Server<Config> server_;
   Config in_force_;
   Apply apply_;
