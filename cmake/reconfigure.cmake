@@ -11,4 +11,10 @@ if(CATKIN_ENABLE_TESTING)
   endif()
   add_rostest(test/nodes/reconfigure.test
     DEPENDENCIES roomba_sim roomba_fsm roomba_bt rrt_planner)
+  # The install space on its own: installed executables, libraries, roomba_bt's two trees, and
+  # reconfigure.test run by rostest from it.
+  add_test(NAME install_space_test
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/install_space_test.bash)
+  set_tests_properties(install_space_test PROPERTIES
+    ENVIRONMENT "RR_BUILD=${CMAKE_BINARY_DIR}" TIMEOUT 300)
 endif()
