@@ -74,6 +74,12 @@ if(CATKIN_ENABLE_TESTING)
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/master_restart_test.bash)
   set_tests_properties(master_restart_test PROPERTIES
     ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 180)
+  # scripts/run: --help, a node refusing its world stops everything (exit 1), _param:= reaches
+  # the node, a second run against the same master is refused.
+  add_test(NAME scripts_run_test
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/scripts_run_test.bash)
+  set_tests_properties(scripts_run_test PROPERTIES
+    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 240)
   # Issue 11: node parameters out of range stop the node naming them; Ctrl-C stops within 1 s.
   add_test(NAME node_parameters_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/node_parameters_test.bash)

@@ -145,3 +145,17 @@ while time.time() < deadline:
 sys.exit(1)
 PY
 }
+
+# rr_registered_nodes NODE...: prints those of the named nodes the master knows (space-separated),
+# nothing when none (or no master answers).
+rr_registered_nodes() {
+  /usr/bin/python3 - "$@" <<'PY'
+import sys, rosgraph
+try:
+    state = rosgraph.Master("/roomba_rrt_scripts").getSystemState()
+except Exception:
+    sys.exit(0)
+known = {n for group in state for _, ns in group for n in ns}
+print(" ".join(n for n in sys.argv[1:] if n in known))
+PY
+}
