@@ -17,7 +17,7 @@ const char* const kUsage =
     "  --behavior  fsm (state machine) or bt (behavior tree)\n"
     "  --duration  simulated seconds per run (default 600)\n"
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
-    "  --world     world YAML (default config/roomba_world.yaml)\n"
+    "  --world     empty (the lab's room, the default), furnished, or a world YAML\n"
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree)\n"
     "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
@@ -28,6 +28,7 @@ const char* const kUsage =
     "              their union's. A list (1,2,4) runs each count. A world that names robots runs\n"
     "              those without --robots. --csv and --png need one unnamed robot.\n"
     "  --plot      union coverage over time, mean ± std over the seeds, one curve per count\n"
+    "              (needs --robots: with one robot, --png and --csv draw the run)\n"
     "A progress bar counts the runs on stderr when it is a terminal.\n";
 
 std::vector<int> parseCounts(const std::string& flag, const std::string& text) {
@@ -84,7 +85,7 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
       }
       o.seeds = static_cast<int>(seeds);
     } else if (flag == "--world") {
-      o.world = value;
+      o.world = worldFile(value);
     } else if (flag == "--config") {
       o.config = value;
     } else if (flag == "--tree") {

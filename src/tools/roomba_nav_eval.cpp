@@ -19,6 +19,7 @@
 #include "drawing.h"
 #include "roomba_rrt/behavior/nav_eval.h"
 #include "roomba_rrt/bt/tree_factory.h"
+#include "tool_arguments.h"
 
 namespace {
 
@@ -27,7 +28,7 @@ const char* const kUsage =
     "                       [--csv FILE] [--png FILE] [--timeout 120]\n"
     "  --goals    random reachable goals, one after another (default 20)\n"
     "  --seed     seed of the goals and the planner (default 1)\n"
-    "  --world    world YAML (default config/roomba_world_furnished.yaml)\n"
+    "  --world    furnished (the default), empty (the lab's room) or a world YAML\n"
     "  --tree     navigation tree (default config/roomba_nav_tree.xml)\n"
     "  --json     print one JSON object: goals, reached_pct, bumps, mean_time_s,\n"
     "             mean_length_ratio, planning_ms_p50\n"
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
     } else if (flag == "--timeout") {
       options.timeout_s = static_cast<double>(integer(flag, value(), 1, 86400));
     } else if (flag == "--world") {
-      world_file = value();
+      world_file = roomba_rrt::tools::worldFile(value());
     } else if (flag == "--tree") {
       tree_file = value();
     } else if (flag == "--csv") {

@@ -219,7 +219,8 @@ int main(int argc, char** argv) {
                   << "  --width PX               image width (default 900)\n"
                   << "  --world FILE             plan in the simulator's room (scenario room:\n"
                      "                           its furniture and robot radius), from --start\n"
-                     "                           X,Y to --goal X,Y\n";
+                     "                           X,Y to --goal X,Y; empty and furnished name\n"
+                     "                           the package's two rooms\n";
         return 0;
       }
     }
@@ -230,7 +231,7 @@ int main(int argc, char** argv) {
     if (args.tool.count("--width")) width = tools::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
     if (args.tool.count("--world")) {
-      problem = rp::loadRoom(args.tool["--world"]);
+      problem = rp::loadRoom(tools::worldFile(args.tool["--world"]));
       problem.start = pointFlag("--start", args.tool["--start"]);
       problem.goal = pointFlag("--goal", args.tool["--goal"]);
       args.scenario = "room";

@@ -24,6 +24,12 @@ Enum parseEnumFlag(const std::string& flag, const std::string& value,
 
 std::string defaultScenarioFile() { return ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"; }
 
+std::string worldFile(const std::string& value) {
+  if (value == "empty") return ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml";
+  if (value == "furnished") return ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
+  return value;
+}
+
 int parseIntFlag(const std::string& flag, const std::string& value) {
   std::size_t used = 0;
   long long v = 0;

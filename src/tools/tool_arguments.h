@@ -14,6 +14,10 @@ namespace roomba_rrt::tools {
 /// config/rrt_scenarios.yaml of the source tree the tools were built from.
 std::string defaultScenarioFile();
 
+/// A --world value as scripts/run takes it: `empty` (the lab's room, config/roomba_world.yaml),
+/// `furnished` (config/roomba_world_furnished.yaml), or a world file's path (unchanged).
+std::string worldFile(const std::string& value);
+
 /// What the tools' common flags set.
 struct ToolArguments {
   std::string scenario = "a";        ///< --scenario NAME

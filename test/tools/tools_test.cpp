@@ -27,6 +27,16 @@ std::string refusal(F f) {
   return "";
 }
 
+TEST(ToolArguments, world_names_the_package_rooms_as_scripts_run_does) {
+  EXPECT_EQ(worldFile("furnished"), ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  EXPECT_EQ(worldFile("empty"), ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
+  EXPECT_EQ(worldFile("my/world.yaml"), "my/world.yaml");
+  const char* argv[] = {"roomba_coverage", "--behavior", "fsm", "--world", "furnished"};
+  EXPECT_EQ(parseCoverageArguments(5, argv).world,
+            ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  EXPECT_NE(std::string(coverageUsage()).find("needs --robots"), std::string::npos);
+}
+
 TEST(ToolArguments, numbers_must_be_whole_and_finite_and_the_message_names_the_flag) {
   EXPECT_DOUBLE_EQ(parseDoubleFlag("--step", "0.25"), 0.25);
   EXPECT_EQ(parseIntFlag("--runs", "200"), 200);
