@@ -146,16 +146,28 @@ sys.exit(1)
 PY
 }
 
-# rr_registered_nodes NODE...: prints those of the named nodes the master knows (space-separated),
-# nothing when none (or no master answers).
+# rr_registered_nodes NODE...: prints those of the named nodes that the master knows and that
+# answer (space-separated; a registration left behind by a killed node does not count), nothing
+# when none (or no master answers).
 rr_registered_nodes() {
   /usr/bin/python3 - "$@" <<'PY'
-import sys, rosgraph
+import socket, sys, xmlrpc.client, rosgraph
+master = rosgraph.Master("/roomba_rrt_scripts")
 try:
-    state = rosgraph.Master("/roomba_rrt_scripts").getSystemState()
+    state = master.getSystemState()
 except Exception:
     sys.exit(0)
 known = {n for group in state for _, ns in group for n in ns}
-print(" ".join(n for n in sys.argv[1:] if n in known))
+socket.setdefaulttimeout(2.0)
+alive = []
+for name in sys.argv[1:]:
+    if name not in known:
+        continue
+    try:
+        xmlrpc.client.ServerProxy(master.lookupNode(name)).getPid("/roomba_rrt_scripts")
+        alive.append(name)
+    except Exception:
+        pass
+print(" ".join(alive))
 PY
 }

@@ -32,11 +32,20 @@ DESTDIR="$work/root" cmake --install "$build" >"$work/install.log" 2>&1 ||
   { cat "$work/install.log"; fail "cmake --install"; }
 ln -s "$work/root$prefix" "$work/install"
 
-# A fresh environment: only the install space, as a user who sourced install/setup.bash.
-run() {  # run COMMAND...: in that environment (exec'd: a signal to $! reaches the command)
-  env -i HOME="$work" PATH=/usr/bin:/bin ROS_HOME="$work/ros" ROS_LOG_DIR="$work/log" \
-    ROS_MASTER_URI="$ROS_MASTER_URI" bash -c \
-    "set +u; source '$work/install/setup.bash'; set -u; exec $*"
+# A fresh environment: only the install space, as a user who sourced install/setup.bash. The
+# command is exec'd all the way down, so a background one's pid is the command's own.
+there() {  # there COMMAND...: the env -i ... bash -c ... command line for COMMAND
+  there_cmd=(env -i HOME="$work" PATH=/usr/bin:/bin ROS_HOME="$work/ros" ROS_LOG_DIR="$work/log"
+    ROS_MASTER_URI="$ROS_MASTER_URI" bash -c
+    "set +u; source '$work/install/setup.bash'; set -u; exec $*")
+}
+run() { there "$@" && "${there_cmd[@]}"; }  # run COMMAND...: there, in the foreground
+spawn() {  # spawn LOG COMMAND...: there, in the background; its pid in pids
+  local log=$1
+  shift
+  there "$@"
+  (exec "${there_cmd[@]}" >"$log" 2>&1) &
+  pids+=($!)
 }
 port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("", 0)); print(s.getsockname()[1])')
 export ROS_MASTER_URI=http://localhost:$port
@@ -57,18 +66,14 @@ for exe in roomba_sim roomba_fsm roomba_bt rrt_planner roomba_teleop roomba_cove
 done
 say "ok: every executable installed, every library found"
 
-run roscore -p "$port" >"$work/roscore.log" 2>&1 &
-pids+=($!)
+spawn "$work/roscore.log" roscore -p "$port"
 for _ in $(seq 100); do run rostopic list >/dev/null 2>&1 && break; sleep 0.2; done
-run rosrun roomba_rrt roomba_sim >"$work/sim.log" 2>&1 &
-pids+=($!)
+spawn "$work/sim.log" rosrun roomba_rrt roomba_sim
 
 nodes_command() {  # nodes_command NAME ARGS...: roomba_bt publishes /cmd_vel within 20 s
   local name=$1
   shift
-  run rosrun roomba_rrt roomba_bt "__name:=$name" "$@" >"$work/$name.log" 2>&1 &
-  local pid=$!
-  pids+=($pid)
+  spawn "$work/$name.log" rosrun roomba_rrt roomba_bt "__name:=$name" "$@"
   if ! run timeout 20 rostopic echo -n 1 /cmd_vel >/dev/null 2>&1; then
     cat "$work/$name.log"
     fail "roomba_bt $* published no /cmd_vel from the install space"
