@@ -91,7 +91,7 @@ if(CATKIN_ENABLE_TESTING)
   add_test(NAME two_machines_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/two_machines_test.bash)
   set_tests_properties(two_machines_test PROPERTIES
-    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 180 SKIP_RETURN_CODE 77)
+    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 300 SKIP_RETURN_CODE 77)
   # rviz on a virtual X server (xvfb, imagemagick): the config shows robot, walls, coverage map.
   roomba_sim_rostest(sim_rviz_screenshot_test test/sim/sim_rviz.test
     test/sim/sim_rviz_screenshot_test.cpp)

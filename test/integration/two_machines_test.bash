@@ -84,13 +84,19 @@ say "machine B ($b): $(on "$b" ip -brief addr show veth1 | tr -s ' ')"
 # Machine A: the master and the simulator (10x real time; 0.4 m from the right wall, facing it,
 # so roomba_fsm's first MoveForward bumps within a second of robot time).
 on "$a" roscore -p "$port" >"$work/roscore.log" 2>&1 &
+roscore_pid=$!
+# Waits are deadlines in seconds, not counts of tries: under a full scripts/test (two cores, other
+# tests starting masters and nodes) roscore can take tens of seconds to answer, and each try
+# (a Python process) takes longer too; 150 tries once ran out before the master was up.
 up=0
-for _ in $(seq 150); do
+deadline=$((SECONDS + 90))
+while ((SECONDS < deadline)); do
   if on "$b" bash -c "$(declare -f master_online); master_online"; then up=1 && break; fi
-  sleep 0.1
+  kill -0 "$roscore_pid" 2>/dev/null || break  # roscore died: no use waiting
+  sleep 0.2
 done
 if [ $up = 0 ]; then
-  say "FAIL: the master on A is not reachable from B"
+  say "FAIL: the master on A is not reachable from B after $((SECONDS - deadline + 90)) s"
   cat "$work/roscore.log"
   exit 1
 fi
@@ -106,7 +112,7 @@ show_logs() {
   local f
   for f in sim fsm planner; do echo "--- $f.log"; tail -n 20 "$work/$f.log"; done
 }
-if ! on "$b" python3 "$here/bump_recovery.py" --timeout 40; then
+if ! on "$b" python3 "$here/bump_recovery.py" --timeout 60; then
   say "FAIL: roomba_fsm on B does not drive roomba_sim on A"
   show_logs
   exit 1
@@ -114,7 +120,8 @@ fi
 say "ok: roomba_fsm on B drives roomba_sim on A: it drives, bumps and recovers"
 
 reply=""
-for _ in $(seq 60); do  # until rrt_planner on B has registered its service
+deadline=$((SECONDS + 60))
+while ((SECONDS < deadline)); do  # until rrt_planner on B has registered its service
   on "$a" rosservice list 2>/dev/null | grep -qx /rrt_planner/plan_path && break
   sleep 0.5
 done
