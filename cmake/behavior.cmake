@@ -42,7 +42,8 @@ configure_file(cmake/lab_tree_xml.h.in
 target_include_directories(roomba_behavior_core PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
 
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
-add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/master_watch.cpp)
+add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/master_watch.cpp
+  src/nodes/node_params.cpp)
 target_include_directories(roomba_behavior_node PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core ${catkin_LIBRARIES})
 add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}

@@ -16,7 +16,7 @@ target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
 # The node wires parameters, topics and timers; src/nodes/sim_ros.cpp builds its messages.
 add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/sim_ros.cpp
-  src/nodes/master_watch.cpp)
+  src/nodes/master_watch.cpp src/nodes/node_params.cpp)
 target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})

@@ -3,7 +3,7 @@
 add_library(roomba_teleop_core src/teleop/keyboard_teleop.cpp)
 target_include_directories(roomba_teleop_core PUBLIC include)
 
-add_executable(roomba_teleop src/nodes/roomba_teleop_node.cpp)
+add_executable(roomba_teleop src/nodes/roomba_teleop_node.cpp src/nodes/node_params.cpp)
 target_include_directories(roomba_teleop PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_teleop roomba_teleop_core ${catkin_LIBRARIES})
 add_dependencies(roomba_teleop ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})

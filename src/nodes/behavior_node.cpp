@@ -23,14 +23,14 @@ namespace {
 /// The node: one behaviour, its inputs and outputs.
 class BehaviorNode {
  public:
-  BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh,
+  BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, NodeParams& node_params,
                std::unique_ptr<behavior::RoombaBehavior> behavior, double rate,
                double bumper_timeout)
       : behavior_(std::move(behavior)),
         period_(1.0 / rate),
         max_catch_up_(std::max(1, static_cast<int>(rate))),
         bumper_timeout_(bumper_timeout),
-        base_frame_(pnh.param<std::string>("base_frame", robotFrame("base_link"))) {
+        base_frame_(node_params.get<std::string>("base_frame", robotFrame("base_link"))) {
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     state_pub_ = pnh.advertise<std_msgs::String>("state", 10, /*latch=*/true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
@@ -38,6 +38,7 @@ class BehaviorNode {
     odom_sub_ = nh.subscribe("odom", 1, &BehaviorNode::onOdom, this);
     timer_ = nh.createTimer(period_, &BehaviorNode::onTimer, this);
     startReconfigure(pnh);
+    for (const std::string& name : parameterNames<RoombaBehaviorConfig>()) node_params.expect(name);
   }
 
  private:
@@ -173,12 +174,13 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
   ros::NodeHandle pnh("~");
   MasterWatch master_watch;
   try {
+    NodeParams node_params(pnh);
     const std::string config_file =
-        pnh.param<std::string>("config_file", packageConfigFile("roomba_behavior.yaml"));
+        node_params.get<std::string>("config_file", packageConfigFile("roomba_behavior.yaml"));
     behavior::RoombaParams params = behavior::loadRoombaParams(config_file);
-    params.rate = pnh.param("rate", params.rate);
-    const int seed = pnh.param("seed", 1);
-    const double bumper_timeout = pnh.param("bumper_timeout", 0.5);
+    params.rate = node_params.get("rate", params.rate);
+    const int seed = node_params.get("seed", 1);
+    const double bumper_timeout = node_params.get("bumper_timeout", 0.5);
     if (!(bumper_timeout > 0 && bumper_timeout <= 1e6)) {
       throw std::invalid_argument("~bumper_timeout must be in (0, 1e6] s");
     }
@@ -189,8 +191,10 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
       throw std::invalid_argument(std::string("~") + e.what());
     }
 
-    BehaviorNode node(nh, pnh, make_behavior(pnh, params, static_cast<std::uint32_t>(seed)),
+    BehaviorNode node(nh, pnh, node_params,
+                      make_behavior(node_params, params, static_cast<std::uint32_t>(seed)),
                       params.rate, bumper_timeout);
+    node_params.warnUnknown();
     ROS_INFO("%s: ticking at %.1f Hz (seed %d, parameters from %s)", node_name.c_str(), params.rate,
              seed, config_file.c_str());
     ros::spin();

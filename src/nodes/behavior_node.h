@@ -9,21 +9,23 @@
 
 #include <ros/ros.h>
 
+#include "node_params.h"
 #include "roomba_rrt/behavior/roomba_behavior.h"
 
 namespace roomba_rrt::nodes {
 
-/// Makes the behaviour from the parameters; `private_nh` gives access to node-specific ones
-/// (roomba_bt's ~tree_file). May throw std::exception: the node then exits with its message.
+/// Makes the behaviour from the parameters; `node_params` reads node-specific ones (roomba_bt's
+/// ~tree_file). May throw std::exception: the node then exits with its message.
 using BehaviorMaker = std::function<std::unique_ptr<behavior::RoombaBehavior>(
-    ros::NodeHandle& private_nh, const behavior::RoombaParams& params, std::uint32_t seed)>;
+    NodeParams& node_params, const behavior::RoombaParams& params, std::uint32_t seed)>;
 
 /// Runs a behaviour node until shutdown and returns the process exit code (non-zero when the
 /// parameters or the behaviour cannot be loaded).
 ///
-/// Parameters: ~config_file (default $(rospack find roomba_rrt)/config/roomba_behavior.yaml),
-/// ~rate (Hz, default: the file's rate, 60), ~seed (default 1) and ~bumper_timeout (s of ROS time
-/// without /bumper before the node stops the robot, default 0.5).
+/// Parameters (read strictly, written back while the node runs, unknown ones warned about:
+/// NodeParams): ~config_file (default $(rospack find roomba_rrt)/config/roomba_behavior.yaml),
+/// ~rate (Hz, default: the file's rate, 60), ~seed (default 1), ~bumper_timeout (s of ROS time
+/// without /bumper before the node stops the robot, default 0.5) and ~base_frame.
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
                     const BehaviorMaker& make_behavior);
 

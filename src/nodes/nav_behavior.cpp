@@ -283,8 +283,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
   behavior::Path last_plan_;
 };
 
-double finiteParam(ros::NodeHandle& pnh, const std::string& name, double fallback, double min) {
-  const double value = pnh.param(name, fallback);
+double finiteParam(nodes::NodeParams& params, const std::string& name, double fallback,
+                   double min) {
+  const double value = params.get(name, fallback);
   if (!(std::isfinite(value) && value >= min)) {
     throw std::invalid_argument("~" + name + " must be a finite number >= " + std::to_string(min) +
                                 ", got " + std::to_string(value));
@@ -294,19 +295,20 @@ double finiteParam(ros::NodeHandle& pnh, const std::string& name, double fallbac
 
 }  // namespace
 
-std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
+std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& node_params,
                                                           const behavior::RoombaParams& params,
                                                           std::uint32_t seed,
                                                           const std::string& tree_file) {
   Settings s;
   const std::string world_file =
-      pnh.param<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
+      node_params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   s.world = sim::loadWorld(world_file);
-  s.clearance = finiteParam(pnh, "clearance", 0.05, 0.0);
-  s.global_frame = pnh.param<std::string>("global_frame", s.global_frame);
-  s.robot_frame = pnh.param<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
-  const std::string planner = pnh.param<std::string>("planner", "service");
-  const std::string service = pnh.param<std::string>("plan_path_service", "/rrt_planner/plan_path");
+  s.clearance = finiteParam(node_params, "clearance", 0.05, 0.0);
+  s.global_frame = node_params.get<std::string>("global_frame", s.global_frame);
+  s.robot_frame = node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
+  const std::string planner = node_params.get<std::string>("planner", "service");
+  const std::string service =
+      node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");
 
   const behavior::NavWorld world = behavior::navWorldFrom(s.world, s.clearance);
   planning::PlannerOptions options = behavior::defaultNavPlannerOptions();
@@ -329,11 +331,12 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& pnh,
   behavior::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
   using L = behavior::FollowerLimits;  // also cfg/NavFollower.cfg's minimum; validate() the maxima
-  f.max_linear_speed = finiteParam(pnh, "max_linear_speed", f.max_linear_speed, L::kMin);
-  f.max_angular_speed = finiteParam(pnh, "max_angular_speed", f.max_angular_speed, L::kMin);
-  f.xy_tolerance = finiteParam(pnh, "xy_tolerance", f.xy_tolerance, L::kMin);
-  f.yaw_tolerance = finiteParam(pnh, "yaw_tolerance", f.yaw_tolerance, L::kMin);
+  f.max_linear_speed = finiteParam(node_params, "max_linear_speed", f.max_linear_speed, L::kMin);
+  f.max_angular_speed = finiteParam(node_params, "max_angular_speed", f.max_angular_speed, L::kMin);
+  f.xy_tolerance = finiteParam(node_params, "xy_tolerance", f.xy_tolerance, L::kMin);
+  f.yaw_tolerance = finiteParam(node_params, "yaw_tolerance", f.yaw_tolerance, L::kMin);
   behavior::validate(f);
+  node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
   ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
            planner == "service" ? (" (" + service + ")").c_str() : "");
   return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s));

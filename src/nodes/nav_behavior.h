@@ -10,6 +10,7 @@
 
 #include <ros/ros.h>
 
+#include "node_params.h"
 #include "roomba_rrt/behavior/roomba_behavior.h"
 
 namespace roomba_rrt::nav_node {
@@ -20,7 +21,7 @@ namespace roomba_rrt::nav_node {
 /// <ns>/base_link in a namespace: a named robot of roomba_sim), ~max_linear_speed,
 /// ~max_angular_speed, ~xy_tolerance, ~yaw_tolerance. std::invalid_argument naming the
 /// parameter when one is invalid.
-std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(ros::NodeHandle& private_nh,
+std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& node_params,
                                                           const behavior::RoombaParams& params,
                                                           std::uint32_t seed,
                                                           const std::string& tree_file);

@@ -9,12 +9,23 @@
 #include <exception>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <boost/thread/recursive_mutex.hpp>
 
 namespace roomba_rrt::nodes {
+
+/// The names of `Config`'s parameters (the server writes them into its namespace).
+template <class Config>
+std::vector<std::string> parameterNames() {
+  std::vector<std::string> names;
+  for (const auto& description : Config::__getParamDescriptions__()) {
+    names.push_back(description->name);
+  }
+  return names;
+}
 
 template <class Config>
 class Reconfigure {
@@ -26,12 +37,32 @@ class Reconfigure {
   /// Serves the parameters of `Config` on `nh`'s namespace (the node's private one, or
   /// ~follower), starting from `in_force`.
   Reconfigure(const ros::NodeHandle& nh, const Config& in_force, Apply apply)
-      : server_(mutex_, nh), in_force_(in_force), apply_(std::move(apply)) {
+      : nh_(nh),
+        fresh_(absent(nh)),
+        server_(mutex_, nh),
+        in_force_(in_force),
+        apply_(std::move(apply)) {
     server_.updateConfig(in_force_);
     server_.setCallback([this](Config& requested, std::uint32_t) { onRequest(requested); });
   }
 
+  /// The server writes every parameter into its namespace; those that were not set before are
+  /// deleted again, so that none is left on the master to override the next start's values.
+  ~Reconfigure() {
+    for (const std::string& name : fresh_) nh_.deleteParam(name);
+  }
+  Reconfigure(const Reconfigure&) = delete;
+  Reconfigure& operator=(const Reconfigure&) = delete;
+
  private:
+  static std::vector<std::string> absent(const ros::NodeHandle& nh) {
+    std::vector<std::string> names;
+    for (const std::string& name : parameterNames<Config>()) {
+      if (!nh.hasParam(name)) names.push_back(name);
+    }
+    return names;
+  }
+
   void onRequest(Config& requested) {
     if (!started_) {  // setCallback's first call hands back the values in force
       started_ = true;
@@ -47,7 +78,9 @@ class Reconfigure {
     }
   }
 
-  boost::recursive_mutex mutex_;  // given to the server: updateConfig() takes it
+  ros::NodeHandle nh_;
+  std::vector<std::string> fresh_;  ///< not set before the server wrote them
+  boost::recursive_mutex mutex_;    ///< given to the server: updateConfig() takes it
   dynamic_reconfigure::Server<Config> server_;
   Config in_force_;
   Apply apply_;

@@ -5,7 +5,8 @@
 int main(int argc, char** argv) {
   using roomba_rrt::behavior::RoombaFsm;
   return roomba_rrt::nodes::runBehaviorNode(
-      argc, argv, "roomba_fsm", [](ros::NodeHandle&, const auto& params, std::uint32_t seed) {
+      argc, argv, "roomba_fsm",
+      [](roomba_rrt::nodes::NodeParams&, const auto& params, std::uint32_t seed) {
         return std::make_unique<RoombaFsm>(params, seed);
       });
 }

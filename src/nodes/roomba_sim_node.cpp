@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "master_watch.h"
+#include "node_params.h"
 #include "reconfigure.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/world.h"
@@ -54,13 +55,14 @@ constexpr Seconds kMaxLag(0.25);             // behind schedule before the sched
 constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 
 /// Reads the world file, then lets every scalar be overridden by a private parameter of the same
-/// path (~real_time_factor, ~initial_pose/x, ~robot/radius, ...). Nothing is written back: a
-/// value pinned on the master would silently override the file on the next start.
-/// Throws std::invalid_argument naming the bad parameter.
-World loadWorldParameters(const ros::NodeHandle& pnh) {
+/// path (~real_time_factor, ~initial_pose/x, ~robot/radius, ...). The values in force are written
+/// back while the node runs (NodeParams deletes those the user did not set when it exits, so that
+/// none is left pinned to override the next world file). Throws std::invalid_argument naming the
+/// bad parameter.
+World loadWorldParameters(nodes::NodeParams& params) {
   const std::string default_file =
       ros::package::getPath("roomba_rrt") + "/config/roomba_world.yaml";
-  World world = sim::loadWorld(pnh.param<std::string>("world_file", default_file));
+  World world = sim::loadWorld(params.get<std::string>("world_file", default_file));
   const std::vector<std::pair<const char*, double*>> overrides = {
       {"room/width", &world.width},
       {"room/height", &world.height},
@@ -75,13 +77,13 @@ World loadWorldParameters(const ros::NodeHandle& pnh) {
       {"command_timeout", &world.command_timeout},
       {"real_time_factor", &world.real_time_factor},
   };
-  for (const auto& [name, value] : overrides) {
-    if (pnh.hasParam(name) && !pnh.getParam(name, *value)) {
-      throw std::invalid_argument(std::string("~") + name + " must be a number");
-    }
-  }
-  if (!world.robots.empty() && pnh.hasParam("initial_pose")) {
+  if (!world.robots.empty() && params.has("initial_pose")) {
     throw std::invalid_argument("~initial_pose cannot be used with the world file's robots");
+  }
+  for (const auto& [name, value] : overrides) {
+    // With named robots the initial poses are the robots' own: nothing to show or override.
+    const bool applies = world.robots.empty() || std::string(name).rfind("initial_pose/", 0) != 0;
+    if (applies) *value = params.get(name, *value);
   }
   sim::validate(world);
   return world;
@@ -316,9 +318,10 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "roomba_sim");
   ros::NodeHandle pnh("~");
   const bool use_sim_time = ros::param::param("/use_sim_time", false);
+  roomba_rrt::nodes::NodeParams params(pnh);
   roomba_rrt::sim::World world;
   try {
-    world = roomba_rrt::loadWorldParameters(pnh);
+    world = roomba_rrt::loadWorldParameters(params);
   } catch (const std::invalid_argument& e) {
     ROS_FATAL("roomba_sim: invalid world: %s", e.what());
     return 1;
@@ -329,6 +332,10 @@ int main(int argc, char** argv) {
   }
   roomba_rrt::nodes::MasterWatch master_watch;
   roomba_rrt::RoombaSimNode node(world, use_sim_time);
+  for (const std::string& name : roomba_rrt::nodes::parameterNames<roomba_rrt::RoombaSimConfig>()) {
+    params.expect(name);  // dynamic_reconfigure's (cfg/RoombaSim.cfg)
+  }
+  params.warnUnknown();
   ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s, %s", world.width,
            world.height, world.circles.size() + world.rectangles.size(),
            std::max<std::size_t>(1, world.robots.size()), world.robots.size() > 1 ? "s" : "",

@@ -11,11 +11,13 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
+#include "node_params.h"
 #include "roomba_rrt/Bumper.h"
 #include "roomba_rrt/teleop/keyboard_teleop.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -86,22 +88,28 @@ void show(const std::string& line) {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "roomba_teleop", ros::init_options::NoSigintHandler);
+  ros::NodeHandle nh, pnh("~");
+  roomba_rrt::nodes::NodeParams params(pnh);
+  teleop::TeleopLimits limits;
+  try {
+    limits.max_linear_speed = params.get("max_linear_speed", limits.max_linear_speed);
+    limits.max_angular_speed = params.get("max_angular_speed", limits.max_angular_speed);
+    limits.linear_step = params.get("linear_step", limits.linear_step);
+    limits.angular_step = params.get("angular_step", limits.angular_step);
+    try {
+      teleop::validate(limits);
+    } catch (const roomba_rrt::util::InvalidInput& e) {
+      throw std::invalid_argument(std::string("~") + e.what());
+    }
+  } catch (const std::invalid_argument& e) {
+    ROS_FATAL("roomba_teleop: %s", e.what());
+    return 1;
+  }
+  params.warnUnknown();
   if (!isatty(STDIN_FILENO)) {
     ROS_FATAL(
         "roomba_teleop reads the keyboard: run it in a terminal of its own (rosrun roomba_rrt "
         "roomba_teleop), not with its input redirected or from a launch file without a terminal");
-    return 1;
-  }
-  ros::NodeHandle nh, pnh("~");
-  teleop::TeleopLimits limits;
-  pnh.param("max_linear_speed", limits.max_linear_speed, limits.max_linear_speed);
-  pnh.param("max_angular_speed", limits.max_angular_speed, limits.max_angular_speed);
-  pnh.param("linear_step", limits.linear_step, limits.linear_step);
-  pnh.param("angular_step", limits.angular_step, limits.angular_step);
-  try {
-    teleop::validate(limits);
-  } catch (const roomba_rrt::util::InvalidInput& e) {
-    ROS_FATAL("roomba_teleop: parameter ~%s", e.what());
     return 1;
   }
 

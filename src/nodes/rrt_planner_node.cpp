@@ -30,6 +30,7 @@
 #include <roomba_rrt/planning/planner.h>
 
 #include "master_watch.h"
+#include "node_params.h"
 #include "plan_slots.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
@@ -37,28 +38,18 @@
 namespace roomba_rrt::planner_node {
 namespace {
 
-// A private parameter, or `fallback` when it is not set; a value of the wrong type is an error
-// (never silently replaced by the default).
-template <typename T>
-T param(const ros::NodeHandle& pnh, const std::string& name, const T& fallback) {
-  if (!pnh.hasParam(name)) return fallback;
-  T value;
-  if (!pnh.getParam(name, value)) throw std::invalid_argument("~" + name + ": wrong type");
-  return value;
-}
-
-planning::Point2 pointParam(const ros::NodeHandle& pnh, const std::string& name,
+planning::Point2 pointParam(nodes::NodeParams& pnh, const std::string& name,
                             const planning::Point2& fallback) {
-  const auto xy = param(pnh, name, std::vector<double>{fallback.x, fallback.y});
+  const auto xy = pnh.get(name, std::vector<double>{fallback.x, fallback.y});
   if (xy.size() != 2) throw std::invalid_argument("~" + name + ": expected [x, y]");
   return {xy[0], xy[1]};
 }
 
 // A choice given by name ("rrt", "segments", ...), parsed by the library.
 template <typename Enum>
-Enum enumParam(const ros::NodeHandle& pnh, const std::string& name, Enum fallback,
+Enum enumParam(nodes::NodeParams& pnh, const std::string& name, Enum fallback,
                std::optional<Enum> (*parse)(const std::string&)) {
-  const auto text = param<std::string>(pnh, name, planning::toString(fallback));
+  const auto text = pnh.get<std::string>(name, planning::toString(fallback));
   const std::optional<Enum> value = parse(text);
   if (!value) throw std::invalid_argument("~" + name + ": unknown '" + text + "'");
   return *value;
@@ -84,30 +75,30 @@ constexpr double kDefaultMaxPlanningTime = 5.0;
 
 // The node's defaults for every request field left at zero or empty. The code's fallbacks are
 // the library's (the lab's) values; config/rrt_planner.yaml spells them out.
-NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
+NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
   NodeDefaults d;
   d.start = pointParam(pnh, "start", d.start);
   d.goal = pointParam(pnh, "goal", d.goal);
-  d.bounds.x_min = param(pnh, "x_min", d.bounds.x_min);
-  d.bounds.x_max = param(pnh, "x_max", d.bounds.x_max);
-  d.bounds.y_min = param(pnh, "y_min", d.bounds.y_min);
-  d.bounds.y_max = param(pnh, "y_max", d.bounds.y_max);
+  d.bounds.x_min = pnh.get("x_min", d.bounds.x_min);
+  d.bounds.x_max = pnh.get("x_max", d.bounds.x_max);
+  d.bounds.y_min = pnh.get("y_min", d.bounds.y_min);
+  d.bounds.y_max = pnh.get("y_max", d.bounds.y_max);
   planning::PlannerOptions& o = d.options;
-  o.step = param(pnh, "step", o.step);
-  o.goal_bias = param(pnh, "goal_bias", o.goal_bias);
-  o.max_iterations = param(pnh, "max_iterations", o.max_iterations);
-  o.goal_tolerance = param(pnh, "goal_tolerance", o.goal_tolerance);
-  const int seed = param(pnh, "seed", static_cast<int>(o.seed));
+  o.step = pnh.get("step", o.step);
+  o.goal_bias = pnh.get("goal_bias", o.goal_bias);
+  o.max_iterations = pnh.get("max_iterations", o.max_iterations);
+  o.goal_tolerance = pnh.get("goal_tolerance", o.goal_tolerance);
+  const int seed = pnh.get("seed", static_cast<int>(o.seed));
   if (seed < 0) throw std::invalid_argument("~seed: must be >= 0");
   o.seed = static_cast<std::uint32_t>(seed);
-  o.smooth = param(pnh, "smooth", o.smooth);
+  o.smooth = pnh.get("smooth", o.smooth);
   o.algorithm = enumParam(pnh, "algorithm", o.algorithm, planning::parseAlgorithm);
   o.collision = enumParam(pnh, "collision_check", o.collision, planning::parseCollisionCheck);
   o.nearest = enumParam(pnh, "nearest", o.nearest, planning::parseNearestSearch);
-  d.robot_radius = param(pnh, "robot_radius", d.robot_radius);
-  d.clearance = param(pnh, "clearance", d.clearance);
-  o.max_planning_time = param(pnh, "max_planning_time", kDefaultMaxPlanningTime);
-  d.max_iterations_cap = param(pnh, "max_iterations_cap", d.max_iterations_cap);
+  d.robot_radius = pnh.get("robot_radius", d.robot_radius);
+  d.clearance = pnh.get("clearance", d.clearance);
+  o.max_planning_time = pnh.get("max_planning_time", kDefaultMaxPlanningTime);
+  d.max_iterations_cap = pnh.get("max_iterations_cap", d.max_iterations_cap);
   // planning::plan() validates again with the library's own cap, so it bounds ours.
   if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
     throw std::invalid_argument("~max_iterations_cap: must be in [1, " +
@@ -120,16 +111,16 @@ NodeDefaults loadDefaults(const ros::NodeHandle& pnh) {
   }
   // Scenario "room": the simulator's world file (its room, furniture and robot radius).
   const std::string package = ros::package::getPath("roomba_rrt");
-  const std::string world_file = param<std::string>(
-      pnh, "world_file", package.empty() ? "" : package + "/config/roomba_world.yaml");
+  const std::string world_file = pnh.get<std::string>(
+      "world_file", package.empty() ? "" : package + "/config/roomba_world.yaml");
   if (!world_file.empty()) d.room = planning::loadRoom(world_file);  // throws with the reason
   return d;
 }
 
 // ~threads: plans at once, in [1, kMaxThreads]; 1 is raised to 2.
-int threadsParam(const ros::NodeHandle& pnh) {
+int threadsParam(nodes::NodeParams& pnh) {
   constexpr int kMaxThreads = 64;
-  const int threads = param(pnh, "threads", 4);
+  const int threads = pnh.get("threads", 4);
   if (threads < 1 || threads > kMaxThreads) {
     throw std::invalid_argument("~threads: must be in [1, " + std::to_string(kMaxThreads) +
                                 "] (got " + std::to_string(threads) + ")");
@@ -139,20 +130,20 @@ int threadsParam(const ros::NodeHandle& pnh) {
 
 class RrtPlannerNode {
  public:
-  explicit RrtPlannerNode(ros::NodeHandle& pnh)
-      : defaults_(std::make_shared<const NodeDefaults>(loadDefaults(pnh))),
-        slots_(threadsParam(pnh)) {
+  RrtPlannerNode(ros::NodeHandle& pnh, nodes::NodeParams& params)
+      : defaults_(std::make_shared<const NodeDefaults>(loadDefaults(params))),
+        slots_(threadsParam(params)) {
     const std::string package = ros::package::getPath("roomba_rrt");
-    const std::string scenarios_file = param<std::string>(
-        pnh, "scenarios_file",
+    const std::string scenarios_file = params.get<std::string>(
+        "scenarios_file",
         package.empty() ? ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"  // not on ROS_PACKAGE_PATH
                         : package + "/config/rrt_scenarios.yaml");
     scenarios_ = planning::loadScenarios(scenarios_file);  // throws with the reason
-    frame_id_ = param<std::string>(pnh, "frame_id", "map");
-    max_marker_nodes_ = param(pnh, "max_marker_nodes", 200000);
-    animate_ = param(pnh, "animate", false);
-    animate_every_ = param(pnh, "animate_every", 10);
-    const double animate_rate = param(pnh, "animate_rate", 20.0);
+    frame_id_ = params.get<std::string>("frame_id", "map");
+    max_marker_nodes_ = params.get("max_marker_nodes", 200000);
+    animate_ = params.get("animate", false);
+    animate_every_ = params.get("animate_every", 10);
+    const double animate_rate = params.get("animate_rate", 20.0);
     // Documented ranges (doc/nodes.md): outside them the node stops at start naming the parameter.
     if (max_marker_nodes_ < 0 || max_marker_nodes_ > planning::kDefaultMaxIterationsCap) {
       throw std::invalid_argument("~max_marker_nodes: must be in [0, " +
@@ -313,7 +304,9 @@ int main(int argc, char** argv) {
   ros::NodeHandle pnh("~");
   roomba_rrt::nodes::MasterWatch master_watch;
   try {
-    roomba_rrt::planner_node::RrtPlannerNode node(pnh);
+    roomba_rrt::nodes::NodeParams params(pnh);
+    roomba_rrt::planner_node::RrtPlannerNode node(pnh, params);
+    params.warnUnknown();
     // Several threads: each request is planned in its own callback, so a long plan leaves the
     // other threads free to accept and answer further requests. Two threads more than plans may
     // run at once answer "busy" while every planning thread is taken.

@@ -36,6 +36,51 @@ refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1
 
+# Issue 22, item 3: a value of the wrong type is refused naming the parameter (never the default).
+refuses "~rate: must be a number, got 'fast' (a string)" roomba_fsm _rate:=fast
+refuses "~seed: must be an integer, got 'abc' (a string)" roomba_bt _seed:=abc
+refuses "~real_time_factor: must be a number, got 'fast' (a string)" roomba_sim _real_time_factor:=fast
+refuses "~step: must be a number, got 'big' (a string)" rrt_planner _step:=big
+refuses "~max_linear_speed: must be a number, got 'x' (a string)" roomba_teleop _max_linear_speed:=x
+
+# An unknown private parameter is warned about, with the nearest known name; the values in force
+# are on the master while the node runs (rosparam get) and gone after it stops, unless the user
+# set them.
+warns_and_writes_back() {  # NODE PARAMS...: runs NODE for 3 s
+  local node=$1
+  shift
+  rosparam delete "/$node" 2>/dev/null || true
+  rosrun roomba_rrt "$node" "$@" >"$work/out" 2>&1 &
+  local pid=$!
+  for _ in $(seq 50); do rosparam get "/$node/$probe" >/dev/null 2>&1 && break; sleep 0.1; done
+  local value
+  value=$(rosparam get "/$node/$probe" 2>/dev/null || echo unset)
+  kill -INT "$pid"
+  wait "$pid" || true
+  if [ "$value" = "$expected" ]; then
+    say "ok: $node shows ~$probe = $value while running"
+  else
+    say "FAIL: $node: rosparam get /$node/$probe gave '$value', wanted '$expected'"
+    failures=$((failures + 1))
+  fi
+  if rosparam get "/$node/$probe" >/dev/null 2>&1; then
+    say "FAIL: $node left ~$probe on the master"; failures=$((failures + 1))
+  else
+    say "ok: $node removed ~$probe when it stopped"
+  fi
+  if grep -qF "$warning" "$work/out"; then
+    say "ok: $node warns '$warning'"
+  else
+    say "FAIL: $node does not warn '$warning':"; cat "$work/out"; failures=$((failures + 1))
+  fi
+}
+probe=room/width expected=6.4 warning="~real_time_factr is not a parameter of this node (did you mean ~real_time_factor?)" \
+  warns_and_writes_back roomba_sim _real_time_factr:=2
+probe=rate expected=60.0 warning="~sed is not a parameter of this node (did you mean ~seed?)" \
+  warns_and_writes_back roomba_fsm _sed:=3
+probe=goal_bias expected=0.1 warning="~stepp is not a parameter of this node (did you mean ~step?)" \
+  warns_and_writes_back rrt_planner _stepp:=0.3
+
 stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends it within 1 s
   rosparam delete "/$1" 2>/dev/null || true
   rosrun roomba_rrt "$@" >"$work/out" 2>&1 &
