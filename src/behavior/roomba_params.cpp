@@ -6,6 +6,7 @@
 #include <map>
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
+#include "roomba_rrt/util/yaml_reader.h"
 
 namespace roomba_rrt::behavior {
 namespace {
@@ -59,7 +60,7 @@ RoombaParams parseRoombaParams(const std::string& yaml_text, const std::string& 
       {"spiral_factor", &p.spiral_factor},
       {"rate", &p.rate}};
   try {
-    const YAML::Node root = YAML::Load(yaml_text);
+    const YAML::Node root = util::parseYaml(yaml_text);
     if (root.IsNull()) return p;  // an empty file keeps every default
     if (!root.IsMap()) throw InvalidInput("", "the top level must be a map of parameters");
     for (const auto& entry : root) {

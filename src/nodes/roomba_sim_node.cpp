@@ -62,7 +62,15 @@ constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 World loadWorldParameters(nodes::NodeParams& params) {
   const std::string default_file =
       ros::package::getPath("roomba_rrt") + "/config/roomba_world.yaml";
-  World world = sim::loadWorld(params.get<std::string>("world_file", default_file));
+  const std::string world_file = params.get<std::string>("world_file", default_file);
+  World world = sim::loadWorld(world_file);
+  // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
+  const std::string notice = sim::defaultsNotice(world, world_file);
+  if (world.defaulted_sections.size() == 4) {
+    ROS_WARN("roomba_sim: %s", notice.c_str());
+  } else if (!notice.empty()) {
+    ROS_INFO("roomba_sim: %s", notice.c_str());
+  }
   const std::vector<std::pair<const char*, double*>> overrides = {
       {"room/width", &world.width},
       {"room/height", &world.height},

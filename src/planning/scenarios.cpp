@@ -6,9 +6,13 @@
 
 #include "roomba_rrt/sim/world.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/text_file.h"
+#include "roomba_rrt/util/yaml_reader.h"
 
 namespace roomba_rrt::planning {
 namespace {
+
+constexpr std::size_t kMaxScenarioFileBytes = 1 << 20;  // a scenario file is at most 1 MiB
 
 [[noreturn]] void fail(const std::string& file, const std::string& field, const std::string& why) {
   throw util::InvalidInput(field, why, file);
@@ -40,9 +44,9 @@ Bounds readBounds(const YAML::Node& node, const std::string& file, const std::st
 std::map<std::string, Problem> loadScenarios(const std::string& path) {
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw util::InvalidInput("", std::string("cannot read scenarios: ") + e.what(), path);
+    root = util::parseYaml(util::readTextFile(path, kMaxScenarioFileBytes, "scenario file"));
+  } catch (const util::InvalidInput& e) {
+    throw e.source().empty() ? e.in(path) : e;
   }
   std::map<std::string, Problem> scenarios;
   try {

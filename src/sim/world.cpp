@@ -13,6 +13,7 @@
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
+#include "roomba_rrt/util/yaml_reader.h"
 
 namespace roomba_rrt::sim {
 
@@ -107,6 +108,10 @@ void readList(Section& parent, const std::string& key, std::vector<Item>& items,
 World readWorld(const YAML::Node& root) {
   World world;
   Section top(root, "");
+  for (const char* section : {"room", "furniture", "robot", "initial_pose"}) {
+    const YAML::Node node = root.IsMap() ? root[section] : YAML::Node();
+    if (!node || node.IsNull()) world.defaulted_sections.push_back(section);
+  }
   {
     Section room(top.child("room"), "room");
     room.read("width", world.width);
@@ -317,9 +322,9 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
   }
   YAML::Node root;
   try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw InvalidInput("", std::string("not valid YAML: ") + e.what(), source);
+    root = util::parseYaml(yaml_text);
+  } catch (const InvalidInput& e) {
+    throw e.in(source);
   }
   return buildWorld(root, source);
 }
@@ -327,6 +332,34 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
 World loadWorld(const std::string& yaml_path) {
   return parseWorld(util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file"),
                     yaml_path);
+}
+
+std::string defaultsNotice(const World& world, const std::string& source) {
+  std::string sections, keys;
+  const auto add = [&keys](const std::string& key, double value) {
+    keys += (keys.empty() ? "" : ", ") + key + " " + util::show(value);
+  };
+  for (const std::string& section : world.defaulted_sections) {
+    if (section == "initial_pose" && !world.robots.empty()) continue;  // each robot has its own
+    sections += (sections.empty() ? "" : ", ") + section;
+    if (section == "room") {
+      add("room.width", world.width);
+      add("room.height", world.height);
+    } else if (section == "furniture") {
+      keys += std::string(keys.empty() ? "" : ", ") + "no furniture";
+    } else if (section == "robot") {
+      add("robot.radius", world.robot_radius);
+      add("robot.max_linear_speed", world.max_linear_speed);
+      add("robot.max_angular_speed", world.max_angular_speed);
+    } else if (section == "initial_pose") {
+      add("initial_pose.x", world.initial_pose.x);
+      add("initial_pose.y", world.initial_pose.y);
+      add("initial_pose.theta", world.initial_pose.theta);
+    }
+  }
+  return sections.empty()
+             ? ""
+             : source + " sets no " + sections + ": the defaults are used (" + keys + ")";
 }
 
 }  // namespace roomba_rrt::sim

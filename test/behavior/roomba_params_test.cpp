@@ -51,6 +51,9 @@ TEST(RoombaParams, errors_name_the_source_and_the_field) {
             "test.yaml: backward_speed: must be in [-100, 0) (it drives backwards), got 0.1");
   EXPECT_EQ(errorOf("rate: .nan"), "test.yaml: rate: must be finite, got nan");
   EXPECT_EQ(errorOf("[1, 2]"), "test.yaml: the top level must be a map of parameters");
+  EXPECT_EQ(errorOf("forward_speed: 0.3\nforward_speed: 0.4\n"),
+            "test.yaml: forward_speed: is given twice (lines 1 and 2); a mapping holds one "
+            "value per key");
 }
 
 // Issue 11: a rate of 1e9 froze the node, 1e308 flooded /cmd_vel, 1e-300 died with a message

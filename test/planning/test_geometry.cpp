@@ -72,6 +72,18 @@ TEST(Scenarios, a_malformed_file_is_an_error_naming_the_field) {
     EXPECT_EQ(std::string(e.what()), path + ": scenarios.x.start: expected [x, y]");
   }
   EXPECT_THROW(loadScenarios("/nonexistent/scenarios.yaml"), util::InvalidInput);
+  f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("scenarios:\n  x: {start: [1, 1], goal: [2, 2]}\n  x: {start: [1, 1]}\n", f);
+  std::fclose(f);
+  try {
+    loadScenarios(path);
+    FAIL() << "a scenario given twice was read";
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), path +
+                                         ": scenarios.x: is given twice (lines 2 and 3); a "
+                                         "mapping holds one value per key");
+  }
 }
 
 TEST(Geometry, checker_quick_test_gives_the_exact_test_answer_for_segments_grazing_a_disc) {

@@ -236,3 +236,31 @@ TEST(World, bad_robot_lists_are_named) {
   EXPECT_NE(errorFor("initial_pose: {x: 1, y: 1}\nrobots:\n" + a).find("initial_pose: cannot"),
             std::string::npos);
 }
+
+// Issue 20, item 3: YAML's duplicate keys would slip past the "unknown keys are errors" rule.
+TEST(World, a_key_given_twice_is_refused_naming_it_and_both_lines) {
+  EXPECT_EQ(errorFor("robot:\n  radius: 0.17\nroom: {width: 5}\nrobot:\n  radious: 0.2\n"),
+            "test.yaml: robot: is given twice (lines 1 and 4); a mapping holds one value per key");
+  EXPECT_EQ(errorFor("room:\n  width: 5\n  width: 6\n"),
+            "test.yaml: room.width: is given twice (lines 2 and 3); a mapping holds one value "
+            "per key");
+  EXPECT_EQ(errorFor("furniture:\n  circles:\n    - {x: 1, y: 1, radius: 0.2, x: 2}\n"),
+            "test.yaml: furniture.circles[0].x: is given twice (lines 3 and 3); a mapping holds "
+            "one value per key");
+}
+
+TEST(World, a_file_that_sets_no_section_says_which_defaults_it_runs_with) {
+  const World empty = parseWorld("# truncated to a comment\n", "cut.yaml");
+  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(empty, "cut.yaml"),
+            "cut.yaml sets no room, furniture, robot, initial_pose: the defaults are used "
+            "(room.width 6.4, room.height 4.8, no furniture, robot.radius 0.17, "
+            "robot.max_linear_speed 1, robot.max_angular_speed 2, initial_pose.x 3.2, "
+            "initial_pose.y 2.4, initial_pose.theta 0)");
+  const World furnished =
+      roomba_rrt::sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(furnished, "f.yaml"), "");
+  const World robot_only = parseWorld("robot: {radius: 0.2}\nroom: {width: 6}\n", "r.yaml");
+  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(robot_only, "r.yaml"),
+            "r.yaml sets no furniture, initial_pose: the defaults are used (no furniture, "
+            "initial_pose.x 3.2, initial_pose.y 2.4, initial_pose.theta 0)");
+}

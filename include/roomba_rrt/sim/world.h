@@ -51,6 +51,10 @@ struct World {
   /// Named robots (`robots:` in YAML). Empty: one unnamed robot with the fields above, exactly
   /// the lab's simulation. When given, `initial_pose` is not used.
   std::vector<RobotSpec> robots;
+
+  /// The sections (room, furniture, robot, initial_pose) the world file did not set at all, in
+  /// that order: their keys have the defaults above (see defaultsNotice()).
+  std::vector<std::string> defaulted_sections;
 };
 
 /// The supported ranges (validate() refuses anything outside them, naming the parameter). They
@@ -91,5 +95,10 @@ World loadWorld(const std::string& yaml_path);
 
 /// Same as loadWorld, from YAML text (used by tests); `source` names it in error messages.
 World parseWorld(const std::string& yaml_text, const std::string& source = "<string>");
+
+/// What a world read from `source` took from the defaults, for the node to say at start-up:
+/// "world.yaml sets no room, robot: room.width 6.4, room.height 4.8, robot.radius 0.17, ...",
+/// or "" when the file set every section.
+std::string defaultsNotice(const World& world, const std::string& source);
 
 }  // namespace roomba_rrt::sim
