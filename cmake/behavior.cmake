@@ -124,6 +124,7 @@ endif()
 find_package(Threads REQUIRED)
 add_library(roomba_nav_core
   src/behavior/path_follower.cpp
+  src/behavior/motion_guard.cpp
   src/behavior/path_planner.cpp
   src/behavior/nav_leaves.cpp
   src/behavior/nav_bt.cpp
@@ -161,6 +162,15 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(nav_core_test roomba_nav_core gtest_main)
     target_compile_definitions(nav_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+  # 12 000 goals in three rooms (about 30 s): its own test, so the quick ones stay quick.
+  catkin_add_gtest(bump_free_navigation_test test/behavior/bump_free_navigation_test.cpp
+    TIMEOUT 600)
+  if(TARGET bump_free_navigation_test)
+    target_link_libraries(bump_free_navigation_test roomba_nav_core gtest_main)
+    target_compile_definitions(bump_free_navigation_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
+      ROOMBA_RRT_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test")
   endif()
   # roomba_bt's navigation conversions, without a master.
   catkin_add_gtest(nav_ros_test test/behavior/nav_ros_test.cpp src/nodes/nav_ros.cpp)

@@ -80,6 +80,7 @@ NavLeafConfig inProcessNavConfig(const NavWorld& world, const planning::PlannerO
   };
   config.checker =
       std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
+  config.known_world = world;
   return config;
 }
 

@@ -215,6 +215,7 @@ NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tre
   };
   config.checker = std::make_shared<InProcessPlanner>(nav_world, planner_options,
                                                       InProcessPlanner::Mode::kInline);
+  config.known_world = nav_world;
   config.params.rate = 1.0 / world.step;
   config.follower.rate = config.params.rate;
   NavBt nav(config, options.seed, tree_file);

@@ -1,5 +1,9 @@
 #include "roomba_rrt/behavior/nav_leaves.h"
 
+#include "roomba_rrt/behavior/motion_guard.h"
+#include "roomba_rrt/sim/unicycle.h"
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -156,8 +160,10 @@ class FollowPath final : public NavLeaf {
             inputPort<sim::Pose2D>("pose", "the robot's pose"),
             outputPort<std::string>("error", "why following failed", "{error}")};
   }
-  FollowPath(const NodeSpec& spec, NavContext& context, const FollowerParams& params)
+  FollowPath(const NodeSpec& spec, NavContext& context, const FollowerParams& params,
+             std::shared_ptr<const MotionGuard> guard)
       : NavLeaf(spec.name, context),
+        guard_(std::move(guard)),
         path_(spec.input<Path>("path")),
         goal_(spec.input<sim::Pose2D>("goal")),
         pose_(spec.input<sim::Pose2D>("pose")),
@@ -165,7 +171,10 @@ class FollowPath final : public NavLeaf {
         follower_(params) {}
 
  private:
-  void onEnter() override { path_writes_ = 0; }
+  void onEnter() override {
+    path_writes_ = 0;
+    held_ticks_ = 0;
+  }
   Status onTick() override {
     const Path* path = path_.get();
     const sim::Pose2D* goal = goal_.get();
@@ -189,7 +198,17 @@ class FollowPath final : public NavLeaf {
     sim::Velocity cmd;
     switch (follower_.step(*pose, cmd)) {
       case FollowStatus::kFollowing:
-        context_.cmd = cmd;
+        context_.cmd = guard_ ? guarded(*pose, cmd) : cmd;
+        // Held still by the guard for half a second: this path cannot be followed from here
+        // without touching something; fail so that the recovery replans from where the robot is.
+        held_ticks_ =
+            (cmd.v != 0 && context_.cmd.v == 0 && context_.cmd.w == 0) ? held_ticks_ + 1 : 0;
+        if (held_ticks_ > kMaxHeldTicks) {
+          held_ticks_ = 0;
+          context_.cmd = {};
+          error_.set("blocked: following the path would touch a known obstacle");
+          return Status::kFailure;
+        }
         report();
         return Status::kRunning;
       case FollowStatus::kArrived:
@@ -208,6 +227,26 @@ class FollowPath final : public NavLeaf {
     return Status::kFailure;
   }
 
+  /// The follower's command if the guard lets it pass. Otherwise pure pursuit is cutting a
+  /// corner too close to something: aim at the path just ahead instead (following it closely,
+  /// as it keeps its clearance), turning in place first, then driving slowly if the guard agrees.
+  sim::Velocity guarded(const sim::Pose2D& pose, const sim::Velocity& cmd) const {
+    const sim::Velocity safe = guard_->filter(pose, cmd);
+    if (cmd.v == 0 || safe.v != 0) return safe;
+    const FollowerParams& p = follower_.params();
+    const planning::Point2 near = follower_.pointAhead(kCloseLookahead);
+    const double error = sim::wrapAngle(std::atan2(near.y - pose.y, near.x - pose.x) - pose.theta);
+    const double w = std::clamp(p.heading_gain * error, -p.max_angular_speed, p.max_angular_speed);
+    if (std::fabs(error) > kAligned) return {0, w};
+    return guard_->filter(pose, {std::copysign(kCreepSpeed, cmd.v), w});
+  }
+
+  static constexpr double kCloseLookahead = 0.05;  ///< m: the path just ahead, when guarded
+  static constexpr double kAligned = 0.15;         ///< rad: facing it closely enough to drive
+  static constexpr double kCreepSpeed = 0.1;       ///< m/s: how fast, then
+  static constexpr int kMaxHeldTicks = 30;         ///< ticks held still by the guard before failing
+  std::shared_ptr<const MotionGuard> guard_;       ///< null: commands unchecked
+  int held_ticks_ = 0;  ///< consecutive ticks the guard stopped the robot
   InputPort<Path> path_;
   InputPort<sim::Pose2D> goal_, pose_;
   OutputPort<std::string> error_;
@@ -349,8 +388,13 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
     return std::make_unique<ComputePath>(spec, *ctx, planners());
   });
   const FollowerParams follower = config.follower;
-  factory.registerNodeType<FollowPath>("FollowPath", [follower, ctx](const NodeSpec& spec) {
-    return std::make_unique<FollowPath>(spec, *ctx, follower);
+  std::shared_ptr<const MotionGuard> guard;
+  if (config.known_world) {
+    guard = std::make_shared<MotionGuard>(*config.known_world, config.follower.rate,
+                                          config.follower.max_linear_accel);
+  }
+  factory.registerNodeType<FollowPath>("FollowPath", [follower, ctx, guard](const NodeSpec& spec) {
+    return std::make_unique<FollowPath>(spec, *ctx, follower, guard);
   });
   const double rate = config.params.rate;
   factory.registerNodeWithPorts(

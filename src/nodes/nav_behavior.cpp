@@ -323,6 +323,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
     };
     s.config.checker =
         std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
+    s.config.known_world = world;
   } else {
     throw std::invalid_argument("~planner must be 'service' or 'in_process', got '" + planner +
                                 "'");

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "roomba_rrt/behavior/path_follower.h"
@@ -60,6 +61,9 @@ struct NavLeafConfig {
   FollowerParams follower;  ///< FollowPath's limits and tolerances
   PlannerFactory planners;  ///< ComputePath's planners
   std::shared_ptr<const PathPlanner> checker;  ///< IsPathValid's world (may be null: always valid)
+  /// The walls and furniture FollowPath never lets the robot touch (MotionGuard); none: its
+  /// commands go out unchecked.
+  std::optional<NavWorld> known_world;
 };
 
 /// Registers, on `factory`:

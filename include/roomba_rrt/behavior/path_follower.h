@@ -89,6 +89,8 @@ class PathFollower {
 
   /// Distance from the robot to the path found by the last step (m).
   double deviation() const { return deviation_; }
+  /// The point `distance` along the path beyond the robot's projection (clamped to the goal).
+  planning::Point2 pointAhead(double distance) const { return pointAt(progress_s_ + distance); }
   /// True once the robot has reached the goal point and turns to the goal heading.
   bool turningToGoal() const { return at_goal_; }
   const FollowerParams& params() const { return params_; }

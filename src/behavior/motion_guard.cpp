@@ -1,0 +1,66 @@
+#include "roomba_rrt/behavior/motion_guard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "roomba_rrt/geometry/geometry.h"
+
+namespace roomba_rrt::behavior {
+namespace {
+
+constexpr double kSampleSpacing = 0.005;  // m along the arc between two checked centres
+constexpr int kBisections = 10;           // the safe fraction of v to about 1/1000
+
+}  // namespace
+
+MotionGuard::MotionGuard(NavWorld world, double rate, double max_linear_accel, double margin)
+    : world_(std::move(world)),
+      dt_(1.0 / rate),
+      max_linear_accel_(max_linear_accel),
+      margin_(margin) {}
+
+double MotionGuard::gap(double x, double y) const {
+  const planning::Point2 p{x, y};
+  const planning::Bounds& b = world_.bounds;
+  double nearest = std::min({x - b.x_min, b.x_max - x, y - b.y_min, b.y_max - y});
+  for (const auto& c : world_.circles) nearest = std::min(nearest, geometry::distance(c, p));
+  for (const auto& r : world_.rectangles) nearest = std::min(nearest, geometry::distance(r, p));
+  return nearest - world_.robot_radius;
+}
+
+bool MotionGuard::safe(const sim::Pose2D& pose, double v, double w) const {
+  // The way the command would take the robot before it can stop: one tick at v, then braking.
+  const double reach = std::fabs(v) * dt_ + v * v / (2.0 * max_linear_accel_);
+  const int samples = std::max(1, static_cast<int>(std::ceil(reach / kSampleSpacing)));
+  const double start_gap = gap(pose.x, pose.y);
+  const double curvature = std::fabs(v) > 1e-12 ? w / v : 0.0;  // the arc's, signed by v
+  const double direction = v < 0 ? -1.0 : 1.0;
+  for (int i = 1; i <= samples; ++i) {
+    const double s = reach * i / samples;  // arc length from the pose
+    const double heading = pose.theta + direction * curvature * s;
+    double x, y;
+    if (std::fabs(curvature) < 1e-9) {
+      x = pose.x + direction * s * std::cos(pose.theta);
+      y = pose.y + direction * s * std::sin(pose.theta);
+    } else {
+      x = pose.x + (std::sin(heading) - std::sin(pose.theta)) / curvature;
+      y = pose.y - (std::cos(heading) - std::cos(pose.theta)) / curvature;
+    }
+    const double g = gap(x, y);
+    if (g < margin_ && g < start_gap - 1e-9) return false;  // closer, and too close
+  }
+  return true;
+}
+
+sim::Velocity MotionGuard::filter(const sim::Pose2D& pose, const sim::Velocity& cmd) const {
+  if (cmd.v == 0 || safe(pose, cmd.v, cmd.w)) return cmd;
+  double lo = 0, hi = 1;  // fractions of v: lo is safe, hi is not
+  for (int i = 0; i < kBisections; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (safe(pose, mid * cmd.v, cmd.w) ? lo : hi) = mid;
+  }
+  return {lo * cmd.v, cmd.w};
+}
+
+}  // namespace roomba_rrt::behavior
