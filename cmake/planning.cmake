@@ -63,7 +63,7 @@ endif()
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
 add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
-  src/nodes/master_watch.cpp src/nodes/node_params.cpp)
+  src/nodes/plan_slots.cpp src/nodes/master_watch.cpp src/nodes/node_params.cpp)
 target_include_directories(rrt_planner PRIVATE include ${catkin_INCLUDE_DIRS})
 target_link_libraries(rrt_planner rrt_planning ${catkin_LIBRARIES})
 # Its scenario file when the package is not on ROS_PACKAGE_PATH (ros::package finds it otherwise).
@@ -93,4 +93,9 @@ if(CATKIN_ENABLE_TESTING)
     add_dependencies(${test_target} rrt_planner
       ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
   endforeach()
+  # Who gets a planning thread when all are taken (ROS-free).
+  catkin_add_gtest(plan_slots_test test/planner_node/plan_slots_test.cpp src/nodes/plan_slots.cpp)
+  if(TARGET plan_slots_test)
+    target_link_libraries(plan_slots_test gtest_main)
+  endif()
 endif()

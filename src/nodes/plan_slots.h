@@ -1,45 +1,81 @@
-// How many plans the rrt_planner node runs at once: a request beyond the limit is turned away
-// at once ("busy") instead of waiting in the spinner's queue behind long plans. ROS-free.
+// How many plans the rrt_planner node runs at once, and who gets a thread when all are taken.
+// ROS-free.
+//
+// Fairness (issue 20): turning a request away whenever every thread was busy let any client deny
+// the service to all others with a handful of long plans (six unreachable plans at the request
+// cap held every thread for two seconds). Requests now come in two kinds. An *ordinary* request
+// asks for no more iterations than the node's ~ordinary_iterations (20 000 by default: a default
+// request, and the navigation tree's): it takes a free thread, or else the thread of the oldest
+// *long* plan, which is stopped for it (its client hears "preempted"), or else it waits for an
+// ordinary plan to end, up to its own time budget. A *long* request takes a free thread or is
+// answered "busy" at once; it never preempts. So an ordinary request starts within about a
+// millisecond whatever long plans others run, and long plans use whatever ordinary ones leave.
 #pragma once
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <vector>
 
 namespace roomba_rrt::planner_node {
 
 class PlanSlots {
  public:
-  explicit PlanSlots(int capacity) : capacity_(capacity) {}
+  using Clock = std::chrono::steady_clock;
 
-  /// A slot held for as long as it lives; false (no slot) when all were taken.
+  explicit PlanSlots(int capacity);
+
+  /// A thread held for as long as it lives (empty: none was had). A plan polls stopRequested()
+  /// and ends early when it is preempted.
   class Lease {
    public:
-    Lease(Lease&& other) noexcept : slots_(other.slots_) { other.slots_ = nullptr; }
+    Lease() = default;
+    Lease(Lease&& other) noexcept : slots_(other.slots_), slot_(other.slot_) {
+      other.slots_ = nullptr;
+    }
     Lease(const Lease&) = delete;
     Lease& operator=(const Lease&) = delete;
     Lease& operator=(Lease&&) = delete;
-    ~Lease() {
-      if (slots_ != nullptr) slots_->in_use_.fetch_sub(1);
-    }
+    ~Lease();
     explicit operator bool() const { return slots_ != nullptr; }
+    /// True once an ordinary request preempted this (long) plan.
+    bool stopRequested() const;
 
    private:
     friend class PlanSlots;
-    explicit Lease(PlanSlots* slots) : slots_(slots) {}
-    PlanSlots* slots_;
+    Lease(PlanSlots* slots, int slot) : slots_(slots), slot_(slot) {}
+    PlanSlots* slots_ = nullptr;
+    int slot_ = -1;
   };
 
-  Lease tryAcquire() {
-    int used = in_use_.load();
-    do {
-      if (used >= capacity_) return Lease(nullptr);
-    } while (!in_use_.compare_exchange_weak(used, used + 1));
-    return Lease(this);
-  }
-  int capacity() const { return capacity_; }
+  /// A thread for an ordinary plan: free, or a long plan's (stopped for it), or the first an
+  /// ordinary plan frees before `deadline`; empty when none by then.
+  Lease acquireOrdinary(Clock::time_point deadline);
+  /// A thread for a long plan: a free one (none while an ordinary request waits), or empty at once.
+  Lease acquireLong();
+
+  int capacity() const { return static_cast<int>(slots_.size()); }
+  /// Long plans preempted so far.
+  long preemptions() const { return preemptions_.load(); }
 
  private:
-  const int capacity_;
-  std::atomic<int> in_use_{0};
+  struct Slot {
+    bool busy = false;
+    bool ordinary = false;
+    Clock::time_point started;
+    std::atomic<bool> stop{false};
+  };
+  /// Takes a free slot (under the lock): its index, or -1.
+  int takeFree(bool ordinary);
+  void release(int slot);
+
+  std::vector<std::unique_ptr<Slot>> slots_;
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  int ordinary_waiting_ = 0;  ///< ordinary requests waiting: a long one gets no thread meanwhile
+  std::atomic<long> preemptions_{0};
 };
 
 }  // namespace roomba_rrt::planner_node

@@ -4,8 +4,9 @@
 // simulator's ~world_file); after every plan publishes the tree, obstacles, start,
 // goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
 // (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
-// are served by several threads, so a long plan does not hold up other clients; beyond ~threads
-// plans at once a request is answered "busy" at once, and every plan stops after
+// are served by several threads, so a long plan does not hold up other clients; when all
+// ~threads are taken an ordinary request preempts the oldest long plan and a long request is
+// answered "busy" at once (plan_slots.h), and every plan stops after
 // ~max_planning_time seconds (or less, if the request asks). Parameters and
 // examples: doc/nodes.md, "rrt_planner", and doc/planning.md.
 #include <chrono>
@@ -99,6 +100,8 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
   d.clearance = pnh.get("clearance", d.clearance);
   o.max_planning_time = pnh.get("max_planning_time", kDefaultMaxPlanningTime);
   d.max_iterations_cap = pnh.get("max_iterations_cap", d.max_iterations_cap);
+  d.ordinary_iterations = pnh.get("ordinary_iterations", d.ordinary_iterations);
+  if (d.ordinary_iterations < 1) throw std::invalid_argument("~ordinary_iterations: must be >= 1");
   // planning::plan() validates again with the library's own cap, so it bounds ours.
   if (d.max_iterations_cap < 1 || d.max_iterations_cap > planning::kDefaultMaxIterationsCap) {
     throw std::invalid_argument("~max_iterations_cap: must be in [1, " +
@@ -182,17 +185,39 @@ class RrtPlannerNode {
       ROS_WARN_STREAM("plan_path: rejected: " << resolved.error);
       return true;  // the client gets success: false and the message
     }
-    const PlanSlots::Lease slot = slots_.tryAcquire();
+    // Ordinary requests (no more iterations than ~ordinary_iterations) are served first: see
+    // plan_slots.h.
+    const bool ordinary = resolved.options.max_iterations <= defaults()->ordinary_iterations;
+    const PlanSlots::Lease slot =
+        ordinary ? slots_.acquireOrdinary(
+                       PlanSlots::Clock::now() +
+                       std::chrono::duration_cast<PlanSlots::Clock::duration>(
+                           std::chrono::duration<double>(resolved.options.max_planning_time)))
+                 : slots_.acquireLong();
     if (!slot) {
-      response.message = "busy: all " + std::to_string(slots_.capacity()) +
-                         " planning threads (~threads) are in use; call again later";
+      response.message =
+          ordinary ? "busy: all " + std::to_string(slots_.capacity()) +
+                         " planning threads (~threads) ran ordinary plans for this request's "
+                         "whole time budget; call again"
+                   : "busy: all " + std::to_string(slots_.capacity()) +
+                         " planning threads (~threads) are in use and this request asks more than "
+                         "~ordinary_iterations (" +
+                         std::to_string(defaults()->ordinary_iterations) +
+                         "): long plans only use free threads; call again later";
       ROS_WARN_STREAM("plan_path: " << response.message);
       return true;
     }
     try {
-      const planning::PlanResult result = plan(resolved);
+      const planning::PlanResult result = plan(resolved, slot);
       const ros::Time stamp = ros::Time::now();
       fillResponse(result, frame_id_, stamp, &response);
+      if (slot.stopRequested() && !result.success) {
+        response.message =
+            "preempted: every planning thread was taken and this plan, asking more than "
+            "~ordinary_iterations, had run the longest of those: it gave its thread to an "
+            "ordinary request; call again";
+        ROS_WARN_STREAM("plan_path: " << response.message);
+      }
       tree_pub_.publish(markers(resolved.problem, result.tree, &result.path, stamp));
       path_pub_.publish(response.path);
       ROS_DEBUG_STREAM("plan_path: " << (result.success ? "found" : "no path") << ", length "
@@ -206,9 +231,12 @@ class RrtPlannerNode {
     return true;
   }
 
-  planning::PlanResult plan(const ResolvedRequest& resolved) const {
-    // A node shutting down (Ctrl-C) stops its plans within about a millisecond.
-    const auto shutting_down = [] { return ros::isShuttingDown() || !ros::ok(); };
+  planning::PlanResult plan(const ResolvedRequest& resolved, const PlanSlots::Lease& slot) const {
+    // A node shutting down (Ctrl-C), or a newer request preempting this plan, stops it within
+    // about a millisecond.
+    const auto shutting_down = [&slot] {
+      return slot.stopRequested() || ros::isShuttingDown() || !ros::ok();
+    };
     if (!animate_) return planning::plan(resolved.problem, resolved.options, {}, 0, shutting_down);
     // Animation: publish the growing tree every ~animate_every iterations, at most
     // ~animate_rate times a second (the plan waits for the next frame so rviz can follow).

@@ -1,6 +1,7 @@
 // rrt_planner under issue 11's hostile requests: each is answered (refused naming the field,
 // stopped by the time budget, or planned), and the node plans scenario a right afterwards.
 // The node runs with ~threads 2 and ~max_planning_time 2 (hostile_requests.test).
+#include <algorithm>
 #include <atomic>
 #include <future>
 #include <limits>
@@ -138,27 +139,45 @@ TEST(HostileRequests, a_start_at_the_goal_is_a_one_point_path_of_length_zero) {
   }
 }
 
-TEST(HostileRequests, beyond_threads_plans_at_once_a_request_is_answered_busy) {
-  // Two plans that each run until the node's 2 s budget stops them take both planning threads.
-  std::vector<std::future<PlanPath::Response>> long_plans;
-  for (int i = 0; i < 2; ++i) {
-    long_plans.push_back(
-        std::async(std::launch::async, [] { return callPlanPath(unreachableGoal(5'000'000)); }));
+// Issue 20, item 1: long plans that take every thread no longer deny the service. Eight hostile
+// clients keep asking for unreachable plans at the request cap (each runs until the node's 2 s
+// budget, two threads); meanwhile ordinary requests are planned, each within its own budget plus
+// about 0.1 s (the oldest long plan gives up its thread), never answered "busy".
+TEST(HostileRequests, eight_clients_with_long_plans_cannot_starve_an_ordinary_request) {
+  std::atomic<bool> stop{false};
+  std::atomic<int> preempted{0}, hostile_answers{0};
+  std::vector<std::future<void>> hostile;
+  for (int i = 0; i < 8; ++i) {
+    hostile.push_back(std::async(std::launch::async, [&] {
+      while (!stop) {
+        const PlanPath::Response answer = callPlanPath(unreachableGoal(5'000'000));
+        ++hostile_answers;
+        if (answer.message.rfind("preempted", 0) == 0) ++preempted;
+      }
+    }));
   }
-  // Meanwhile short requests: once both long plans run, the answer is "busy" (not a wait).
-  std::string busy_message;
-  for (int i = 0; i < 400 && busy_message.empty(); ++i) {
+  ros::WallDuration(0.5).sleep();  // every thread taken by now
+  std::vector<double> latencies;
+  for (int i = 0; i < 30; ++i) {
+    const ros::WallTime t0 = ros::WallTime::now();
     const PlanPath::Response answer = callPlanPath(scenarioRequest("a"));
-    if (!answer.success) busy_message = answer.message;
-    if (long_plans[0].wait_for(std::chrono::seconds(0)) == std::future_status::ready) break;
-    ros::WallDuration(0.005).sleep();
+    latencies.push_back((ros::WallTime::now() - t0).toSec());
+    EXPECT_TRUE(answer.success) << "ordinary request " << i << ": " << answer.message;
+    ros::WallDuration(0.05).sleep();
   }
-  for (auto& plan : long_plans) {
-    const PlanPath::Response answer = plan.get();
-    EXPECT_EQ(answer.message.rfind("max_planning_time", 0), 0u) << answer.message;
-  }
-  EXPECT_EQ(busy_message.rfind("busy: all 2 planning threads", 0), 0u)
-      << "'" << busy_message << "'";
+  stop = true;
+  for (auto& client : hostile) client.get();
+  std::sort(latencies.begin(), latencies.end());
+  const double worst = latencies.back();
+  // In the test's XML (build/test_results/roomba_rrt/rosunit-hostile_requests.xml).
+  RecordProperty("ordinary_median_ms", static_cast<int>(1000 * latencies[latencies.size() / 2]));
+  RecordProperty("ordinary_worst_ms", static_cast<int>(1000 * worst));
+  RecordProperty("hostile_answers", hostile_answers.load());
+  RecordProperty("hostile_preempted", preempted.load());
+  // Its own plan takes milliseconds; its budget is the node's 2 s. Generous bound for a loaded
+  // machine, far below the 2 s that a refusal or a wait behind the long plans would take.
+  EXPECT_LT(worst, 1.0);
+  EXPECT_GT(preempted.load(), 0) << "no long plan gave up its thread";
   const PlanPath::Response after = callPlanPath(scenarioRequest("a"));
   EXPECT_TRUE(after.success) << after.message;
 }
