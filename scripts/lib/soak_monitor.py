@@ -5,6 +5,9 @@ drive:   watches /odom until --hours of robot time (header stamps) have passed: 
          never leaves the room, the pose never stays unchanged for more than 10 s of robot time.
 planner: sends a steady stream of mixed good and bad plan_path requests for --wall seconds: good
          ones must be answered success: true, bad ones success: false with a message.
+navigate: random free goals one after another through move_base's action (roomba_bt with the
+         navigation tree) for --hours of robot time: every goal ends, the bumper is never pressed,
+         the robot never stands still for more than 10 s of robot time while a goal is active.
 Both:    the watched processes (--pid NAME=PID) stay alive, and none grows its resident memory by
          more than 10 % between the end of the warm-up (first 10 % of the run) and the end.
 """
@@ -117,6 +120,108 @@ def drive(args, procs):
     return ok
 
 
+def free_goal(rng, world, clearance):
+    """A random pose where the robot's disc (plus clearance) touches no wall or furniture."""
+    width, height = world["room"]["width"], world["room"]["height"]
+    reach = world["robot"]["radius"] + clearance
+    furniture = world.get("furniture") or {}
+    while True:
+        x, y = rng.uniform(reach, width - reach), rng.uniform(reach, height - reach)
+        if any(math.hypot(x - c["x"], y - c["y"]) < c["radius"] + reach
+               for c in furniture.get("circles") or []):
+            continue
+        if any(math.hypot(max(b["min_x"] - x, 0, x - b["max_x"]), max(b["min_y"] - y, 0, y - b["max_y"]))
+               < reach for b in furniture.get("rectangles") or []):
+            continue
+        return x, y, rng.uniform(-math.pi, math.pi)
+
+
+def navigate(args, procs):
+    """Goals one after another through move_base's action for --hours of robot time: every goal
+    ends (reached or aborted with a reason), the bumper is never pressed, the robot is never still
+    for more than MAX_STUCK s of robot time while a goal is active."""
+    import actionlib
+    from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
+    from nav_msgs.msg import Odometry
+    from roomba_rrt.msg import Bumper
+    with open(args.world) as f:
+        world = yaml.safe_load(f)
+    s = {"t": 0.0, "t0": None, "last": None, "changed": None, "stuck": 0.0, "presses": 0,
+         "pressed": False, "active": False}
+    lock = threading.Lock()
+
+    def on_odom(msg):
+        p, q = msg.pose.pose.position, msg.pose.pose.orientation
+        pose, t = (p.x, p.y, q.z, q.w), msg.header.stamp.to_sec()
+        with lock:
+            if s["t0"] is None:
+                s["t0"] = s["changed"] = t
+            s["t"] = t
+            if s["last"] is None or any(abs(a - b) > 1e-9 for a, b in zip(pose, s["last"])):
+                s["changed"] = t
+            if s["active"]:
+                s["stuck"] = max(s["stuck"], t - s["changed"])
+            s["last"] = pose
+
+    def on_bumper(msg):
+        with lock:
+            if msg.pressed and not s["pressed"]:
+                s["presses"] += 1
+            s["pressed"] = msg.pressed
+
+    rospy.Subscriber("/odom", Odometry, on_odom, queue_size=1, tcp_nodelay=True)
+    rospy.Subscriber("/bumper", Bumper, on_bumper, queue_size=1000, tcp_nodelay=True)
+    client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
+    if not client.wait_for_server(rospy.Duration(30)):
+        print("soak %s: no move_base action server: FAIL" % args.name)
+        return False
+    rng = random.Random(7)
+    goal_time = args.hours * 3600.0
+    counts = {"reached": 0, "aborted": 0, "unfinished": 0}
+    wall0 = time.time()
+    while time.time() - wall0 < args.wall_limit and not procs.dead():
+        with lock:
+            done = s["t"] - s["t0"] if s["t0"] is not None else 0.0
+            s["changed"] = s["t"]  # a new goal: the robot may stand while it plans
+            s["active"] = True
+        if not procs.base and done >= 0.1 * goal_time:
+            procs.mark_base()
+        if done >= goal_time:
+            break
+        x, y, theta = free_goal(rng, world, 0.06)
+        goal = MoveBaseGoal()
+        goal.target_pose.header.frame_id = "map"
+        goal.target_pose.pose.position.x, goal.target_pose.pose.position.y = x, y
+        goal.target_pose.pose.orientation.z = math.sin(theta / 2)
+        goal.target_pose.pose.orientation.w = math.cos(theta / 2)
+        client.send_goal(goal)
+        # rospy waits in ROS time, the simulator's: a goal gets --goal-timeout s of robot time.
+        if not client.wait_for_result(rospy.Duration(args.goal_timeout)):
+            counts["unfinished"] += 1
+            client.cancel_goal()
+        elif client.get_state() == actionlib.GoalStatus.SUCCEEDED:
+            counts["reached"] += 1
+        else:
+            counts["aborted"] += 1
+        with lock:
+            s["active"] = False
+    wall = time.time() - wall0
+    with lock:
+        done = s["t"] - s["t0"] if s["t0"] is not None else 0.0
+        stuck, presses = s["stuck"], s["presses"]
+    dead = procs.dead()
+    growth = procs.growth()
+    ok = (done >= goal_time and presses == 0 and stuck <= MAX_STUCK and not dead and
+          counts["unfinished"] == 0 and all(g <= MAX_GROWTH for g in growth.values()))
+    print("soak %s: %.2f h robot time in %.0f s wall, goals %s, bumper presses %d, longest still "
+          "%.1f s, memory %s, crashes %d: %s"
+          % (args.name, done / 3600.0, wall, ", ".join("%s %d" % kv for kv in counts.items()),
+             presses, stuck,
+             " ".join("%s %+.1f %%" % (k, 100 * v) for k, v in sorted(growth.items())) or "?",
+             len(dead), "PASS" if ok else "FAIL"))
+    return ok
+
+
 def requests(rng):
     """(request fields, expect success)"""
     from geometry_msgs.msg import Point
@@ -178,17 +283,19 @@ def planner(args, procs):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["drive", "planner"])
+    parser.add_argument("mode", choices=["drive", "planner", "navigate"])
     parser.add_argument("--name", required=True)
     parser.add_argument("--hours", type=float, default=1.0)
     parser.add_argument("--wall", type=float, default=60.0)
     parser.add_argument("--wall-limit", type=float, default=3600.0)
     parser.add_argument("--world")
     parser.add_argument("--pid", action="append", default=[])
+    parser.add_argument("--goal-timeout", type=float, default=300.0)  # s of robot time
     args = parser.parse_args()
     rospy.init_node("soak_monitor", anonymous=True, disable_signals=True)
     procs = Processes(args.pid)
-    ok = drive(args, procs) if args.mode == "drive" else planner(args, procs)
+    modes = {"drive": drive, "planner": planner, "navigate": navigate}
+    ok = modes[args.mode](args, procs)
     sys.exit(0 if ok else 1)
 
 
