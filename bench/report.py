@@ -19,6 +19,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     multi_rtf.json the same for 10 robots (sim_rtf_probe --robots 10), each with a roomba_fsm
     service.json   plan_path_bench --json
     nav_latency.json  nav_latency_probe --json (roomba_sim, rrt_planner, roomba_bt navigating)
+    fairness.json  fairness_probe --json (rrt_planner, 8 hostile clients)
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
 """
 import datetime
@@ -346,6 +347,21 @@ def nav_latency_rows(t, results):
                     f"max {data['max_ms']:.1f} ms, {data['missed']} goals without motion)")
 
 
+def fairness_rows(t, results):
+    what = ("Planner fairness: ordinary plan_path requests (scenario a) while 8 clients hammer the "
+            "node with unreachable plans at the 5 000 000-iteration cap, round trip")
+    try:
+        data = load(results, "fairness")
+    except Missing as e:
+        t.missing("fairness", what, str(e), "p99 ≤ 100 ms")
+        return
+    t.add("fairness", what + f" ({data['requests']} requests)", data["p99_ms"],
+          target="p99 ≤ 100 ms, none failed", met=data["p99_ms"] <= 100 and data["failed"] == 0,
+          ours_text=f"p99 {data['p99_ms']:.1f} ms (p50 {data['p50_ms']:.1f} ms, "
+                    f"max {data['max_ms']:.1f} ms, {data['failed']} failed; the long plans: "
+                    f"{data['hostile_preempted']} preempted, {data['hostile_busy']} busy)")
+
+
 def memory_rows(t, results):
     what = "Peak RSS: rrt_monte_carlo --scenario all --runs 200"
     try:
@@ -439,7 +455,7 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, sim_robot_rows,
-                 rtf_rows, service_rows, nav_latency_rows, memory_rows):
+                 rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

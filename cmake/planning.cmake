@@ -75,6 +75,12 @@ target_include_directories(plan_path_bench PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(plan_path_bench ${catkin_LIBRARIES})
 add_dependencies(plan_path_bench ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
+# Fairness: ordinary requests' latency while eight clients hammer the node with long plans.
+add_executable(fairness_probe bench/fairness_probe.cpp)
+target_include_directories(fairness_probe PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(fairness_probe ${catkin_LIBRARIES})
+add_dependencies(fairness_probe ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
 if(CATKIN_ENABLE_TESTING)
   # rostests through a real master; each .test starts the node and one gtest client node.
   foreach(planner_node_test
