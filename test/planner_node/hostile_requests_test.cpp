@@ -23,6 +23,7 @@ struct Hostile {
   std::string what;
   PlanPath::Request request;
   std::string message_start;  // the answer's message starts with this (success false)
+  std::string or_start = "";  // ... or with this, when a fast machine gets there first
 };
 
 PlanPath::Request withBounds(double x_min, double x_max, double y_min, double y_max) {
@@ -95,8 +96,11 @@ std::vector<Hostile> hostileRequests() {
   for (const char* algorithm : {"rrt", "rrt_connect", "rrt_star"}) {
     PlanPath::Request cap = unreachableGoal(5'000'000);
     cap.algorithm = algorithm;
+    // 5 000 000 iterations take about 2 s: the budget stops the plan, or on a fast, idle
+    // machine the iterations run out first. Either way the answer is false with its reason.
     all.push_back({std::string("iteration cap, unreachable goal, ") + algorithm, cap,
-                   "max_planning_time: the plan was stopped after 2 s"});
+                   "max_planning_time: the plan was stopped after 2 s",
+                   "no path within 5000000 iterations"});
   }
   PlanPath::Request huge_radius = unreachableGoal(1000);
   huge_radius.obstacles[0].radius = 1e300;
@@ -117,7 +121,8 @@ TEST(HostileRequests, each_is_answered_false_with_its_reason_and_the_node_then_p
   for (const Hostile& hostile : hostileRequests()) {
     const PlanPath::Response answer = callPlanPath(hostile.request);
     EXPECT_FALSE(answer.success) << hostile.what;
-    EXPECT_EQ(answer.message.rfind(hostile.message_start, 0), 0u)
+    EXPECT_TRUE(answer.message.rfind(hostile.message_start, 0) == 0 ||
+                (!hostile.or_start.empty() && answer.message.rfind(hostile.or_start, 0) == 0))
         << hostile.what << ": '" << answer.message << "'";
     EXPECT_TRUE(answer.path.poses.empty()) << hostile.what;
     const PlanPath::Response next = callPlanPath(scenarioRequest("a"));
