@@ -29,7 +29,7 @@ struct NodeDefaults {
   double robot_radius = 0;           // m, when neither the request nor its scenario gives one
   double clearance = 0;              // m, likewise
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
-  int ordinary_iterations = 20000;  // requests asking no more are served first (plan_slots.h)
+  int ordinary_iterations = 20000;        // requests asking no more are served first (plan_slots.h)
   std::optional<planning::Problem> room;  // scenario "room": the simulator's world (~world_file)
 };
 
