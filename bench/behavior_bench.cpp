@@ -9,12 +9,12 @@
 #include <cstdlib>
 #include <vector>
 
-#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/behavior/roomba_tree.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sim/unicycle.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 #include "roomba_switch.h"
 
 namespace {
@@ -23,13 +23,14 @@ using roomba_rrt::behavior::RoombaBt;
 using roomba_rrt::behavior::RoombaFsm;
 using roomba_rrt::behavior::RoombaParams;
 using roomba_rrt::bench::RoombaSwitch;
+namespace robot = roomba_rrt::robot;
 namespace sim = roomba_rrt::sim;
 
 /// A bumper input that exercises every transition: a bump every 997 ticks (during MoveForward
 /// or MoveInSpiral), and some spirals that run to their end. 2^16 ticks, then it repeats.
-const std::vector<sim::BumperState>& bumperInput() {
-  static const std::vector<sim::BumperState> input = [] {
-    std::vector<sim::BumperState> v(1 << 16);
+const std::vector<robot::BumperState>& bumperInput() {
+  static const std::vector<robot::BumperState> input = [] {
+    std::vector<robot::BumperState> v(1 << 16);
     for (std::size_t i = 0; i < v.size(); ++i) {
       const bool pressed = i % 997 == 0 && (i / 997) % 3 != 0;
       v[i] = {pressed, pressed, pressed};
@@ -41,11 +42,11 @@ const std::vector<sim::BumperState>& bumperInput() {
 
 template <class Behavior>
 void tickLoop(benchmark::State& state, Behavior& behavior) {
-  const std::vector<sim::BumperState>& input = bumperInput();
+  const std::vector<robot::BumperState>& input = bumperInput();
   const std::size_t mask = input.size() - 1;
   std::size_t i = 0;
   for (auto _ : state) {
-    sim::Velocity cmd = behavior.tick(input[i++ & mask]);
+    robot::Velocity cmd = behavior.tick(input[i++ & mask]);
     benchmark::DoNotOptimize(cmd);
   }
   state.SetItemsProcessed(state.iterations());
@@ -80,13 +81,13 @@ BENCHMARK(BM_BtBuildFromXml)->Unit(benchmark::kMicrosecond);
 /// The in-process planner with its planning left out of the timing: the benchmark ticks about a
 /// million times faster than 60 Hz, so a worker thread's plan would arrive far too late (the
 /// robot would have driven on for thousands of ticks); this plans inline with the clock paused.
-class UntimedPlanner final : public roomba_rrt::behavior::PathPlanner {
+class UntimedPlanner final : public roomba_rrt::navigation::PathPlanner {
  public:
   /// Pauses `state` while planning when `*timed` is true (inside the timed loop).
-  UntimedPlanner(const roomba_rrt::behavior::NavWorld& world, benchmark::State& state,
+  UntimedPlanner(const roomba_rrt::navigation::NavWorld& world, benchmark::State& state,
                  const bool& timed)
-      : inner_(world, roomba_rrt::behavior::defaultNavPlannerOptions(),
-               roomba_rrt::behavior::InProcessPlanner::Mode::kInline),
+      : inner_(world, roomba_rrt::navigation::defaultNavPlannerOptions(),
+               roomba_rrt::navigation::InProcessPlanner::Mode::kInline),
         state_(state),
         timed_(timed) {}
   void request(const roomba_rrt::planning::Point2& start,
@@ -95,11 +96,11 @@ class UntimedPlanner final : public roomba_rrt::behavior::PathPlanner {
     inner_.request(start, goal);
     if (timed_) state_.ResumeTiming();
   }
-  bool poll(roomba_rrt::behavior::PlanReply& reply) override { return inner_.poll(reply); }
+  bool poll(roomba_rrt::navigation::PlanReply& reply) override { return inner_.poll(reply); }
   void cancel() override { inner_.cancel(); }
 
  private:
-  roomba_rrt::behavior::InProcessPlanner inner_;
+  roomba_rrt::navigation::InProcessPlanner inner_;
   benchmark::State& state_;
   const bool& timed_;
 };
@@ -110,18 +111,18 @@ class UntimedPlanner final : public roomba_rrt::behavior::PathPlanner {
 /// The robot's pose comes from the exact unicycle step (about 20 ns of the time); goals are
 /// restarted outside the timing.
 void BM_NavTreeFollowing(benchmark::State& state) {
-  using namespace roomba_rrt::behavior;
-  const NavWorld world =
-      navWorldFrom(sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
-  NavLeafConfig config = inProcessNavConfig(world);
+  using namespace roomba_rrt::navigation;
+  const NavWorld room = navWorldFrom(
+      roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
+  NavLeafConfig config = inProcessNavConfig(room);
   bool timed = false;
-  config.planners = [&world, &state, &timed] {
-    return std::make_unique<UntimedPlanner>(world, state, timed);
+  config.planners = [&room, &state, &timed] {
+    return std::make_unique<UntimedPlanner>(room, state, timed);
   };
   NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
-  const sim::Pose2D start{0.5, 2.4, 0.0};
-  const sim::Pose2D goal{5.2, 2.4, 0.0};
-  sim::Pose2D pose = start;
+  const robot::Pose2D start{0.5, 2.4, 0.0};
+  const robot::Pose2D goal{5.2, 2.4, 0.0};
+  robot::Pose2D pose = start;
   const auto restart = [&] {
     timed = false;
     pose = start;
@@ -132,7 +133,7 @@ void BM_NavTreeFollowing(benchmark::State& state) {
   restart();
   long following = 0;
   for (auto _ : state) {
-    const sim::Velocity cmd = nav.tick({}, pose);
+    const robot::Velocity cmd = nav.tick({}, pose);
     pose = sim::integrateArc(pose, cmd, 1.0 / 60.0);
     following += nav.stateName() == "FollowPath";
     if (nav.outcome() != GoalOutcome::kActive || pose.x > 4.6) {
@@ -150,9 +151,9 @@ BENCHMARK(BM_NavTreeFollowing);
 bool switchAgreesWithFsm() {
   RoombaSwitch baseline(RoombaParams{}, 1);
   RoombaFsm fsm(RoombaParams{}, 1);
-  const std::vector<sim::BumperState>& input = bumperInput();
+  const std::vector<robot::BumperState>& input = bumperInput();
   for (std::size_t i = 0; i < 36000; ++i) {
-    const sim::Velocity a = baseline.tick(input[i]), b = fsm.tick(input[i]);
+    const robot::Velocity a = baseline.tick(input[i]), b = fsm.tick(input[i]);
     if (a.v != b.v || a.w != b.w || baseline.state() != fsm.state()) {
       std::fprintf(stderr, "behavior_bench: the switch and the FSM differ at tick %zu\n", i);
       return false;

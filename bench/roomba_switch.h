@@ -9,7 +9,7 @@
 #include "roomba_rrt/behavior/motion_primitives.h"
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/behavior/roomba_state.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::bench {
 
@@ -33,7 +33,7 @@ class RoombaSwitch {
         back_ticks_(p.ticks(p.go_back_time)),
         rng_(seed) {}
 
-  sim::Velocity tick(const sim::BumperState& bumper) {
+  robot::Velocity tick(const robot::BumperState& bumper) {
     switch (state_) {  // check the transition: bumper first, then the time
       case State::kMoveForward:
         if (bumper.pressed) {

@@ -16,7 +16,9 @@
 
 namespace {
 
+using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
+using namespace roomba_rrt::world;
 
 World furnishedRoom() { return loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"); }
 

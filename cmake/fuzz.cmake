@@ -36,7 +36,7 @@ if(ROOMBA_RRT_SANITIZE)
   add_library(rrt_planning_sanitized STATIC EXCLUDE_FROM_ALL ${RR_PLANNING_SOURCES}
     ${RR_GCC_OBJECTS})
   target_include_directories(rrt_planning_sanitized PUBLIC ${PROJECT_SOURCE_DIR}/include)
-  target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
+  target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_world yaml-cpp)
 
   # The node's own request conversion (src/nodes/planner_ros.cpp) in front of the library.
   roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp)
@@ -47,11 +47,11 @@ if(ROOMBA_RRT_SANITIZE)
   add_dependencies(plan_path_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
   # The planning unit tests on that library (scripts/fuzz --unit).
-  if(TARGET test_rrt_planning)
-    get_target_property(RR_PLANNING_TESTS test_rrt_planning SOURCES)
-    add_executable(test_rrt_planning_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
-    target_link_libraries(test_rrt_planning_sanitized rrt_planning_sanitized gtest gtest_main)
-    target_compile_definitions(test_rrt_planning_sanitized PRIVATE
+  if(TARGET planning_core_test)
+    get_target_property(RR_PLANNING_TESTS planning_core_test SOURCES)
+    add_executable(planning_core_test_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
+    target_link_libraries(planning_core_test_sanitized rrt_planning_sanitized gtest gtest_main)
+    target_compile_definitions(planning_core_test_sanitized PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   endif()
 endif()

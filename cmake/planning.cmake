@@ -20,7 +20,7 @@ add_library(rrt_planning
 )
 target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(rrt_planning PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
-# The room scenario reads the simulator's world files (sim::loadWorld), ROS-free too.
+# The room scenario reads the simulator's world files (world::loadWorld), ROS-free too.
 
 find_package(Threads REQUIRED)
 
@@ -33,19 +33,19 @@ add_executable(rrt_plot src/tools/rrt_plot.cpp)
 target_link_libraries(rrt_plot roomba_tools)
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(test_rrt_planning
-    test/planning/test_geometry.cpp
-    test/planning/test_matlab_random.cpp
-    test/planning/test_nearest_neighbors.cpp
-    test/planning/test_rrt.cpp
-    test/planning/test_algorithms.cpp
-    test/planning/test_validate.cpp
-    test/planning/test_robustness.cpp
-    test/planning/test_room.cpp
+  catkin_add_gtest(planning_core_test
+    test/planning/geometry_test.cpp
+    test/planning/matlab_random_test.cpp
+    test/planning/nearest_neighbors_test.cpp
+    test/planning/rrt_test.cpp
+    test/planning/algorithms_test.cpp
+    test/planning/validate_test.cpp
+    test/planning/robustness_test.cpp
+    test/planning/room_test.cpp
   )
-  if(TARGET test_rrt_planning)
-    target_link_libraries(test_rrt_planning rrt_planning gtest_main)
-    target_compile_definitions(test_rrt_planning PRIVATE
+  if(TARGET planning_core_test)
+    target_link_libraries(planning_core_test rrt_planning gtest_main)
+    target_compile_definitions(planning_core_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   endif()
 endif()

@@ -4,13 +4,12 @@ add_library(roomba_sim_core
   src/sim/unicycle.cpp
   src/sim/contact.cpp
   src/sim/coverage_grid.cpp
-  src/sim/world.cpp
   src/sim/simulator.cpp
   src/sim/robot_grid.cpp
   src/sim/multi_robot_simulator.cpp
 )
 target_include_directories(roomba_sim_core PUBLIC include)
-target_link_libraries(roomba_sim_core PUBLIC roomba_geometry yaml-cpp)
+target_link_libraries(roomba_sim_core PUBLIC roomba_world)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
@@ -31,7 +30,6 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/unicycle_test.cpp
     test/sim/contact_test.cpp
     test/sim/coverage_grid_test.cpp
-    test/sim/world_test.cpp
     test/sim/simulator_test.cpp
     test/sim/multi_robot_simulator_test.cpp
     test/sim/robot_grid_test.cpp

@@ -101,7 +101,7 @@ class BehaviorNode {
     if (next_tick_.isZero() || now + period_ * 2.0 < next_tick_) next_tick_ = now;
     const ros::Time due = now + period_ * 0.5;
     int ticks = 0;
-    sim::Velocity cmd;
+    robot::Velocity cmd;
     while (next_tick_ <= due && ticks < max_catch_up_) {
       cmd = behavior_->tick(bumper_);
       next_tick_ += period_;
@@ -147,7 +147,7 @@ class BehaviorNode {
   ros::Subscriber bumper_sub_, odom_sub_;
   ros::Timer timer_;
 
-  sim::BumperState bumper_;
+  robot::BumperState bumper_;
   ros::Time last_bumper_;
   ros::Time next_tick_;  ///< ROS time of the next tick due (zero: start afresh)
   bool have_bumper_ = false;

@@ -17,12 +17,12 @@
 #include "nav_ros.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
-#include "roomba_rrt/behavior/nav_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 
 namespace roomba_rrt::nav_node {
 namespace {
 
-using behavior::InProcessPlanner;
+using navigation::InProcessPlanner;
 using MoveBaseServer = actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>;
 
 constexpr int kFeedbackEvery = 6;  ///< ticks between feedback messages (10 Hz at 60 Hz)
@@ -30,10 +30,10 @@ const std::string kIdle = "Idle";
 
 /// What makeNavBehavior reads from the parameters besides the tree.
 struct Settings {
-  sim::World world;
+  world::World world;
   double clearance = 0.05;
   std::string global_frame = "map", robot_frame = "base_link";
-  behavior::NavLeafConfig config;
+  navigation::NavLeafConfig config;
 };
 
 /// The ~plan_path client behind ComputePath: one persistent connection per planner, made again
@@ -43,14 +43,14 @@ class PlanPathClient {
   PlanPathClient(std::string service, double clearance)
       : service_(std::move(service)), clearance_(clearance) {}
 
-  behavior::PlanReply operator()(const planning::Point2& start, const planning::Point2& goal,
-                                 std::uint32_t seed) {
+  navigation::PlanReply operator()(const planning::Point2& start, const planning::Point2& goal,
+                                   std::uint32_t seed) {
     if (!client_.isValid()) client_ = ros::NodeHandle().serviceClient<PlanPath>(service_, true);
     PlanPath srv;
     srv.request = planRequest(start, goal, seed, clearance_);
     if (!client_.call(srv)) {
       client_.shutdown();
-      behavior::PlanReply reply;
+      navigation::PlanReply reply;
       reply.message = "planner: the service " + service_ +
                       " did not answer (is rrt_planner running? or set ~planner:=in_process)";
       return reply;
@@ -92,14 +92,14 @@ class NavBehavior final : public behavior::RoombaBehavior {
     RoombaBehavior::setParams(params);
   }
 
-  sim::Velocity tick(const sim::BumperState& bumper) override {
+  robot::Velocity tick(const robot::BumperState& bumper) override {
     bumper_ = bumper;
     return step();
   }
 
  private:
-  sim::Velocity step() {
-    sim::Pose2D pose;
+  robot::Velocity step() {
+    robot::Pose2D pose;
     try {
       const auto t =
           buffer_.lookupTransform(settings_.global_frame, settings_.robot_frame, ros::Time(0));
@@ -113,10 +113,11 @@ class NavBehavior final : public behavior::RoombaBehavior {
                         settings_.global_frame.c_str(), settings_.robot_frame.c_str(), e.what());
       return {};
     }
-    const sim::Velocity cmd = nav_.tick(bumper_, pose);
+    const robot::Velocity cmd = nav_.tick(bumper_, pose);
     // ~state names the active leaf; "Idle" when no goal runs and the robot stands (the tree
     // keeps the last leaf's name, e.g. FollowPath at the goal; cleaning leaves still show).
-    const bool idle = nav_.outcome() != behavior::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
+    const bool idle =
+        nav_.outcome() != navigation::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
     context_.state_name = idle ? &kIdle : &nav_.stateName();
     publishPlan();
     report(pose);
@@ -124,22 +125,22 @@ class NavBehavior final : public behavior::RoombaBehavior {
   }
 
   /// The goal's outcome to the action client, or feedback while it runs.
-  void report(const sim::Pose2D& pose) {
+  void report(const robot::Pose2D& pose) {
     if (!goal_open_) return;
     move_base_msgs::MoveBaseResult result;
     switch (nav_.outcome()) {
-      case behavior::GoalOutcome::kSucceeded:
+      case navigation::GoalOutcome::kSucceeded:
         goal_open_ = false;
         ROS_INFO("goal reached at (%.2f, %.2f)", pose.x, pose.y);
         server_.setSucceeded(result, "reached the goal");
         return;
-      case behavior::GoalOutcome::kAborted:
+      case navigation::GoalOutcome::kAborted:
         goal_open_ = false;
         ROS_WARN("goal aborted: %s", nav_.message().c_str());
         server_.setAborted(result, nav_.message());
         return;
-      case behavior::GoalOutcome::kNone:
-      case behavior::GoalOutcome::kActive:
+      case navigation::GoalOutcome::kNone:
+      case navigation::GoalOutcome::kActive:
         break;
     }
     if (++ticks_since_feedback_ < kFeedbackEvery) return;
@@ -150,7 +151,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   }
 
   void publishPlan() {
-    const behavior::Path* path = nav_.path();
+    const navigation::Path* path = nav_.path();
     const auto same = [](const planning::Point2& a, const planning::Point2& b) {
       return a.x == b.x && a.y == b.y;
     };
@@ -172,7 +173,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   void onGoal() {
     const auto goal = server_.acceptNewGoal();  // the goal that was active is preempted
-    sim::Pose2D target;
+    robot::Pose2D target;
     std::string problem = toGlobal(goal->target_pose, target);
     if (problem.empty()) {
       problem = goalPlaceProblem(settings_.world, settings_.clearance, target.x, target.y);
@@ -203,7 +204,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   }
 
   /// "" with `out` the goal in the global frame, or why the goal cannot be used.
-  std::string toGlobal(const geometry_msgs::PoseStamped& goal, sim::Pose2D& out) {
+  std::string toGlobal(const geometry_msgs::PoseStamped& goal, robot::Pose2D& out) {
     std::string problem = poseProblem(goal.pose);
     if (!problem.empty()) return problem;
     const std::string& frame = goal.header.frame_id;
@@ -241,7 +242,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   /// dynamic_reconfigure on ~follower (cfg/NavFollower.cfg): FollowPath's limits and
   /// tolerances, from its next tick; refused (and kept) when invalid.
   void startFollowerReconfigure() {
-    const behavior::FollowerParams& f = settings_.config.follower;
+    const navigation::FollowerParams& f = settings_.config.follower;
     NavFollowerConfig in_force;
     in_force.max_linear_speed = f.max_linear_speed;
     in_force.max_angular_speed = f.max_angular_speed;
@@ -249,7 +250,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
     in_force.yaw_tolerance = f.yaw_tolerance;
     follower_reconfigure_ = std::make_unique<nodes::Reconfigure<NavFollowerConfig>>(
         ros::NodeHandle("~follower"), in_force, [this](const NavFollowerConfig& c) {
-          behavior::FollowerParams next = settings_.config.follower;
+          navigation::FollowerParams next = settings_.config.follower;
           next.max_linear_speed = c.max_linear_speed;
           next.max_angular_speed = c.max_angular_speed;
           next.xy_tolerance = c.xy_tolerance;
@@ -259,7 +260,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
         });
   }
 
-  static geometry_msgs::Twist toTwist(const sim::Velocity& cmd) {
+  static geometry_msgs::Twist toTwist(const robot::Velocity& cmd) {
     geometry_msgs::Twist twist;
     twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
     twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
@@ -268,7 +269,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   void stop() { cmd_pub_.publish(geometry_msgs::Twist()); }
 
   Settings settings_;
-  behavior::NavBt nav_;
+  navigation::NavBt nav_;
   ros::NodeHandle nh_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
@@ -277,10 +278,10 @@ class NavBehavior final : public behavior::RoombaBehavior {
   ros::Publisher cmd_pub_, plan_pub_, action_goal_pub_;
   ros::Subscriber simple_goal_sub_;
 
-  sim::BumperState bumper_;
+  robot::BumperState bumper_;
   bool goal_open_ = false;  ///< the action's current goal awaits its outcome
   int ticks_since_feedback_ = 0;
-  behavior::Path last_plan_;
+  navigation::Path last_plan_;
 };
 
 double finiteParam(nodes::NodeParams& params, const std::string& name, double fallback,
@@ -302,7 +303,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   Settings s;
   const std::string world_file =
       node_params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
-  s.world = sim::loadWorld(world_file);
+  s.world = world::loadWorld(world_file);
   s.clearance = finiteParam(node_params, "clearance", 0.05, 0.0);
   s.global_frame = node_params.get<std::string>("global_frame", s.global_frame);
   s.robot_frame = node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
@@ -310,11 +311,11 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   const std::string service =
       node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");
 
-  const behavior::NavWorld world = behavior::navWorldFrom(s.world, s.clearance);
-  planning::PlannerOptions options = behavior::defaultNavPlannerOptions();
+  const navigation::NavWorld world = navigation::navWorldFrom(s.world, s.clearance);
+  planning::PlannerOptions options = navigation::defaultNavPlannerOptions();
   options.seed = seed;
   if (planner == "in_process") {
-    s.config = behavior::inProcessNavConfig(world, options);
+    s.config = navigation::inProcessNavConfig(world, options);
   } else if (planner == "service") {
     const double clearance = s.clearance;
     s.config.planners = [world, options, service, clearance] {
@@ -329,14 +330,15 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
                                 "'");
   }
   s.config.params = params;
-  behavior::FollowerParams& f = s.config.follower;
+  navigation::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
-  using L = behavior::FollowerLimits;  // also cfg/NavFollower.cfg's minimum; validate() the maxima
+  using L =
+      navigation::FollowerLimits;  // also cfg/NavFollower.cfg's minimum; validate() the maxima
   f.max_linear_speed = finiteParam(node_params, "max_linear_speed", f.max_linear_speed, L::kMin);
   f.max_angular_speed = finiteParam(node_params, "max_angular_speed", f.max_angular_speed, L::kMin);
   f.xy_tolerance = finiteParam(node_params, "xy_tolerance", f.xy_tolerance, L::kMin);
   f.yaw_tolerance = finiteParam(node_params, "yaw_tolerance", f.yaw_tolerance, L::kMin);
-  behavior::validate(f);
+  navigation::validate(f);
   node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
   ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
            planner == "service" ? (" (" + service + ")").c_str() : "");

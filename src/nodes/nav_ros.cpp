@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "message_parts.h"
-#include "roomba_rrt/behavior/nav_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 
 namespace roomba_rrt::nav_node {
 namespace {
@@ -34,7 +34,7 @@ std::string poseProblem(const geometry_msgs::Pose& pose) {
   return "";
 }
 
-sim::Pose2D toPose2D(const geometry_msgs::Pose& pose) {
+robot::Pose2D toPose2D(const geometry_msgs::Pose& pose) {
   const auto& q = pose.orientation;
   // Yaw of the rotation (ZYX convention); this form holds for unnormalised quaternions too.
   const double yaw =
@@ -42,7 +42,7 @@ sim::Pose2D toPose2D(const geometry_msgs::Pose& pose) {
   return {pose.position.x, pose.position.y, yaw};
 }
 
-geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::string& frame_id,
+geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::string& frame_id,
                                          const ros::Time& stamp) {
   geometry_msgs::PoseStamped msg;
   msg.header.frame_id = frame_id;
@@ -53,7 +53,7 @@ geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::str
   return msg;
 }
 
-std::string goalPlaceProblem(const sim::World& world, double clearance, double x, double y) {
+std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y) {
   const double margin = world.robot_radius + clearance;
   if (x < 0 || x > world.width || y < 0 || y > world.height) {
     return format("goal (%.2f, %.2f) is outside the room [0, %g] x [0, %g]", x, y, world.width,
@@ -86,7 +86,7 @@ std::string goalPlaceProblem(const sim::World& world, double clearance, double x
 
 PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
                               std::uint32_t seed, double clearance) {
-  const planning::PlannerOptions options = behavior::defaultNavPlannerOptions();
+  const planning::PlannerOptions options = navigation::defaultNavPlannerOptions();
   PlanPath::Request request;
   request.scenario = "room";
   request.start.x = start.x;
@@ -104,8 +104,8 @@ PlanPath::Request planRequest(const planning::Point2& start, const planning::Poi
   return request;
 }
 
-behavior::PlanReply toPlanReply(const PlanPath::Response& response) {
-  behavior::PlanReply reply;
+navigation::PlanReply toPlanReply(const PlanPath::Response& response) {
+  navigation::PlanReply reply;
   reply.success = response.success;
   reply.message = response.message;
   reply.planning_ms = response.planning_time * 1e3;

@@ -1,7 +1,7 @@
 // Conversions between the navigation interface of roomba_bt (move_base's action and topics, the
 // ~plan_path service) and the ROS-free navigation core (NavBt): goal checks with messages naming
 // the field, poses, plans. Pure functions, unit-tested without a master
-// (test/behavior/nav_ros_test).
+// (test/navigation/nav_ros_test).
 #pragma once
 
 #include <cstdint>
@@ -11,9 +11,9 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <roomba_rrt/PlanPath.h>
 
-#include "roomba_rrt/behavior/path_planner.h"
-#include "roomba_rrt/sim/robot_state.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/navigation/path_planner.h"
+#include "roomba_rrt/robot/robot_state.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::nav_node {
 
@@ -22,24 +22,24 @@ namespace roomba_rrt::nav_node {
 std::string poseProblem(const geometry_msgs::Pose& pose);
 
 /// The pose in the plane (x, y, yaw); `pose` must pass poseProblem().
-sim::Pose2D toPose2D(const geometry_msgs::Pose& pose);
+robot::Pose2D toPose2D(const geometry_msgs::Pose& pose);
 
 /// The planar pose as a message (z = 0, rotation about z).
-geometry_msgs::PoseStamped toPoseStamped(const sim::Pose2D& pose, const std::string& frame_id,
+geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::string& frame_id,
                                          const ros::Time& stamp);
 
 /// "" when the robot's disc (radius + clearance) fits at (x, y) in the room; else why not, as a
 /// move_base client is told: "goal (7.00, 1.00) is outside the room [0, 6.4] x [0, 4.8]",
 /// "goal (0.80, 0.30) is inside furniture (rectangle 0: [0, 1.6] x [0, 0.6], grown by 0.22 m for
 /// the robot)", "goal ... is too close to a wall ...".
-std::string goalPlaceProblem(const sim::World& world, double clearance, double x, double y);
+std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y);
 
 /// The ~plan_path request for a navigation plan in the service's room scenario: RRT-Connect,
-/// exact segment checks, smoothed (behavior::defaultNavPlannerOptions()), the world's robot.
+/// exact segment checks, smoothed (navigation::defaultNavPlannerOptions()), the world's robot.
 PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
                               std::uint32_t seed, double clearance);
 
 /// The service's answer as the navigation core's plan reply.
-behavior::PlanReply toPlanReply(const PlanPath::Response& response);
+navigation::PlanReply toPlanReply(const PlanPath::Response& response);
 
 }  // namespace roomba_rrt::nav_node

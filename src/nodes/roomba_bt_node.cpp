@@ -9,13 +9,13 @@
 
 #include "behavior_node.h"
 #include "nav_behavior.h"
-#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--tree-nodes-model") == 0) {
-      std::cout << roomba_rrt::behavior::treeNodesModel();
+      std::cout << roomba_rrt::navigation::treeNodesModel();
       return 0;
     }
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
         const std::string tree_file = node_params.get<std::string>(
             "tree_file", roomba_rrt::nodes::packageConfigFile("roomba_tree.xml"));
         ROS_INFO("roomba_bt: tree from %s", tree_file.c_str());
-        if (roomba_rrt::behavior::usesNavigationLeaves(tree_file)) {
+        if (roomba_rrt::navigation::usesNavigationLeaves(tree_file)) {
           return roomba_rrt::nav_node::makeNavBehavior(node_params, params, seed, tree_file);
         }
         return std::make_unique<RoombaBt>(params, seed, tree_file);

@@ -37,13 +37,13 @@
 #include "node_params.h"
 #include "reconfigure.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 #include "sim_ros.h"
 
 namespace roomba_rrt {
 namespace {
 
-using sim::World;
+using world::World;
 using Clock = std::chrono::steady_clock;        // the node's one wall clock
 using Seconds = std::chrono::duration<double>;  // of wall-clock time
 
@@ -63,9 +63,9 @@ World loadWorldParameters(nodes::NodeParams& params) {
   const std::string default_file =
       ros::package::getPath("roomba_rrt") + "/config/roomba_world.yaml";
   const std::string world_file = params.get<std::string>("world_file", default_file);
-  World world = sim::loadWorld(world_file);
+  World world = world::loadWorld(world_file);
   // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
-  const std::string notice = sim::defaultsNotice(world, world_file);
+  const std::string notice = world::defaultsNotice(world, world_file);
   if (world.defaulted_sections.size() == 4) {
     ROS_WARN("roomba_sim: %s", notice.c_str());
   } else if (!notice.empty()) {
@@ -93,7 +93,7 @@ World loadWorldParameters(nodes::NodeParams& params) {
     const bool applies = world.robots.empty() || std::string(name).rfind("initial_pose/", 0) != 0;
     if (applies) *value = params.get(name, *value);
   }
-  sim::validate(world);
+  world::validate(world);
   return world;
 }
 
@@ -188,7 +188,7 @@ class RoombaSimNode {
   }
 
   /// Robot i's latest command, or a stop when it is older than command_timeout.
-  sim::Velocity activeCommand(std::size_t robot, const ros::Time& now) const {
+  robot::Velocity activeCommand(std::size_t robot, const ros::Time& now) const {
     const RobotIo& io = robots_[robot];
     if (!io.command_time || (now - *io.command_time).toSec() > command_timeout_) {
       return {};
@@ -220,7 +220,7 @@ class RoombaSimNode {
           World next = sim_.world();
           next.real_time_factor = c.real_time_factor;
           next.command_timeout = c.command_timeout;
-          sim::validate(next);
+          world::validate(next);
           sim_.setSpeedLimits(c.max_linear_speed, c.max_angular_speed);
           real_time_factor_ = c.real_time_factor;
           command_timeout_ = c.command_timeout;
@@ -252,7 +252,7 @@ class RoombaSimNode {
     transforms_.resize(robots_.size());
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       const RobotIo& io = robots_[i];
-      const sim::Pose2D& pose = sim_.pose(i);
+      const robot::Pose2D& pose = sim_.pose(i);
       io.odom_pub.publish(sim_node::toOdometry(pose, sim_.lastCommand(i), io.frames, stamp));
       io.bumper_pub.publish(sim_node::toBumper(sim_.bumper(i), io.frames, stamp));
       transforms_[i] = sim_node::toOdomTransform(pose, io.frames, stamp);
@@ -302,11 +302,11 @@ class RoombaSimNode {
     sim_node::RobotFrames frames;  ///< topic prefix and tf frames, built once
     ros::Publisher odom_pub, bumper_pub, coverage_pub;
     ros::Subscriber cmd_sub;
-    sim::Velocity command;
+    robot::Velocity command;
     std::optional<ros::Time> command_time;
   };
   std::vector<RobotIo> robots_;
-  std::vector<sim::Velocity> commands_ = std::vector<sim::Velocity>(robots_.size());
+  std::vector<robot::Velocity> commands_ = std::vector<robot::Velocity>(robots_.size());
   std::vector<geometry_msgs::TransformStamped> transforms_;
   std::vector<visualization_msgs::Marker> trails_;  ///< one per robot
 
@@ -327,7 +327,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle pnh("~");
   const bool use_sim_time = ros::param::param("/use_sim_time", false);
   roomba_rrt::nodes::NodeParams params(pnh);
-  roomba_rrt::sim::World world;
+  roomba_rrt::world::World world;
   try {
     world = roomba_rrt::loadWorldParameters(params);
   } catch (const std::invalid_argument& e) {

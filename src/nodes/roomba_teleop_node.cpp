@@ -24,8 +24,8 @@
 
 namespace {
 
-using roomba_rrt::sim::BumperState;
-using roomba_rrt::sim::Velocity;
+using roomba_rrt::robot::BumperState;
+using roomba_rrt::robot::Velocity;
 namespace teleop = roomba_rrt::teleop;
 
 std::atomic<bool> g_signalled{false};

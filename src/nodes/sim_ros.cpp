@@ -43,7 +43,7 @@ Marker makeBox(const std::string& ns, int id, double x0, double y0, double x1, d
 /// Robot i's disc, heading, trail (when it has two points) and, when named, its name.
 void addRobotMarkers(const sim::MultiRobotSimulator& sim, std::size_t i, const Marker& trail,
                      visualization_msgs::MarkerArray& array) {
-  const sim::Pose2D& pose = sim.pose(i);
+  const robot::Pose2D& pose = sim.pose(i);
   const double r = sim.spec(i).radius;
   const int id = static_cast<int>(i);
   auto robot = makeMarker("robot", id, Marker::CYLINDER,
@@ -87,7 +87,7 @@ RobotFrames robotFrames(const std::string& name) {
   return {prefix, prefix + "odom", prefix + "base_link"};
 }
 
-nav_msgs::Odometry toOdometry(const sim::Pose2D& pose, const sim::Velocity& applied,
+nav_msgs::Odometry toOdometry(const robot::Pose2D& pose, const robot::Velocity& applied,
                               const RobotFrames& frames, const ros::Time& stamp) {
   nav_msgs::Odometry odom;
   odom.header.stamp = stamp;
@@ -101,7 +101,8 @@ nav_msgs::Odometry toOdometry(const sim::Pose2D& pose, const sim::Velocity& appl
   return odom;
 }
 
-Bumper toBumper(const sim::BumperState& bumper, const RobotFrames& frames, const ros::Time& stamp) {
+Bumper toBumper(const robot::BumperState& bumper, const RobotFrames& frames,
+                const ros::Time& stamp) {
   Bumper msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = frames.base_link;
@@ -111,8 +112,8 @@ Bumper toBumper(const sim::BumperState& bumper, const RobotFrames& frames, const
   return msg;
 }
 
-geometry_msgs::TransformStamped toOdomTransform(const sim::Pose2D& pose, const RobotFrames& frames,
-                                                const ros::Time& stamp) {
+geometry_msgs::TransformStamped toOdomTransform(const robot::Pose2D& pose,
+                                                const RobotFrames& frames, const ros::Time& stamp) {
   geometry_msgs::TransformStamped tf;
   tf.header.stamp = stamp;
   tf.header.frame_id = frames.odom;
@@ -163,7 +164,7 @@ Marker makeTrail(std::size_t robot) {
   return trail;
 }
 
-void extendTrail(const sim::Pose2D& pose, Marker& trail) {
+void extendTrail(const robot::Pose2D& pose, Marker& trail) {
   std::vector<geometry_msgs::Point>& points = trail.points;
   if (!points.empty()) {
     const auto& last = points.back();
@@ -179,7 +180,7 @@ void extendTrail(const sim::Pose2D& pose, Marker& trail) {
   points.push_back(p);
 }
 
-std::vector<Marker> worldMarkers(const sim::World& w) {
+std::vector<Marker> worldMarkers(const world::World& w) {
   const double t = kWallThickness;
   std::vector<Marker> markers = {
       makeBox("walls", 0, -t, -t, 0, w.height + t, kWallHeight, kWallColour),
@@ -188,7 +189,7 @@ std::vector<Marker> worldMarkers(const sim::World& w) {
       makeBox("walls", 3, 0, w.height, w.width, w.height + t, kWallHeight, kWallColour),
   };
   int id = 0;
-  for (const sim::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.circles) {
     auto m = makeMarker("furniture", id++, Marker::CYLINDER, kFurnitureColour);
     m.pose.position.x = c.center.x;
     m.pose.position.y = c.center.y;
@@ -197,7 +198,7 @@ std::vector<Marker> worldMarkers(const sim::World& w) {
     m.scale.z = kFurnitureHeight;
     markers.push_back(m);
   }
-  for (const sim::Rectangle& b : w.rectangles) {
+  for (const geometry::Rectangle& b : w.rectangles) {
     markers.push_back(makeBox("furniture", id++, b.min_x, b.min_y, b.max_x, b.max_y,
                               kFurnitureHeight, kFurnitureColour));
   }

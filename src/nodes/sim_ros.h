@@ -17,10 +17,10 @@
 
 #include <roomba_rrt/Bumper.h>
 
+#include "roomba_rrt/robot/robot_state.h"
 #include "roomba_rrt/sim/coverage_grid.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
-#include "roomba_rrt/sim/robot_state.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sim_node {
 
@@ -36,15 +36,16 @@ RobotFrames robotFrames(const std::string& name);
 
 /// The robot's pose in its odom frame (which is the room's: odometry is perfect, so every
 /// covariance is zero) and the command it applied, as velocities in base_link.
-nav_msgs::Odometry toOdometry(const sim::Pose2D& pose, const sim::Velocity& applied,
+nav_msgs::Odometry toOdometry(const robot::Pose2D& pose, const robot::Velocity& applied,
                               const RobotFrames& frames, const ros::Time& stamp);
 
 /// The bumper, in base_link.
-Bumper toBumper(const sim::BumperState& bumper, const RobotFrames& frames, const ros::Time& stamp);
+Bumper toBumper(const robot::BumperState& bumper, const RobotFrames& frames,
+                const ros::Time& stamp);
 
 /// odom → base_link at the robot's pose.
-geometry_msgs::TransformStamped toOdomTransform(const sim::Pose2D& pose, const RobotFrames& frames,
-                                                const ros::Time& stamp);
+geometry_msgs::TransformStamped toOdomTransform(const robot::Pose2D& pose,
+                                                const RobotFrames& frames, const ros::Time& stamp);
 
 /// map → odom, the identity (published once, latched, by the static broadcaster).
 geometry_msgs::TransformStamped toMapTransform(const RobotFrames& frames, const ros::Time& stamp);
@@ -62,12 +63,12 @@ visualization_msgs::Marker makeTrail(std::size_t robot);
 
 /// Adds the pose to the trail when it is 2 cm or more from the last point; a full trail (5000
 /// points, 100 m of path) first drops its older half.
-void extendTrail(const sim::Pose2D& pose, visualization_msgs::Marker& trail);
+void extendTrail(const robot::Pose2D& pose, visualization_msgs::Marker& trail);
 
 /// Walls (namespace "walls", ids 0–3: left, right, bottom, top) and furniture (namespace
 /// "furniture", circles then rectangles from id 0) as boxes and cylinders standing on the floor
 /// of frame "map". They never change: build them once.
-std::vector<visualization_msgs::Marker> worldMarkers(const sim::World& world);
+std::vector<visualization_msgs::Marker> worldMarkers(const world::World& world);
 
 /// What rviz shows, every marker in frame "map" stamped `stamp`: `world_markers`, then for each
 /// robot i (id i in each namespace) its disc (namespace "robot", blue, red while its bumper is

@@ -4,10 +4,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "roomba_rrt/sim/world.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
 #include "roomba_rrt/util/yaml_reader.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -88,7 +88,7 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
   return scenarios;
 }
 
-Problem roomProblem(const sim::World& world) {
+Problem roomProblem(const world::World& world) {
   Problem p;
   p.bounds = {0, world.width, 0, world.height};
   p.obstacles = world.circles;
@@ -98,6 +98,8 @@ Problem roomProblem(const sim::World& world) {
   return p;
 }
 
-Problem loadRoom(const std::string& world_file) { return roomProblem(sim::loadWorld(world_file)); }
+Problem loadRoom(const std::string& world_file) {
+  return roomProblem(world::loadWorld(world_file));
+}
 
 }  // namespace roomba_rrt::planning

@@ -7,15 +7,14 @@ namespace roomba_rrt::sim {
 
 namespace {
 
-/// Overlap below this (m) is floating-point rounding of a push-back, not penetration.
-constexpr double kPenetrationTolerance = 1e-9;
+using world::kPenetrationTolerance;
 /// A contact closer than this to the heading line (sin 10°) closes both bump switches.
 const double kHeadOnLateral = std::sin(10.0 * M_PI / 180.0);
 /// Enough for any corner: each pass removes the deepest overlaps, two usually suffice.
 constexpr int kMaxResolvePasses = 8;
 
 /// One pass over every surface; returns true when something was pushed.
-bool pushOutOnce(const World& world, const double r, double& x, double& y) {
+bool pushOutOnce(const world::World& world, const double r, double& x, double& y) {
   bool pushed = false;
   // Walls: the normal is an axis, so pushing back is a clamp (exactly onto the wall).
   if (x < r || x > world.width - r) {
@@ -26,7 +25,7 @@ bool pushOutOnce(const World& world, const double r, double& x, double& y) {
     y = std::clamp(y, r, world.height - r);
     pushed = true;
   }
-  for (const Circle& c : world.circles) {
+  for (const geometry::Circle& c : world.circles) {
     const double dx = x - c.center.x, dy = y - c.center.y;
     const double reach = c.radius + r;
     const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, c.center);
@@ -40,7 +39,7 @@ bool pushOutOnce(const World& world, const double r, double& x, double& y) {
     }
     pushed = true;
   }
-  for (const Rectangle& box : world.rectangles) {
+  for (const geometry::Rectangle& box : world.rectangles) {
     const geometry::Point2 q = geometry::closestPoint(box, geometry::Point2{x, y});
     const double dx = x - q.x, dy = y - q.y;
     const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, q);
@@ -69,7 +68,8 @@ bool pushOutOnce(const World& world, const double r, double& x, double& y) {
 }
 
 /// Closes the switches for a contact in direction (nx, ny) from a robot heading (cos_t, sin_t).
-inline void closeSwitches(BumperState& bumper, double cos_t, double sin_t, double nx, double ny) {
+inline void closeSwitches(robot::BumperState& bumper, double cos_t, double sin_t, double nx,
+                          double ny) {
   const double norm = std::hypot(nx, ny);
   const double lateral = norm > 0 ? (-sin_t * nx + cos_t * ny) / norm : 0.0;  // sin(bearing)
   bumper.pressed = true;
@@ -78,31 +78,19 @@ inline void closeSwitches(BumperState& bumper, double cos_t, double sin_t, doubl
 }
 
 // The public functions call these from inside the library, where they can be inlined (the
-// library is shared: a call to an exported function would go through the PLT).
-bool penetratesDisc(const World& world, const double radius, double x, double y) {
-  const double r = radius - kPenetrationTolerance;
-  if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
-  const geometry::Point2 p{x, y};
-  for (const Circle& c : world.circles) {
-    const double reach = c.radius + r;
-    if (geometry::squaredDistance(p, c.center) < reach * reach) return true;
-  }
-  for (const Rectangle& box : world.rectangles) {
-    if (geometry::squaredDistance(box, p) < r * r) return true;
-  }
-  return false;
-}
-
-bool resolveDisc(const World& world, const double radius, double& x, double& y) {
+// library is shared: a call to an exported function would go through the PLT; world::penetrates
+// is inline in world.h).
+bool resolveDisc(const world::World& world, const double radius, double& x, double& y) {
   for (int pass = 0; pass < kMaxResolvePasses; ++pass) {
     if (!pushOutOnce(world, radius, x, y)) return true;
   }
-  return !penetratesDisc(world, radius, x, y);
+  return !world::penetrates(world, radius, x, y);
 }
 
-BumperState senseDisc(const World& world, const double radius, const Pose2D& pose) {
+robot::BumperState senseDisc(const world::World& world, const double radius,
+                             const robot::Pose2D& pose) {
   const double r = radius + kContactTolerance;
-  BumperState bumper;
+  robot::BumperState bumper;
   double cos_t = 0, sin_t = 0;  // of the heading, computed on the first contact only
   // (nx, ny): direction from the robot's centre towards the contact, any length.
   auto contact = [&](double nx, double ny) {
@@ -118,10 +106,10 @@ BumperState senseDisc(const World& world, const double radius, const Pose2D& pos
   if (y <= r) contact(0, -1);
   if (y >= world.height - r) contact(0, 1);
   const geometry::Point2 p{x, y};
-  for (const Circle& c : world.circles) {
+  for (const geometry::Circle& c : world.circles) {
     if (geometry::withinMargin(c, p, r)) contact(c.center.x - x, c.center.y - y);
   }
-  for (const Rectangle& box : world.rectangles) {
+  for (const geometry::Rectangle& box : world.rectangles) {
     const geometry::Point2 q = geometry::closestPoint(box, p);
     if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
   }
@@ -130,31 +118,24 @@ BumperState senseDisc(const World& world, const double radius, const Pose2D& pos
 
 }  // namespace
 
-bool penetrates(const World& world, double x, double y) {
-  return penetratesDisc(world, world.robot_radius, x, y);
-}
-
-bool resolvePenetration(const World& world, double& x, double& y) {
+bool resolvePenetration(const world::World& world, double& x, double& y) {
   return resolveDisc(world, world.robot_radius, x, y);
 }
 
-BumperState senseBumper(const World& world, const Pose2D& pose) {
+robot::BumperState senseBumper(const world::World& world, const robot::Pose2D& pose) {
   return senseDisc(world, world.robot_radius, pose);
 }
 
-bool penetrates(const World& world, double radius, double x, double y) {
-  return penetratesDisc(world, radius, x, y);
-}
-
-bool resolvePenetration(const World& world, double radius, double& x, double& y) {
+bool resolvePenetration(const world::World& world, double radius, double& x, double& y) {
   return resolveDisc(world, radius, x, y);
 }
 
-BumperState senseBumper(const World& world, double radius, const Pose2D& pose) {
+robot::BumperState senseBumper(const world::World& world, double radius,
+                               const robot::Pose2D& pose) {
   return senseDisc(world, radius, pose);
 }
 
-void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny) {
+void pressBumper(robot::BumperState& bumper, const robot::Pose2D& pose, double nx, double ny) {
   closeSwitches(bumper, std::cos(pose.theta), std::sin(pose.theta), nx, ny);
 }
 

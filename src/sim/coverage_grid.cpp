@@ -10,11 +10,11 @@ namespace {
 
 constexpr int kBitsPerWord = 64;
 
-bool insideFurniture(const World& world, double x, double y) {
-  for (const Circle& c : world.circles) {
+bool insideFurniture(const world::World& world, double x, double y) {
+  for (const geometry::Circle& c : world.circles) {
     if (std::hypot(x - c.center.x, y - c.center.y) <= c.radius) return true;
   }
-  for (const Rectangle& box : world.rectangles) {
+  for (const geometry::Rectangle& box : world.rectangles) {
     if (geometry::contains(box, {x, y})) return true;
   }
   return false;
@@ -47,7 +47,7 @@ std::uint64_t spanMask(int first, int last) {
 
 }  // namespace
 
-CoverageGrid::CoverageGrid(const World& world)
+CoverageGrid::CoverageGrid(const world::World& world)
     : cell_(world.coverage_cell_size),
       inverse_cell_(1.0 / cell_),
       columns_(static_cast<int>(std::ceil(world.width / cell_ - 1e-9))),

@@ -17,20 +17,20 @@ constexpr double kPenetrationTolerance = 1e-9;
 /// Passes of walls-then-robots before a robot that still overlaps keeps its previous position.
 constexpr int kMaxPlacePasses = 8;
 
-const World& validated(const World& world) {
+const world::World& validated(const world::World& world) {
   validate(world);
   return world;
 }
 
-double largestRadius(const std::vector<RobotSpec>& specs) {
+double largestRadius(const std::vector<world::RobotSpec>& specs) {
   double radius = 0;
-  for (const RobotSpec& s : specs) radius = std::max(radius, s.radius);
+  for (const world::RobotSpec& s : specs) radius = std::max(radius, s.radius);
   return radius;
 }
 
 }  // namespace
 
-MultiRobotSimulator::MultiRobotSimulator(const World& world)
+MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
     : world_(validated(world)),
       specs_(robotsOf(world_)),
       robots_(specs_.size()),
@@ -39,7 +39,7 @@ MultiRobotSimulator::MultiRobotSimulator(const World& world)
             static_cast<int>(specs_.size())),
       max_radius_(largestRadius(specs_)) {
   for (std::size_t i = 0; i < specs_.size(); ++i) {
-    const Pose2D& p = specs_[i].initial_pose;
+    const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
     grid_.insert(static_cast<int>(i), p.x, p.y);
   }
@@ -51,7 +51,7 @@ bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& 
   bool pushed = false;
   grid_.forEachNear(x, y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
-    const Pose2D& q = robots_[j].pose;
+    const robot::Pose2D& q = robots_[j].pose;
     const double reach = r + specs_[j].radius;
     const double dx = x - q.x, dy = y - q.y;
     const double d2 = dx * dx + dy * dy;
@@ -100,7 +100,7 @@ void MultiRobotSimulator::senseContact() {
     if (!others) continue;
     grid_.forEachNear(robot.pose.x, robot.pose.y, [&](int j) {
       if (static_cast<std::size_t>(j) == i) return;
-      const Pose2D& q = robots_[j].pose;
+      const robot::Pose2D& q = robots_[j].pose;
       const double reach = r + specs_[j].radius + kContactTolerance;
       const double dx = q.x - robot.pose.x, dy = q.y - robot.pose.y;
       if (dx * dx + dy * dy <= reach * reach) pressBumper(robot.bumper, robot.pose, dx, dy);
@@ -108,16 +108,16 @@ void MultiRobotSimulator::senseContact() {
   }
 }
 
-void MultiRobotSimulator::move(const std::vector<Velocity>& commands) {
+void MultiRobotSimulator::move(const std::vector<robot::Velocity>& commands) {
   if (commands.size() != robots_.size()) {
     throw std::invalid_argument("MultiRobotSimulator::move: " + std::to_string(commands.size()) +
                                 " commands for " + std::to_string(robots_.size()) + " robots");
   }
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     Robot& robot = robots_[i];
-    const RobotSpec& spec = specs_[i];
+    const world::RobotSpec& spec = specs_[i];
     robot.last_command = clampCommand(commands[i], spec.max_linear_speed, spec.max_angular_speed);
-    const Pose2D previous = robot.pose;
+    const robot::Pose2D previous = robot.pose;
     robot.pose = integrateArc(robot.pose, robot.last_command, world_.step);
     // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
     if (!place(i, robot.pose.x, robot.pose.y)) {
@@ -132,7 +132,7 @@ void MultiRobotSimulator::move(const std::vector<Velocity>& commands) {
   ++steps_;
 }
 
-void MultiRobotSimulator::step(const std::vector<Velocity>& commands) {
+void MultiRobotSimulator::step(const std::vector<robot::Velocity>& commands) {
   senseContact();
   move(commands);
 }
@@ -148,11 +148,11 @@ CoverageGrid MultiRobotSimulator::unionCoverageGrid() const {
   return all;
 }
 
-void MultiRobotSimulator::setPose(std::size_t robot, const Pose2D& pose) {
+void MultiRobotSimulator::setPose(std::size_t robot, const robot::Pose2D& pose) {
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
     throw util::InvalidInput("pose", "must be finite");
   }
-  Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  robot::Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
   if (!place(robot, placed.x, placed.y)) {
     throw util::InvalidInput("pose", "the robot does not fit at the requested pose");
   }
@@ -168,7 +168,7 @@ void MultiRobotSimulator::reset() {
   // Everyone off the floor first, so that a robot's initial pose never collides with another's
   // current one; the initial poses are clear of each other (validate()).
   for (std::size_t i = 0; i < robots_.size(); ++i) {
-    const Pose2D& p = specs_[i].initial_pose;
+    const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
     grid_.move(static_cast<int>(i), p.x, p.y);
   }
@@ -179,10 +179,10 @@ void MultiRobotSimulator::reset() {
   }
 }
 
-std::vector<RobotSpec> spreadRobots(const World& world, int n) {
-  if (n < 1 || static_cast<std::size_t>(n) > kMaxRobots) {
+std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n) {
+  if (n < 1 || static_cast<std::size_t>(n) > world::kMaxRobots) {
     throw std::invalid_argument("spreadRobots: the number of robots must be in [1, " +
-                                std::to_string(kMaxRobots) + "], got " + std::to_string(n));
+                                std::to_string(world::kMaxRobots) + "], got " + std::to_string(n));
   }
   const double r = world.robot_radius;
   for (int cells = n; cells <= 64 * n; ++cells) {
@@ -191,13 +191,14 @@ std::vector<RobotSpec> spreadRobots(const World& world, int n) {
     const int columns = (cells + rows - 1) / rows;
     const double w = world.width / columns, h = world.height / rows;
     if (std::min(w, h) < 2 * r) break;  // neighbours would overlap
-    std::vector<RobotSpec> robots;
+    std::vector<world::RobotSpec> robots;
     for (int row = 0; row < rows && static_cast<int>(robots.size()) < n; ++row) {
       for (int column = 0; column < columns && static_cast<int>(robots.size()) < n; ++column) {
         const double x = (column + 0.5) * w, y = (row + 0.5) * h;
         if (penetrates(world, r, x, y)) continue;
-        robots.push_back(RobotSpec{"robot" + std::to_string(robots.size() + 1), Pose2D{x, y, 0.0},
-                                   r, world.max_linear_speed, world.max_angular_speed});
+        robots.push_back(world::RobotSpec{"robot" + std::to_string(robots.size() + 1),
+                                          robot::Pose2D{x, y, 0.0}, r, world.max_linear_speed,
+                                          world.max_angular_speed});
       }
     }
     if (static_cast<int>(robots.size()) == n) return robots;
@@ -207,16 +208,16 @@ std::vector<RobotSpec> spreadRobots(const World& world, int n) {
 }
 
 void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_angular_speed) {
-  World next = world_;
+  world::World next = world_;
   next.max_linear_speed = max_linear_speed;
   next.max_angular_speed = max_angular_speed;
-  for (RobotSpec& robot : next.robots) {
+  for (world::RobotSpec& robot : next.robots) {
     robot.max_linear_speed = max_linear_speed;
     robot.max_angular_speed = max_angular_speed;
   }
   validate(next);  // the world's rules: ranges, and v·step below every robot's radius
   world_ = next;
-  for (RobotSpec& spec : specs_) {
+  for (world::RobotSpec& spec : specs_) {
     spec.max_linear_speed = max_linear_speed;
     spec.max_angular_speed = max_angular_speed;
   }

@@ -10,23 +10,25 @@
 namespace roomba_rrt::sim {
 
 namespace {
-const World& validated(const World& world) {
+const world::World& validated(const world::World& world) {
   validate(world);
   return world;
 }
 }  // namespace
 
-Simulator::Simulator(const World& world) : world_(validated(world)), coverage_(world_) { reset(); }
+Simulator::Simulator(const world::World& world) : world_(validated(world)), coverage_(world_) {
+  reset();
+}
 
-BumperState Simulator::senseContact() {
+robot::BumperState Simulator::senseContact() {
   resolvePenetration(world_, pose_.x, pose_.y);
   bumper_ = senseBumper(world_, pose_);
   return bumper_;
 }
 
-void Simulator::move(const Velocity& cmd) {
+void Simulator::move(const robot::Velocity& cmd) {
   last_command_ = clampCommand(cmd, world_.max_linear_speed, world_.max_angular_speed);
-  const Pose2D previous = pose_;
+  const robot::Pose2D previous = pose_;
   pose_ = integrateArc(pose_, last_command_, world_.step);
   // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
   if (!resolvePenetration(world_, pose_.x, pose_.y)) {
@@ -39,17 +41,17 @@ void Simulator::move(const Velocity& cmd) {
   ++steps_;
 }
 
-BumperState Simulator::step(const Velocity& cmd) {
-  const BumperState bumper = senseContact();
+robot::BumperState Simulator::step(const robot::Velocity& cmd) {
+  const robot::BumperState bumper = senseContact();
   move(cmd);
   return bumper;
 }
 
-void Simulator::setPose(const Pose2D& pose) {
+void Simulator::setPose(const robot::Pose2D& pose) {
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
     throw util::InvalidInput("pose", "must be finite");
   }
-  Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  robot::Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
   if (!resolvePenetration(world_, placed.x, placed.y)) {
     throw util::InvalidInput("pose", "the robot does not fit at the requested pose");
   }

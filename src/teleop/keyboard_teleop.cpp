@@ -132,7 +132,7 @@ void validate(const TeleopLimits& limits) {
   }
 }
 
-sim::Velocity applyKey(const sim::Velocity& command, Key key, const TeleopLimits& limits) {
+robot::Velocity applyKey(const robot::Velocity& command, Key key, const TeleopLimits& limits) {
   const auto linear = [&](int press) {
     return stepped(command.v, press, limits.linear_step, limits.max_linear_speed);
   };
@@ -156,7 +156,7 @@ sim::Velocity applyKey(const sim::Velocity& command, Key key, const TeleopLimits
   return command;
 }
 
-std::string statusLine(const sim::Velocity& command, const sim::BumperState& bumper,
+std::string statusLine(const robot::Velocity& command, const robot::BumperState& bumper,
                        bool bumper_known) {
   const char* contact = !bumper_known                 ? "no bumper message yet"
                         : !bumper.pressed             ? "free"

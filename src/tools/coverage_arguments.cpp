@@ -43,9 +43,9 @@ std::vector<int> parseCounts(const std::string& flag, const std::string& text) {
     } catch (const std::invalid_argument&) {
       n = -1;
     }
-    if (n < 1 || n > static_cast<double>(sim::kMaxRobots) || n != std::floor(n)) {
+    if (n < 1 || n > static_cast<double>(world::kMaxRobots) || n != std::floor(n)) {
       throw std::invalid_argument(flag + " needs robot counts in [1, " +
-                                  std::to_string(sim::kMaxRobots) + "] like 4 or 1,2,4, got '" +
+                                  std::to_string(world::kMaxRobots) + "] like 4 or 1,2,4, got '" +
                                   text + "'");
     }
     counts.push_back(static_cast<int>(n));

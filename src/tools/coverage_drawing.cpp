@@ -217,7 +217,7 @@ double drawCountLegend(cairo_t* cr, const PlotFrame& f, const FleetStatistics& f
 
 void drawRunPicture(const std::string& file, const sim::Simulator& simulator, const Run& run,
                     const std::string& title) {
-  const sim::World& world = simulator.world();
+  const world::World& world = simulator.world();
   const RoomCanvas c{world.height};
   const double legend = 190.0;
   PngImage image(static_cast<int>(world.width * c.scale + 2 * c.margin + legend),

@@ -33,9 +33,9 @@ Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, uns
   std::size_t next_checkpoint = 0;
   double theta = simulator.pose().theta, previous_wrapped = theta;
   for (long k = 0; k < steps; ++k) {
-    const sim::BumperState bumper = simulator.senseContact();
-    const sim::Pose2D pose = simulator.pose();  // the pose the behaviour sees
-    const sim::Velocity cmd = behavior->tick(bumper);
+    const robot::BumperState bumper = simulator.senseContact();
+    const robot::Pose2D pose = simulator.pose();  // the pose the behaviour sees
+    const robot::Velocity cmd = behavior->tick(bumper);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;
@@ -63,7 +63,7 @@ FleetRun simulateFleet(const CoverageOptions& o, const behavior::RoombaParams& p
   for (std::size_t i = 0; i < simulator.size(); ++i) {
     behaviors.push_back(makeBehavior(o, params, seed + 1000u * static_cast<unsigned>(i)));
   }
-  std::vector<sim::Velocity> commands(simulator.size());
+  std::vector<robot::Velocity> commands(simulator.size());
   const double step = simulator.world().step;
   const long steps = std::lround(o.duration / step);
   const long per_point = std::max(1L, std::lround(kCurveInterval / step));

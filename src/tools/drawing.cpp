@@ -43,20 +43,20 @@ void drawTitle(cairo_t* cr, const std::string& title, double x, double baseline,
   cairo_show_text(cr, title.c_str());
 }
 
-void drawFloor(cairo_t* cr, const sim::World& world, const RoomCanvas& c) {
+void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
   cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
   cairo_fill(cr);
 }
 
-void drawFurnitureAndWalls(cairo_t* cr, const sim::World& world, const RoomCanvas& c) {
+void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
-  for (const sim::Circle& circle : world.circles) {
+  for (const geometry::Circle& circle : world.circles) {
     cairo_new_sub_path(cr);
     cairo_arc(cr, c.px(circle.center.x), c.py(circle.center.y), circle.radius * c.scale, 0,
               2 * kPi);
   }
-  for (const sim::Rectangle& r : world.rectangles) {
+  for (const geometry::Rectangle& r : world.rectangles) {
     cairo_rectangle(cr, c.px(r.min_x), c.py(r.max_y), (r.max_x - r.min_x) * c.scale,
                     (r.max_y - r.min_y) * c.scale);
   }

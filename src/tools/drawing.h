@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::tools {
 
@@ -57,9 +57,9 @@ struct RoomCanvas {
 };
 
 /// The floor, light grey.
-void drawFloor(cairo_t* cr, const sim::World& world, const RoomCanvas& c);
+void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c);
 
 /// Furniture (filled, brown) and the walls (black outline).
-void drawFurnitureAndWalls(cairo_t* cr, const sim::World& world, const RoomCanvas& c);
+void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c);
 
 }  // namespace roomba_rrt::tools

@@ -26,8 +26,8 @@
 #include "progress_bar.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/simulator.h"
-#include "roomba_rrt/sim/world.h"
 #include "roomba_rrt/util/statistics.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -40,7 +40,7 @@ double secondsSince(std::chrono::steady_clock::time_point begin) {
 
 /// --robots (or a world naming robots): every count × every seed, a table of union coverage, and
 /// the plot.
-int runFleets(const CoverageOptions& o, const sim::World& world, const RoombaParams& params) {
+int runFleets(const CoverageOptions& o, const world::World& world, const RoombaParams& params) {
   if (!o.csv.empty() || !o.png.empty()) {
     throw std::invalid_argument("--csv and --png draw one unnamed robot; " + o.world +
                                 " names robots: use --plot");
@@ -51,7 +51,7 @@ int runFleets(const CoverageOptions& o, const sim::World& world, const RoombaPar
   ProgressBar progress(o.seeds * static_cast<int>(counts.size()), "runs");
   const auto begin = std::chrono::steady_clock::now();
   for (const int n : counts) {
-    sim::World fleet_world = world;
+    world::World fleet_world = world;
     if (!o.robots.empty()) fleet_world.robots = sim::spreadRobots(world, n);
     sim::MultiRobotSimulator simulator(fleet_world);
     FleetStatistics fleet;
@@ -108,7 +108,7 @@ int runFleets(const CoverageOptions& o, const sim::World& world, const RoombaPar
 
 /// One unnamed robot: every seed, a table of coverage, the CSV of the first seed and the picture
 /// of the typical one.
-int runOne(const CoverageOptions& o, const sim::World& world, const RoombaParams& params) {
+int runOne(const CoverageOptions& o, const world::World& world, const RoombaParams& params) {
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
@@ -173,7 +173,7 @@ int run(int argc, char** argv) {
     std::fputs(coverageUsage(), stdout);
     return 0;
   }
-  const sim::World world = sim::loadWorld(o.world);
+  const world::World world = world::loadWorld(o.world);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
   if (!o.robots.empty() || !world.robots.empty()) return runFleets(o, world, params);

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "drawing.h"
-#include "roomba_rrt/behavior/nav_eval.h"
+#include "nav_eval_run.h"
 #include "roomba_rrt/bt/tree_factory.h"
 #include "tool_arguments.h"
 
@@ -38,8 +38,8 @@ const char* const kUsage =
     "  --timeout  robot seconds per goal before it counts as not reached (default 120)\n";
 
 /// The room, every run's trace (green: reached, red: not) and each goal as an arrow.
-void drawPng(const std::string& file, const roomba_rrt::sim::World& world,
-             const roomba_rrt::behavior::NavEvalReport& report, const std::string& title) {
+void drawPng(const std::string& file, const roomba_rrt::world::World& world,
+             const roomba_rrt::tools::NavEvalReport& report, const std::string& title) {
   const roomba_rrt::tools::RoomCanvas c{world.height};
   const int width = static_cast<int>(world.width * c.scale + 2 * c.margin);
   const int height = static_cast<int>(world.height * c.scale + 2 * c.margin + c.header);
@@ -90,7 +90,7 @@ long integer(const std::string& flag, const char* text, long lo, long hi) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace roomba_rrt::behavior;
+  using namespace roomba_rrt::tools;
   NavEvalOptions options;
   std::string world_file = ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
   std::string tree_file = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    const roomba_rrt::sim::World world = roomba_rrt::sim::loadWorld(world_file);
+    const roomba_rrt::world::World world = roomba_rrt::world::loadWorld(world_file);
     const bool bar = isatty(STDERR_FILENO);
     const NavEvalReport report =
         evaluateNavigation(world, tree_file, options, [bar](int done, int total) {

@@ -22,8 +22,8 @@ constexpr int kTenMinutes = 10 * 60 * 60;
 class LineRoom {
  public:
   explicit LineRoom(unsigned seed) : rng_(seed) {}
-  sim::BumperState sense() const { return {s_ >= wall_, s_ >= wall_, s_ >= wall_}; }
-  void move(const sim::Velocity& cmd) {
+  robot::BumperState sense() const { return {s_ >= wall_, s_ >= wall_, s_ >= wall_}; }
+  void move(const robot::Velocity& cmd) {
     s_ += cmd.v * kDt;
     const bool rotating = cmd.v == 0 && cmd.w != 0;
     if (rotating && !rotating_) wall_ = s_ + std::uniform_real_distribution<>(0.3, 14.0)(rng_);
@@ -50,7 +50,7 @@ TEST(FsmBtEquivalence, same_commands_for_ten_minutes_apart_from_the_bt_idle_tick
     int go_backs = 0, root_completions = 0, spirals_completed = 0;
     RoombaState previous = RoombaState::kMoveForward;
     for (int i = 0; i < kTenMinutes; ++i) {
-      const sim::Velocity cmd = fsm.tick(fsm_room.sense());
+      const robot::Velocity cmd = fsm.tick(fsm_room.sense());
       fsm_room.move(cmd);
       expected.push_back({cmd.v, cmd.w, fsm.state()});
       if (fsm.state() == RoombaState::kGoBack && previous != RoombaState::kGoBack) ++go_backs;
@@ -69,7 +69,7 @@ TEST(FsmBtEquivalence, same_commands_for_ten_minutes_apart_from_the_bt_idle_tick
     int idle_ticks = 0;
     std::size_t compared = 0;
     while (compared < expected.size()) {
-      const sim::Velocity cmd = bt.tick(bt_room.sense());
+      const robot::Velocity cmd = bt.tick(bt_room.sense());
       bt_room.move(cmd);
       if (bt.lastTickIdle()) {
         ++idle_ticks;

@@ -14,8 +14,8 @@ namespace roomba_rrt::behavior {
 namespace {
 
 constexpr double kDt = 1.0 / 60.0;
-const sim::BumperState kFree{};
-const sim::BumperState kBump{true, true, true};
+const robot::BumperState kFree{};
+const robot::BumperState kBump{true, true, true};
 
 template <class Behavior>
 class RoombaBehaviorTest : public ::testing::Test {
@@ -27,7 +27,7 @@ class RoombaBehaviorTest : public ::testing::Test {
     for (int i = 0; i < n; ++i) roomba.tick(kFree);
   }
   /// Ticks into GoBack: 10 ticks forward, then a bump; returns the bump tick's command.
-  sim::Velocity bumpAfterTenTicks() {
+  robot::Velocity bumpAfterTenTicks() {
     run(10);
     return roomba.tick(kBump);
   }
@@ -37,7 +37,7 @@ using Behaviors = ::testing::Types<RoombaFsm, RoombaBt>;
 TYPED_TEST_SUITE(RoombaBehaviorTest, Behaviors);
 
 TYPED_TEST(RoombaBehaviorTest, starts_moving_forward_at_forward_speed) {
-  const sim::Velocity cmd = this->roomba.tick(kFree);
+  const robot::Velocity cmd = this->roomba.tick(kFree);
   EXPECT_EQ(this->roomba.state(), RoombaState::kMoveForward);
   EXPECT_EQ(this->roomba.stateName(), "MoveForward");
   EXPECT_EQ(cmd.v, 0.5);
@@ -47,14 +47,14 @@ TYPED_TEST(RoombaBehaviorTest, starts_moving_forward_at_forward_speed) {
 TYPED_TEST(RoombaBehaviorTest, forward_turns_into_spiral_after_180_ticks) {
   this->run(180);
   EXPECT_EQ(this->roomba.state(), RoombaState::kMoveForward);
-  const sim::Velocity cmd = this->roomba.tick(kFree);
+  const robot::Velocity cmd = this->roomba.tick(kFree);
   EXPECT_EQ(this->roomba.state(), RoombaState::kMoveInSpiral);
   EXPECT_DOUBLE_EQ(cmd.w, 0.5 / 0.2);  // the spiral's first tick (k = 0) runs in the same tick
 }
 
 TYPED_TEST(RoombaBehaviorTest, spiral_omega_at_k_600_is_0_5_over_0_7) {
   this->run(180 + 600);
-  const sim::Velocity cmd = this->roomba.tick(kFree);  // the spiral's tick k = 600
+  const robot::Velocity cmd = this->roomba.tick(kFree);  // the spiral's tick k = 600
   EXPECT_EQ(this->roomba.state(), RoombaState::kMoveInSpiral);
   EXPECT_DOUBLE_EQ(cmd.v, 0.5);
   EXPECT_NEAR(cmd.w, 0.5 / 0.7, 1e-12);
@@ -69,7 +69,7 @@ TYPED_TEST(RoombaBehaviorTest, spiral_lasts_1200_ticks) {
 
 TYPED_TEST(RoombaBehaviorTest, a_bump_during_the_spiral_enters_go_back_in_the_same_tick) {
   this->run(180 + 50);
-  const sim::Velocity cmd = this->roomba.tick(kBump);
+  const robot::Velocity cmd = this->roomba.tick(kBump);
   EXPECT_EQ(this->roomba.state(), RoombaState::kGoBack);
   EXPECT_EQ(cmd.v, -0.1);
   EXPECT_EQ(cmd.w, 0.0);
@@ -84,7 +84,7 @@ TYPED_TEST(RoombaBehaviorTest, a_bump_has_priority_over_the_timer) {
 TYPED_TEST(RoombaBehaviorTest, go_back_lasts_30_ticks_and_moves_5_cm) {
   double travelled = this->bumpAfterTenTicks().v * kDt;  // GoBack's first tick
   for (int i = 1; i < 30; ++i) {
-    const sim::Velocity cmd = this->roomba.tick(kBump);  // the bumper is ignored in GoBack
+    const robot::Velocity cmd = this->roomba.tick(kBump);  // the bumper is ignored in GoBack
     ASSERT_EQ(this->roomba.state(), RoombaState::kGoBack) << "tick " << i;
     travelled += cmd.v * kDt;
   }
@@ -103,7 +103,7 @@ TYPED_TEST(RoombaBehaviorTest, rotate_turns_exactly_the_drawn_angle_then_moves_f
   this->run(29);
   double turned = 0;
   for (long i = 0; i < ticks; ++i) {
-    const sim::Velocity cmd = this->roomba.tick(kBump);  // the bumper is ignored in Rotate
+    const robot::Velocity cmd = this->roomba.tick(kBump);  // the bumper is ignored in Rotate
     ASSERT_EQ(this->roomba.state(), RoombaState::kRotate) << "tick " << i;
     EXPECT_EQ(cmd.v, 0.0);
     EXPECT_LE(std::fabs(cmd.w), 0.5);
@@ -118,8 +118,8 @@ TYPED_TEST(RoombaBehaviorTest, the_same_seed_reproduces_the_run_and_another_seed
   TypeParam a(RoombaParams{}, 3), b(RoombaParams{}, 3), c(RoombaParams{}, 4);
   bool all_equal = true, other_differs = false;
   for (int i = 0; i < 20000; ++i) {
-    const sim::BumperState bumper = i % 700 == 650 ? kBump : kFree;
-    const sim::Velocity va = a.tick(bumper), vb = b.tick(bumper), vc = c.tick(bumper);
+    const robot::BumperState bumper = i % 700 == 650 ? kBump : kFree;
+    const robot::Velocity va = a.tick(bumper), vb = b.tick(bumper), vc = c.tick(bumper);
     all_equal = all_equal && va.v == vb.v && va.w == vb.w;
     other_differs = other_differs || va.w != vc.w;
   }
@@ -135,7 +135,7 @@ TYPED_TEST(RoombaBehaviorTest, new_params_take_effect_when_the_next_motion_start
   tuned.go_back_time = 1.0;  // 60 ticks instead of 30
   this->roomba.setParams(tuned);
   EXPECT_EQ(this->roomba.tick(kFree).v, 0.5);  // the running MoveForward keeps its speed
-  const sim::Velocity back = this->roomba.tick(kBump);
+  const robot::Velocity back = this->roomba.tick(kBump);
   EXPECT_EQ(this->roomba.state(), RoombaState::kGoBack);
   EXPECT_EQ(back.v, -0.1);
   int go_back_ticks = 1;

@@ -11,7 +11,7 @@
 namespace roomba_rrt::behavior {
 namespace {
 
-const sim::BumperState kFree{};
+const robot::BumperState kFree{};
 
 /// Writes `xml` to a temporary file and returns its path.
 std::string writeTree(const std::string& xml) {
@@ -23,12 +23,12 @@ std::string writeTree(const std::string& xml) {
 TEST(RoombaBt, the_tick_in_which_the_root_completes_commands_zero_and_keeps_the_leaf_name) {
   RoombaBt roomba(RoombaParams{}, 1);
   for (int i = 0; i < 180 + 1200; ++i) ASSERT_FALSE(roomba.tick(kFree).v == 0);
-  const sim::Velocity idle = roomba.tick(kFree);  // MoveInSpiral's time is up: the root succeeds
+  const robot::Velocity idle = roomba.tick(kFree);  // MoveInSpiral's time is up: the root succeeds
   EXPECT_TRUE(roomba.lastTickIdle());
   EXPECT_EQ(idle.v, 0.0);
   EXPECT_EQ(idle.w, 0.0);
   EXPECT_EQ(roomba.stateName(), "MoveInSpiral");
-  const sim::Velocity next = roomba.tick(kFree);  // the root starts again from the left
+  const robot::Velocity next = roomba.tick(kFree);  // the root starts again from the left
   EXPECT_FALSE(roomba.lastTickIdle());
   EXPECT_EQ(roomba.stateName(), "MoveForward");
   EXPECT_EQ(next.v, 0.5);
@@ -39,7 +39,7 @@ TEST(RoombaBt, a_tree_file_rearranges_the_behaviour_and_names_the_leaves) {
       <Sequence><MoveInSpiral name="Swirl"/><MoveForward/></Sequence>
     </BehaviorTree></root>)");
   RoombaBt roomba(RoombaParams{}, 1, path);
-  const sim::Velocity cmd = roomba.tick(kFree);
+  const robot::Velocity cmd = roomba.tick(kFree);
   EXPECT_EQ(roomba.stateName(), "Swirl");
   EXPECT_EQ(roomba.state(), RoombaState::kMoveInSpiral);
   EXPECT_DOUBLE_EQ(cmd.w, 0.5 / 0.2);

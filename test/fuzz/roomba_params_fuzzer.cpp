@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   behavior::RoombaFsm fsm(params, 1);
-  sim::BumperState bumper;
+  robot::BumperState bumper;
   for (int i = 0; i < 200; ++i) {
     bumper.pressed = bumper.left = (i % 37 == 0);
     fsm.tick(bumper);

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "roomba_rrt/sim/simulator.h"
-#include "roomba_rrt/sim/world.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world/world.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace roomba_rrt::sim;

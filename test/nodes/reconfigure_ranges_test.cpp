@@ -15,11 +15,11 @@
 #include <roomba_rrt/RoombaSimConfig.h>
 #include <roomba_rrt/RrtPlannerConfig.h>
 
-#include "roomba_rrt/behavior/path_follower.h"
 #include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/navigation/path_follower.h"
 #include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/validate.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt {
 namespace {
@@ -87,23 +87,23 @@ TEST(ReconfigureRanges, RoombaSimCfgIsWorldLimits) {
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
   // A world where a speed limit is bounded only by its range: the smallest step, a large robot.
-  sim::World base;
-  base.step = sim::WorldLimits::kMinStep;
-  const auto field = [base](double sim::World::*member) {
+  world::World base;
+  base.step = world::WorldLimits::kMinStep;
+  const auto field = [base](double world::World::*member) {
     return [base, member](double v) {
-      sim::World w = base;
+      world::World w = base;
       w.*member = v;
-      sim::validate(w);
+      world::validate(w);
     };
   };
   expectSameRange("real_time_factor", lo.real_time_factor, hi.real_time_factor,
-                  field(&sim::World::real_time_factor));
+                  field(&world::World::real_time_factor));
   expectSameRange("command_timeout", lo.command_timeout, hi.command_timeout,
-                  field(&sim::World::command_timeout), End::kOpen);
+                  field(&world::World::command_timeout), End::kOpen);
   expectSameRange("max_linear_speed", lo.max_linear_speed, hi.max_linear_speed,
-                  field(&sim::World::max_linear_speed), End::kOpen);
+                  field(&world::World::max_linear_speed), End::kOpen);
   expectSameRange("max_angular_speed", lo.max_angular_speed, hi.max_angular_speed,
-                  field(&sim::World::max_angular_speed), End::kOpen);
+                  field(&world::World::max_angular_speed), End::kOpen);
 }
 
 TEST(ReconfigureRanges, NavFollowerCfgIsFollowerLimits) {
@@ -111,16 +111,16 @@ TEST(ReconfigureRanges, NavFollowerCfgIsFollowerLimits) {
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
   // The node refuses values below FollowerLimits::kMin at start; validate() has the maxima.
-  const auto field = [](double behavior::FollowerParams::*member) {
+  const auto field = [](double navigation::FollowerParams::*member) {
     return [member](double v) {
-      if (!(v >= behavior::FollowerLimits::kMin)) throw std::invalid_argument("below kMin");
-      behavior::FollowerParams p;
+      if (!(v >= navigation::FollowerLimits::kMin)) throw std::invalid_argument("below kMin");
+      navigation::FollowerParams p;
       p.*member = v;
       p.max_deviation = std::max(p.max_deviation, 2 * p.xy_tolerance);  // the rule between them
-      behavior::validate(p);
+      navigation::validate(p);
     };
   };
-  using P = behavior::FollowerParams;
+  using P = navigation::FollowerParams;
   expectSameRange("max_linear_speed", lo.max_linear_speed, hi.max_linear_speed,
                   field(&P::max_linear_speed));
   expectSameRange("max_angular_speed", lo.max_angular_speed, hi.max_angular_speed,

@@ -4,7 +4,9 @@
 
 #include <cmath>
 
+using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
+using namespace roomba_rrt::world;
 
 namespace {
 World furnishedRoom() {

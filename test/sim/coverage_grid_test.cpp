@@ -6,7 +6,7 @@
 #include <limits>
 
 using roomba_rrt::sim::CoverageGrid;
-using roomba_rrt::sim::World;
+using roomba_rrt::world::World;
 
 TEST(CoverageGrid, covers_the_room_with_cells_of_the_configured_size) {
   const CoverageGrid grid{World{}};

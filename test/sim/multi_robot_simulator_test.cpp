@@ -10,7 +10,9 @@
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/simulator.h"
 
+using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
+using namespace roomba_rrt::world;
 
 namespace {
 

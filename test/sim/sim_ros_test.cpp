@@ -18,8 +18,8 @@ using visualization_msgs::Marker;
 const ros::Time kStamp(12, 500000000);
 
 /// Two named robots in the lab's empty room (config/roomba_world_two_robots.yaml in code).
-sim::World twoRobots() {
-  sim::World world;
+world::World twoRobots() {
+  world::World world;
   world.robots = {{"robot1", {1.6, 2.4, 0.0}}, {"robot2", {4.8, 2.4, M_PI}}};
   return world;
 }
@@ -99,7 +99,7 @@ TEST(SimRos, coverage_is_the_fraction_as_a_float) {
 TEST(SimRos, coverage_map_shows_swept_floor_unswept_floor_and_furniture) {
   // A 1 m × 0.5 m room of 25 cm cells (4 × 2), a box over the top-right cell, and a 10 cm robot
   // whose disc covers only the centre of cell (0, 0).
-  sim::World world;
+  world::World world;
   world.width = 1.0;
   world.height = 0.5;
   world.coverage_cell_size = 0.25;
@@ -124,7 +124,7 @@ TEST(SimRos, coverage_map_shows_swept_floor_unswept_floor_and_furniture) {
 }
 
 TEST(SimRos, world_markers_are_four_walls_and_each_piece_of_furniture_in_map) {
-  sim::World world;
+  world::World world;
   world.circles = {{{1.3, 3.5}, 0.3}};
   world.rectangles = {{0.0, 0.0, 1.6, 0.6}};
   const std::vector<Marker> markers = worldMarkers(world);
@@ -191,7 +191,7 @@ TEST(SimRos, named_robots_get_a_disc_a_heading_and_their_name_with_ids_by_index)
 }
 
 TEST(SimRos, the_unnamed_robot_has_no_name_and_turns_red_while_its_bumper_is_pressed) {
-  sim::World world;
+  world::World world;
   world.initial_pose = {0.17, 2.4, M_PI};  // touching the left wall
   sim::MultiRobotSimulator sim(world);
   sim.senseContact();
@@ -215,7 +215,7 @@ TEST(SimRos, the_trail_grows_every_2_cm_and_keeps_the_newer_half_when_full) {
   ASSERT_EQ(trail.points.size(), 2u);
   EXPECT_DOUBLE_EQ(trail.points[1].x, 1.02);
 
-  const sim::MultiRobotSimulator sim{sim::World{}};
+  const sim::MultiRobotSimulator sim{world::World{}};
   const visualization_msgs::MarkerArray array = toMarkers({}, sim, {trail}, kStamp);
   ASSERT_EQ(inNamespace(array, "trail").size(), 1u) << "two points: drawn";
 

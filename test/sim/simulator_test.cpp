@@ -8,7 +8,9 @@
 
 #include "roomba_rrt/sim/contact.h"
 
+using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
+using namespace roomba_rrt::world;
 
 namespace {
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
+using roomba_rrt::robot::Pose2D;
+using roomba_rrt::robot::Velocity;
 using roomba_rrt::sim::clampCommand;
 using roomba_rrt::sim::integrateArc;
-using roomba_rrt::sim::Pose2D;
-using roomba_rrt::sim::Velocity;
 using roomba_rrt::sim::wrapAngle;
 
 namespace {

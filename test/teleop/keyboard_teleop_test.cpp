@@ -8,8 +8,8 @@
 namespace roomba_rrt::teleop {
 namespace {
 
-using sim::BumperState;
-using sim::Velocity;
+using robot::BumperState;
+using robot::Velocity;
 
 std::vector<Key> keys(std::initializer_list<Key> list) { return list; }
 

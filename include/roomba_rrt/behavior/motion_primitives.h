@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "roomba_rrt/behavior/roomba_params.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::behavior {
 
@@ -44,7 +44,7 @@ class TickCounter {
 
 /// kBumped when the bumper is pressed, else kTimeUp when `timer` is done (MoveForward,
 /// MoveInSpiral: the bumper has priority over the timer).
-inline MotionEvent bumperThenTimer(const sim::BumperState& bumper, const TickCounter& timer) {
+inline MotionEvent bumperThenTimer(const robot::BumperState& bumper, const TickCounter& timer) {
   if (bumper.pressed) return MotionEvent::kBumped;
   return timer.done() ? MotionEvent::kTimeUp : MotionEvent::kNone;
 }
@@ -61,10 +61,10 @@ class StraightMotion {
  public:
   StraightMotion(double speed, long ticks) : speed_(speed), timer_(ticks) {}
   void enter() { timer_.restart(); }
-  MotionEvent check(const sim::BumperState& bumper) const {
+  MotionEvent check(const robot::BumperState& bumper) const {
     return kStopsOnBump ? bumperThenTimer(bumper, timer_) : timerOnly(timer_);
   }
-  sim::Velocity execute() {
+  robot::Velocity execute() {
     timer_.next();
     return {speed_, 0.0};
   }
@@ -93,10 +93,10 @@ class MoveInSpiral {
         growth_per_tick_(p.spiral_factor * p.sampleTime()),
         timer_(p.ticks(p.move_in_spiral_time)) {}
   void enter() { timer_.restart(); }
-  MotionEvent check(const sim::BumperState& bumper) const {
+  MotionEvent check(const robot::BumperState& bumper) const {
     return bumperThenTimer(bumper, timer_);
   }
-  sim::Velocity execute() {
+  robot::Velocity execute() {
     const double radius = r0_ + growth_per_tick_ * static_cast<double>(timer_.next());
     return {speed_, speed_ / radius};
   }
@@ -125,8 +125,8 @@ class TurnInPlace {
 
   /// Starts a turn through `angle` (rad).
   void start(double angle);
-  MotionEvent check(const sim::BumperState&) const { return timerOnly(timer_); }
-  sim::Velocity execute() {
+  MotionEvent check(const robot::BumperState&) const { return timerOnly(timer_); }
+  robot::Velocity execute() {
     const long k = timer_.next();
     return {0.0, k + 1 < timer_.length() ? full_ : last_};
   }
@@ -151,8 +151,8 @@ class Rotate {
   static double drawAngle(std::mt19937& rng);
 
   void enter() { turn_.start(drawAngle(rng_)); }
-  MotionEvent check(const sim::BumperState& bumper) const { return turn_.check(bumper); }
-  sim::Velocity execute() { return turn_.execute(); }
+  MotionEvent check(const robot::BumperState& bumper) const { return turn_.check(bumper); }
+  robot::Velocity execute() { return turn_.execute(); }
 
  private:
   TurnInPlace turn_;
@@ -165,8 +165,8 @@ class Spin {
  public:
   Spin(double angle, double speed, double dt) : turn_(speed, dt), angle_(angle) {}
   void enter() { turn_.start(angle_); }
-  MotionEvent check(const sim::BumperState& bumper) const { return turn_.check(bumper); }
-  sim::Velocity execute() { return turn_.execute(); }
+  MotionEvent check(const robot::BumperState& bumper) const { return turn_.check(bumper); }
+  robot::Velocity execute() { return turn_.execute(); }
 
  private:
   TurnInPlace turn_;

@@ -6,7 +6,7 @@
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/behavior/roomba_state.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::behavior {
 
@@ -20,7 +20,7 @@ class RoombaBehavior {
 
   /// One tick (step 3 of the lab's simulation step): the bumper sensed in this step in, the
   /// command for this step out.
-  virtual sim::Velocity tick(const sim::BumperState& bumper) = 0;
+  virtual robot::Velocity tick(const robot::BumperState& bumper) = 0;
 
   /// The motion that produced the last command (the FSM's state, the BT's active leaf).
   RoombaState state() const { return context_.state; }

@@ -26,9 +26,9 @@ class RoombaBt final : public RoombaBehavior {
   /// The tree in `tree_file` (XML, see bt::TreeFactory).
   RoombaBt(const RoombaParams& params, std::uint32_t seed, const std::string& tree_file);
 
-  sim::Velocity tick(const sim::BumperState& bumper) override {
+  robot::Velocity tick(const robot::BumperState& bumper) override {
     context_.bumper = bumper;
-    context_.cmd = sim::Velocity{};
+    context_.cmd = robot::Velocity{};
     idle_ = tree_.tick() != bt::Status::kRunning;
     return context_.cmd;
   }

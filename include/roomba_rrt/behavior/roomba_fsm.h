@@ -19,7 +19,7 @@ class RoombaFsm final : public RoombaBehavior {
  public:
   RoombaFsm(const RoombaParams& params, std::uint32_t seed);
 
-  sim::Velocity tick(const sim::BumperState& bumper) override {
+  robot::Velocity tick(const robot::BumperState& bumper) override {
     context_.bumper = bumper;
     machine_.update();
     return context_.cmd;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "roomba_rrt/behavior/roomba_params.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::behavior {
 
@@ -22,8 +22,8 @@ const char* toString(RoombaState state);
 struct RoombaContext {
   explicit RoombaContext(std::uint32_t seed) : rng(seed) {}
 
-  sim::BumperState bumper;  ///< input: the bumper sensed in this step
-  sim::Velocity cmd;        ///< output: the command decided in this tick
+  robot::BumperState bumper;  ///< input: the bumper sensed in this step
+  robot::Velocity cmd;        ///< output: the command decided in this tick
   /// The motion that produced `cmd` (the last one that executed).
   RoombaState state = RoombaState::kMoveForward;
   /// Its name: the FSM state's, or the BT leaf's instance name.

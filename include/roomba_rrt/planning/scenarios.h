@@ -5,8 +5,8 @@
 #include <string>
 
 #include "roomba_rrt/planning/problem.h"
-#include "roomba_rrt/sim/world.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::planning {
 
@@ -17,10 +17,10 @@ std::map<std::string, Problem> loadScenarios(const std::string& path);
 /// The simulator's room as a planning problem (scenario `room`): bounds = the room's walls,
 /// obstacles = its furniture (circles and rectangles), robot_radius = the world's robot, start and
 /// goal = the robot's initial position (callers set their own).
-Problem roomProblem(const sim::World& world);
+Problem roomProblem(const world::World& world);
 
 /// roomProblem() of a world file (config/roomba_world.yaml format). Throws util::InvalidInput
-/// naming the file and the bad parameter (sim::loadWorld()).
+/// naming the file and the bad parameter (world::loadWorld()).
 Problem loadRoom(const std::string& world_file);
 
 }  // namespace roomba_rrt::planning

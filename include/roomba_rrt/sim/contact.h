@@ -2,8 +2,8 @@
 // and the bumper that contact closes.
 #pragma once
 
-#include "roomba_rrt/sim/robot_state.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/robot/robot_state.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sim {
 
@@ -17,25 +17,20 @@ constexpr double kContactTolerance = 1e-6;
 /// passes even in a corner between furniture and a wall. Returns false, leaving (x, y) where the
 /// last pass put it, when the disc does not fit at all there (a gap narrower than the robot);
 /// callers then keep the previous position.
-bool resolvePenetration(const World& world, double& x, double& y);
-
-/// True when the disc at (x, y) overlaps a wall or piece of furniture by more than the
-/// rounding tolerance (used by resolvePenetration and by tests).
-bool penetrates(const World& world, double x, double y);
+bool resolvePenetration(const world::World& world, double& x, double& y);
 
 /// The same for a disc of radius `radius` (a named robot's own), in place of world.robot_radius.
-bool resolvePenetration(const World& world, double radius, double& x, double& y);
-bool penetrates(const World& world, double radius, double x, double y);
-BumperState senseBumper(const World& world, double radius, const Pose2D& pose);
+bool resolvePenetration(const world::World& world, double radius, double& x, double& y);
+robot::BumperState senseBumper(const world::World& world, double radius, const robot::Pose2D& pose);
 
 /// Adds a contact in direction (nx, ny) from the centre of a robot at `pose` (any length) to
 /// `bumper`, closing the switches as senseBumper does: another robot touching this one.
-void pressBumper(BumperState& bumper, const Pose2D& pose, double nx, double ny);
+void pressBumper(robot::BumperState& bumper, const robot::Pose2D& pose, double nx, double ny);
 
 /// The bumper of a robot at `pose`: pressed when any wall or piece of furniture touches the disc
 /// (gap ≤ kContactTolerance). The side comes from the direction of each contact point seen from
 /// the robot: left when it is on the +y side of the heading, right on the −y side, both when it is
 /// within ±10° of the heading line (a head-on hit, as on a real Roomba).
-BumperState senseBumper(const World& world, const Pose2D& pose);
+robot::BumperState senseBumper(const world::World& world, const robot::Pose2D& pose);
 
 }  // namespace roomba_rrt::sim

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sim {
 
@@ -22,7 +22,7 @@ namespace roomba_rrt::sim {
 /// Rows are bit sets, so marking a disc costs one short span per row it crosses.
 class CoverageGrid {
  public:
-  explicit CoverageGrid(const World& world);
+  explicit CoverageGrid(const world::World& world);
 
   /// Marks every cell whose centre lies in the disc of radius r around (x, y).
   void markDisc(double x, double y, double r);

@@ -5,10 +5,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "roomba_rrt/robot/robot_state.h"
 #include "roomba_rrt/sim/coverage_grid.h"
 #include "roomba_rrt/sim/robot_grid.h"
-#include "roomba_rrt/sim/robot_state.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sim {
 
@@ -31,23 +31,23 @@ class MultiRobotSimulator {
  public:
   /// Validates the world (std::invalid_argument naming the bad parameter) and places every robot
   /// at its initial pose, with its disc already counted as swept.
-  explicit MultiRobotSimulator(const World& world);
+  explicit MultiRobotSimulator(const world::World& world);
 
   std::size_t size() const { return specs_.size(); }
-  const RobotSpec& spec(std::size_t robot) const { return specs_[robot]; }
+  const world::RobotSpec& spec(std::size_t robot) const { return specs_[robot]; }
 
   /// Steps 1–2 for every robot: pushes its disc out of the walls and furniture it penetrates
   /// (nothing to do after move()) and recomputes its bumper from walls, furniture and robots.
   void senseContact();
   /// Step 4: moves robot i by commands[i] (clamped to its limits), in index order. Throws
   /// std::invalid_argument unless there is one command per robot.
-  void move(const std::vector<Velocity>& commands);
+  void move(const std::vector<robot::Velocity>& commands);
   /// senseContact() followed by move(commands).
-  void step(const std::vector<Velocity>& commands);
+  void step(const std::vector<robot::Velocity>& commands);
 
-  const Pose2D& pose(std::size_t robot) const { return robots_[robot].pose; }
-  const BumperState& bumper(std::size_t robot) const { return robots_[robot].bumper; }
-  Velocity lastCommand(std::size_t robot) const { return robots_[robot].last_command; }
+  const robot::Pose2D& pose(std::size_t robot) const { return robots_[robot].pose; }
+  const robot::BumperState& bumper(std::size_t robot) const { return robots_[robot].bumper; }
+  robot::Velocity lastCommand(std::size_t robot) const { return robots_[robot].last_command; }
   double time() const { return steps_ * world_.step; }
   long steps() const { return steps_; }
 
@@ -57,11 +57,11 @@ class MultiRobotSimulator {
   double unionCoverage() const;
   /// The union of every robot's swept cells (computed on request: stepping stays per robot).
   CoverageGrid unionCoverageGrid() const;
-  const World& world() const { return world_; }
+  const world::World& world() const { return world_; }
 
   /// Puts robot i at `pose`, pushed out of walls, furniture and other robots, and marks that disc
   /// swept. util::InvalidInput for a non-finite pose or one where the disc does not fit.
-  void setPose(std::size_t robot, const Pose2D& pose);
+  void setPose(std::size_t robot, const robot::Pose2D& pose);
   /// Every robot back to its initial pose, time 0, coverage cleared, commands zero.
   void reset();
   /// Every robot's speed limits from now on (dynamic_reconfigure). util::InvalidInput naming the
@@ -71,9 +71,9 @@ class MultiRobotSimulator {
 
  private:
   struct Robot {
-    Pose2D pose;
-    BumperState bumper;
-    Velocity last_command;
+    robot::Pose2D pose;
+    robot::BumperState bumper;
+    robot::Velocity last_command;
   };
 
   /// Pushes robot i's disc at (x, y) out of walls, furniture and the other robots until nothing
@@ -83,8 +83,8 @@ class MultiRobotSimulator {
   bool pushOutOfRobots(std::size_t robot, double& x, double& y) const;
   bool overlapsRobot(std::size_t robot, double x, double y) const;
 
-  World world_;
-  std::vector<RobotSpec> specs_;
+  world::World world_;
+  std::vector<world::RobotSpec> specs_;
   std::vector<Robot> robots_;
   std::vector<CoverageGrid> coverage_;
   RobotGrid grid_;
@@ -97,6 +97,6 @@ class MultiRobotSimulator {
 /// stand at the centres of the free ones, row by row from the bottom; cells whose centre puts the
 /// disc into furniture are skipped, taking more and smaller cells. One robot stands at the room's
 /// centre, as in the lab. std::invalid_argument when n robots do not fit.
-std::vector<RobotSpec> spreadRobots(const World& world, int n);
+std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n);
 
 }  // namespace roomba_rrt::sim

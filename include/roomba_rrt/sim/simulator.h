@@ -2,9 +2,9 @@
 // coverage grid. ROS-free; the roomba_sim node and the in-process coverage tool both drive it.
 #pragma once
 
+#include "roomba_rrt/robot/robot_state.h"
 #include "roomba_rrt/sim/coverage_grid.h"
-#include "roomba_rrt/sim/robot_state.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sim {
 
@@ -23,44 +23,44 @@ class Simulator {
  public:
   /// Validates the world (std::invalid_argument naming the bad parameter) and places the robot at
   /// its initial pose, with that disc already counted as swept.
-  explicit Simulator(const World& world);
+  explicit Simulator(const world::World& world);
 
   /// Steps 1–2: pushes the disc out of anything it penetrates (nothing to do after move(); needed
   /// after setPose()) and recomputes the bumper from the geometry.
-  BumperState senseContact();
+  robot::BumperState senseContact();
 
   /// Step 4: clamps `cmd` to the world's speed limits (a NaN or infinite component counts as 0),
   /// integrates the exact unicycle arc over one step, resolves contact and marks coverage.
-  void move(const Velocity& cmd);
+  void move(const robot::Velocity& cmd);
 
   /// senseContact() followed by move(cmd): one step with a command fixed in advance (the node,
   /// which applies the latest /cmd_vel).
-  BumperState step(const Velocity& cmd);
+  robot::BumperState step(const robot::Velocity& cmd);
 
-  const Pose2D& pose() const { return pose_; }
-  const BumperState& bumper() const { return bumper_; }
+  const robot::Pose2D& pose() const { return pose_; }
+  const robot::BumperState& bumper() const { return bumper_; }
   /// The clamped command applied by the last move() (zero before the first).
-  Velocity lastCommand() const { return last_command_; }
+  robot::Velocity lastCommand() const { return last_command_; }
   /// Simulated time: number of move() calls since construction or reset(), times world().step.
   double time() const { return steps_ * world_.step; }
   long steps() const { return steps_; }
 
   double coverage() const { return coverage_.coverage(); }
   const CoverageGrid& coverageGrid() const { return coverage_; }
-  const World& world() const { return world_; }
+  const world::World& world() const { return world_; }
 
   /// Puts the robot at `pose` (pushed out of anything it penetrates) and marks that disc swept.
   /// θ is wrapped to (−π, π]. A non-finite pose is rejected with util::InvalidInput.
-  void setPose(const Pose2D& pose);
+  void setPose(const robot::Pose2D& pose);
   /// Back to the initial pose, time 0, coverage cleared, bumper released, command zero.
   void reset();
 
  private:
-  World world_;
+  world::World world_;
   CoverageGrid coverage_;
-  Pose2D pose_;
-  BumperState bumper_;
-  Velocity last_command_;
+  robot::Pose2D pose_;
+  robot::BumperState bumper_;
+  robot::Velocity last_command_;
   long steps_ = 0;
 };
 

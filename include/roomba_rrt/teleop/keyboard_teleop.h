@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::teleop {
 
@@ -51,11 +51,11 @@ void validate(const TeleopLimits& limits);
 /// The command after one key press (kQuit leaves it unchanged: quitting is the caller's job, and
 /// it stops the robot). A press moves its speed to the next whole number of steps, so that as many
 /// presses back return to exactly zero, clamped to the limits; the other speed is kept.
-sim::Velocity applyKey(const sim::Velocity& command, Key key, const TeleopLimits& limits);
+robot::Velocity applyKey(const robot::Velocity& command, Key key, const TeleopLimits& limits);
 
 /// The one-line status the node redraws: the command and the bumper, e.g.
 /// "v +0.30 m/s  w -0.50 rad/s  bumper: left".
-std::string statusLine(const sim::Velocity& command, const sim::BumperState& bumper,
+std::string statusLine(const robot::Velocity& command, const robot::BumperState& bumper,
                        bool bumper_known);
 
 /// The help printed once at start.

@@ -5,31 +5,31 @@
 
 #include <cmath>
 
-#include "roomba_rrt/behavior/path_follower.h"
+#include "roomba_rrt/navigation/path_follower.h"
 #include "roomba_rrt/sim/unicycle.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 struct Drive {
   FollowStatus status = FollowStatus::kFollowing;
-  sim::Pose2D pose;
+  robot::Pose2D pose;
   int ticks = 0;
   double max_deviation = 0;  ///< while following (before the final turn)
 };
 
 /// Drives from `start` along `path` to `goal` (at most 120 s), checking every command's limits.
-Drive follow(const Path& path, const sim::Pose2D& start, const sim::Pose2D& goal,
+Drive follow(const Path& path, const robot::Pose2D& start, const robot::Pose2D& goal,
              const FollowerParams& params = {}) {
   PathFollower follower(params);
   follower.start(path, goal);
   Drive run;
   run.pose = start;
-  sim::Velocity last;
+  robot::Velocity last;
   const double dt = params.dt();
   const double eps = 1e-9;
   for (; run.ticks < 120 * 60; ++run.ticks) {
-    sim::Velocity cmd;
+    robot::Velocity cmd;
     run.status = follower.step(run.pose, cmd);
     if (run.status != FollowStatus::kFollowing) break;
     EXPECT_TRUE(std::isfinite(cmd.v) && std::isfinite(cmd.w));
@@ -45,7 +45,7 @@ Drive follow(const Path& path, const sim::Pose2D& start, const sim::Pose2D& goal
   return run;
 }
 
-void expectArrived(const Drive& run, const sim::Pose2D& goal, const FollowerParams& params = {}) {
+void expectArrived(const Drive& run, const robot::Pose2D& goal, const FollowerParams& params = {}) {
   EXPECT_EQ(run.status, FollowStatus::kArrived) << toString(run.status);
   EXPECT_LE(std::hypot(run.pose.x - goal.x, run.pose.y - goal.y), params.xy_tolerance);
   EXPECT_LE(std::fabs(sim::wrapAngle(run.pose.theta - goal.theta)), params.yaw_tolerance);
@@ -53,7 +53,7 @@ void expectArrived(const Drive& run, const sim::Pose2D& goal, const FollowerPara
 
 TEST(PathFollower, converges_on_a_straight_line_and_turns_to_the_goal_heading) {
   const Path path{{0, 0}, {2, 0}};
-  const sim::Pose2D goal{2, 0, M_PI / 2};
+  const robot::Pose2D goal{2, 0, M_PI / 2};
   const Drive run = follow(path, {0, 0.05, 0}, goal);  // starts 5 cm off the line
   expectArrived(run, goal);
   EXPECT_LT(run.max_deviation, 0.06);
@@ -63,7 +63,7 @@ TEST(PathFollower, converges_on_a_straight_line_and_turns_to_the_goal_heading) {
 
 TEST(PathFollower, converges_on_an_l_shaped_path) {
   const Path path{{0, 0}, {2, 0}, {2, 2}};
-  const sim::Pose2D goal{2, 2, M_PI / 2};
+  const robot::Pose2D goal{2, 2, M_PI / 2};
   const Drive run = follow(path, {0, 0, 0}, goal);
   expectArrived(run, goal);
   EXPECT_LT(run.max_deviation, 0.1);  // the corner is cut a little (5 cm measured)
@@ -73,7 +73,7 @@ TEST(PathFollower, follows_a_u_turn_without_short_cutting_it) {
   // Out and back 0.6 m apart: a follower that jumps to the nearest point would take the
   // return leg at once.
   const Path path{{0, 0}, {2, 0}, {2, 0.6}, {0, 0.6}};
-  const sim::Pose2D goal{0, 0.6, M_PI};
+  const robot::Pose2D goal{0, 0.6, M_PI};
   const Drive run = follow(path, {0, 0, 0}, goal);
   expectArrived(run, goal);
   EXPECT_LT(run.max_deviation, 0.1);
@@ -82,7 +82,7 @@ TEST(PathFollower, follows_a_u_turn_without_short_cutting_it) {
 
 TEST(PathFollower, starting_backwards_turns_in_place_first) {
   const Path path{{0, 0}, {1, 0}};
-  const sim::Pose2D goal{1, 0, 0};
+  const robot::Pose2D goal{1, 0, 0};
   const Drive run = follow(path, {0, 0, M_PI}, goal);
   expectArrived(run, goal);
   EXPECT_LT(run.max_deviation, 0.05);
@@ -97,7 +97,7 @@ TEST(PathFollower, tighter_limits_are_respected_too) {
   slow.xy_tolerance = 0.02;
   slow.yaw_tolerance = 0.02;
   const Path path{{0, 0}, {1, 0}, {1, 1}};
-  const sim::Pose2D goal{1, 1, -M_PI / 2};
+  const robot::Pose2D goal{1, 1, -M_PI / 2};
   expectArrived(follow(path, {0, 0, 0}, goal, slow), goal, slow);
 }
 
@@ -105,7 +105,7 @@ TEST(PathFollower, a_robot_far_from_the_path_has_strayed) {
   PathFollower follower(FollowerParams{});
   const Path path{{0, 0}, {2, 0}};
   follower.start(path, {2, 0, 0});
-  sim::Velocity cmd{1, 1};
+  robot::Velocity cmd{1, 1};
   EXPECT_EQ(follower.step({1, 1.0, 0}, cmd), FollowStatus::kStrayed);
   EXPECT_EQ(cmd.v, 0.0);
   EXPECT_EQ(cmd.w, 0.0);
@@ -115,14 +115,14 @@ TEST(PathFollower, an_empty_path_is_reported_and_stops) {
   PathFollower follower(FollowerParams{});
   const Path empty;
   follower.start(empty, {});
-  sim::Velocity cmd{1, 1};
+  robot::Velocity cmd{1, 1};
   EXPECT_EQ(follower.step({}, cmd), FollowStatus::kNoPath);
   EXPECT_EQ(cmd.v, 0.0);
 }
 
 TEST(PathFollower, a_one_point_path_turns_in_place_to_the_heading) {
   const Path path{{1, 1}};
-  const sim::Pose2D goal{1, 1, 1.0};
+  const robot::Pose2D goal{1, 1, 1.0};
   expectArrived(follow(path, {1, 1, -1.0}, goal), goal);
 }
 
@@ -139,4 +139,4 @@ TEST(PathFollower, bad_parameters_name_the_field) {
 }
 
 }  // namespace
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -1,4 +1,4 @@
-#include "roomba_rrt/behavior/motion_guard.h"
+#include "roomba_rrt/navigation/motion_guard.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "roomba_rrt/geometry/geometry.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 constexpr double kSampleSpacing = 0.005;  // m along the arc between two checked centres
@@ -29,7 +29,7 @@ double MotionGuard::gap(double x, double y) const {
   return nearest - world_.robot_radius;
 }
 
-bool MotionGuard::safe(const sim::Pose2D& pose, double v, double w) const {
+bool MotionGuard::safe(const robot::Pose2D& pose, double v, double w) const {
   // The way the command would take the robot before it can stop: one tick at v, then braking.
   const double reach = std::fabs(v) * dt_ + v * v / (2.0 * max_linear_accel_);
   const int samples = std::max(1, static_cast<int>(std::ceil(reach / kSampleSpacing)));
@@ -53,7 +53,7 @@ bool MotionGuard::safe(const sim::Pose2D& pose, double v, double w) const {
   return true;
 }
 
-sim::Velocity MotionGuard::filter(const sim::Pose2D& pose, const sim::Velocity& cmd) const {
+robot::Velocity MotionGuard::filter(const robot::Pose2D& pose, const robot::Velocity& cmd) const {
   if (cmd.v == 0 || safe(pose, cmd.v, cmd.w)) return cmd;
   double lo = 0, hi = 1;  // fractions of v: lo is safe, hi is not
   for (int i = 0; i < kBisections; ++i) {
@@ -63,4 +63,4 @@ sim::Velocity MotionGuard::filter(const sim::Pose2D& pose, const sim::Velocity& 
   return {lo * cmd.v, cmd.w};
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -9,8 +9,8 @@
 #include <new>
 #include <thread>
 
-#include "roomba_rrt/behavior/nav_bt.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sim/unicycle.h"
 
 namespace {
@@ -25,11 +25,11 @@ void* operator new(std::size_t size) {
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 TEST(TickAllocations, the_lab_tree_ticks_without_allocating) {
-  RoombaBt bt(RoombaParams{}, 1);
+  behavior::RoombaBt bt(behavior::RoombaParams{}, 1);
   bt.tick({});
   const long before = allocations;
   for (int i = 0; i < 36000; ++i) bt.tick({i % 997 == 0, false, false});
@@ -72,7 +72,7 @@ TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating
     return std::make_unique<CountingPlanner>(planners(), *arrived);
   };
   NavBt nav(config, 1, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml");
-  sim::Pose2D pose{0.5, 5.0, 0.0};
+  robot::Pose2D pose{0.5, 5.0, 0.0};
   nav.setGoal({9.5, 5.0, 0.0});
   // Until the first plan arrives and the follower runs (allocations allowed: the first path).
   for (int i = 0; i < 10000 && nav.stateName() != "FollowPath"; ++i) {
@@ -102,4 +102,4 @@ TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating
 }
 
 }  // namespace
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -9,9 +9,9 @@
 #include <thread>
 #include <tuple>
 
-#include "roomba_rrt/behavior/nav_leaves.h"
+#include "roomba_rrt/navigation/nav_leaves.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 /// A planner whose result the test releases by hand.
@@ -40,8 +40,8 @@ struct FakePlanner final : PathPlanner {
 
 struct LeafTest : ::testing::Test {
   LeafTest() : context(1) {
-    board->declare<sim::Pose2D>("goal");
-    board->set<sim::Pose2D>("pose", {1, 2, 0});
+    board->declare<robot::Pose2D>("goal");
+    board->set<robot::Pose2D>("pose", {1, 2, 0});
     NavLeafConfig config;
     config.planners = [this] {
       auto p = std::make_unique<FakePlanner>();
@@ -71,7 +71,7 @@ TEST_F(LeafTest, compute_path_without_a_goal_fails_with_the_reason) {
 
 TEST_F(LeafTest, compute_path_runs_while_the_plan_is_computed_then_writes_it) {
   bt::Tree tree = build(kComputePath);
-  board->set<sim::Pose2D>("goal", {4, 5, 0});
+  board->set<robot::Pose2D>("goal", {4, 5, 0});
   EXPECT_EQ(tree.tick(), bt::Status::kRunning);
   EXPECT_EQ(planner->requests, 1);
   EXPECT_EQ(planner->from.x, 1);
@@ -88,7 +88,7 @@ TEST_F(LeafTest, compute_path_runs_while_the_plan_is_computed_then_writes_it) {
 
 TEST_F(LeafTest, a_replan_replaces_the_path_only_when_shorter_than_what_is_left) {
   bt::Tree tree = build(kComputePath);
-  board->set<sim::Pose2D>("goal", {4, 5, 0});
+  board->set<robot::Pose2D>("goal", {4, 5, 0});
   const auto plan = [&](Path path) {
     planner->reply.success = true;
     planner->reply.path = std::move(path);
@@ -105,13 +105,13 @@ TEST_F(LeafTest, a_replan_replaces_the_path_only_when_shorter_than_what_is_left)
   // A straight line (4.2 m) is shorter: taken.
   EXPECT_EQ(plan({{1, 2}, {4, 5}}).size(), 2u);
   // A new goal: the next plan is taken whatever its length.
-  board->set<sim::Pose2D>("goal", {9, 9, 0});
+  board->set<robot::Pose2D>("goal", {9, 9, 0});
   EXPECT_EQ(plan({{1, 2}, {1, 9}, {9, 9}}).size(), 3u);
 }
 
 TEST_F(LeafTest, compute_path_failure_names_the_planner_s_reason) {
   bt::Tree tree = build(kComputePath);
-  board->set<sim::Pose2D>("goal", {4, 5, 0});
+  board->set<robot::Pose2D>("goal", {4, 5, 0});
   planner->reply.message = "goal: inside obstacle 2";
   planner->ready = true;
   EXPECT_EQ(tree.tick(), bt::Status::kRunning);
@@ -122,7 +122,7 @@ TEST_F(LeafTest, compute_path_failure_names_the_planner_s_reason) {
 
 TEST_F(LeafTest, halting_compute_path_abandons_the_plan) {
   bt::Tree tree = build(kComputePath);
-  board->set<sim::Pose2D>("goal", {4, 5, 0});
+  board->set<robot::Pose2D>("goal", {4, 5, 0});
   EXPECT_EQ(tree.tick(), bt::Status::kRunning);
   tree.halt();
   EXPECT_EQ(planner->cancels, 1);
@@ -132,7 +132,7 @@ TEST_F(LeafTest, halting_compute_path_abandons_the_plan) {
 
 TEST_F(LeafTest, goal_updated_reports_a_goal_written_during_its_run) {
   bt::Tree tree = build(R"(<GoalUpdated goal="{goal}"/>)");
-  auto& goal = board->declare<sim::Pose2D>("goal");
+  auto& goal = board->declare<robot::Pose2D>("goal");
   goal.set({1, 1, 0});
   EXPECT_EQ(tree.tick(), bt::Status::kFailure);  // first tick of a run: records the goal
   EXPECT_EQ(tree.tick(), bt::Status::kFailure);
@@ -147,7 +147,7 @@ TEST_F(LeafTest, goal_updated_reports_a_goal_written_during_its_run) {
 TEST_F(LeafTest, has_goal_and_goal_succeeded_and_aborted_end_the_goal) {
   bt::Tree has = build(R"(<HasGoal goal="{goal}"/>)");
   EXPECT_EQ(has.tick(), bt::Status::kFailure);
-  board->set<sim::Pose2D>("goal", {1, 1, 0});
+  board->set<robot::Pose2D>("goal", {1, 1, 0});
   EXPECT_EQ(has.tick(), bt::Status::kSuccess);
   board->set<std::string>("error", "strayed 0.5 m from the path");
   bt::Tree abort = build(R"(<GoalAborted goal="{goal}" error="{error}"/>)");
@@ -155,7 +155,7 @@ TEST_F(LeafTest, has_goal_and_goal_succeeded_and_aborted_end_the_goal) {
   EXPECT_EQ(context.outcome, GoalOutcome::kAborted);
   EXPECT_EQ(context.message, "strayed 0.5 m from the path");
   EXPECT_EQ(has.tick(), bt::Status::kFailure);  // cleared
-  board->set<sim::Pose2D>("goal", {1, 1, 0});
+  board->set<robot::Pose2D>("goal", {1, 1, 0});
   bt::Tree done = build(R"(<GoalSucceeded goal="{goal}"/>)");
   EXPECT_EQ(done.tick(), bt::Status::kSuccess);
   EXPECT_EQ(context.outcome, GoalOutcome::kSucceeded);
@@ -234,4 +234,4 @@ TEST(InProcessPlanner, refuses_a_robot_size_the_library_refuses_naming_the_field
   }
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

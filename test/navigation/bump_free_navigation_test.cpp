@@ -8,23 +8,23 @@
 
 #include <string>
 
-#include "roomba_rrt/behavior/motion_guard.h"
-#include "roomba_rrt/behavior/nav_eval.h"
-#include "roomba_rrt/sim/world.h"
+#include "nav_eval_run.h"
+#include "roomba_rrt/navigation/motion_guard.h"
+#include "roomba_rrt/world/world.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 class BumpFreeNavigation : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BumpFreeNavigation, no_seed_presses_the_bumper_and_every_goal_is_reached) {
-  const sim::World world = sim::loadWorld(GetParam());
+  const world::World world = world::loadWorld(GetParam());
   for (std::uint32_t seed = 1; seed <= 20; ++seed) {
-    NavEvalOptions options;
+    tools::NavEvalOptions options;
     options.goals = 200;
     options.seed = seed;
-    const NavEvalReport report =
-        evaluateNavigation(world, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml", options);
+    const tools::NavEvalReport report =
+        tools::evaluateNavigation(world, ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml", options);
     EXPECT_EQ(report.bumps, 0) << "seed " << seed;
     EXPECT_EQ(report.reached_pct, 100.0) << "seed " << seed;
   }
@@ -32,8 +32,8 @@ TEST_P(BumpFreeNavigation, no_seed_presses_the_bumper_and_every_goal_is_reached)
 
 INSTANTIATE_TEST_SUITE_P(Rooms, BumpFreeNavigation,
                          ::testing::Values(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml",
-                                           ROOMBA_RRT_TEST_DIR "/behavior/worlds/dining.yaml",
-                                           ROOMBA_RRT_TEST_DIR "/behavior/worlds/office.yaml"));
+                                           ROOMBA_RRT_TEST_DIR "/navigation/worlds/dining.yaml",
+                                           ROOMBA_RRT_TEST_DIR "/navigation/worlds/office.yaml"));
 
 TEST(MotionGuard, slows_a_step_that_would_touch_and_never_stops_a_turn_in_place) {
   NavWorld world;
@@ -42,19 +42,19 @@ TEST(MotionGuard, slows_a_step_that_would_touch_and_never_stops_a_turn_in_place)
   world.robot_radius = 0.17;
   const MotionGuard guard(world, 60, 0.5);
   // 5 cm from the box, heading into it at 0.3 m/s: it would stop 9 cm later, inside the box.
-  const sim::Pose2D facing{2.0 - 0.17 - 0.05, 2.0, 0.0};
-  const sim::Velocity slowed = guard.filter(facing, {0.3, 0.0});
+  const robot::Pose2D facing{2.0 - 0.17 - 0.05, 2.0, 0.0};
+  const robot::Velocity slowed = guard.filter(facing, {0.3, 0.0});
   EXPECT_LT(slowed.v, 0.3);
   EXPECT_GE(slowed.v, 0.0);
   EXPECT_EQ(guard.filter(facing, {0.0, 1.5}).w, 1.5);  // turning in place is always let through
-  const sim::Velocity away = guard.filter(facing, {-0.3, 0.0});  // backing away is let through
+  const robot::Velocity away = guard.filter(facing, {-0.3, 0.0});  // backing away is let through
   EXPECT_EQ(away.v, -0.3);
   // Far from everything, nothing changes.
-  const sim::Velocity free = guard.filter({1.0, 2.0, 0.0}, {0.3, 0.2});
+  const robot::Velocity free = guard.filter({1.0, 2.0, 0.0}, {0.3, 0.2});
   EXPECT_EQ(free.v, 0.3);
   EXPECT_EQ(free.w, 0.2);
   EXPECT_NEAR(guard.gap(1.0, 2.0), 1.0 - 0.17, 1e-12);
 }
 
 }  // namespace
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

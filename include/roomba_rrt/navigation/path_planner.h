@@ -12,13 +12,13 @@
 #include <thread>
 #include <vector>
 
-#include "roomba_rrt/behavior/path_follower.h"
+#include "roomba_rrt/navigation/path_follower.h"
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 /// What a navigation plan must avoid: the room, its furniture and the robot's size. The planner
 /// keeps the robot's disc (radius + clearance) clear of every wall and obstacle, with the
@@ -34,7 +34,7 @@ struct NavWorld {
 };
 
 /// The simulator's world as a planning world (room, furniture, robot radius).
-NavWorld navWorldFrom(const sim::World& world, double clearance = 0.05);
+NavWorld navWorldFrom(const world::World& world, double clearance = 0.05);
 
 /// A finished plan.
 struct PlanReply {
@@ -133,4 +133,4 @@ class InProcessPlanner final : public PathPlanner {
   std::thread worker_;
 };
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -6,18 +6,18 @@
 
 #include <cmath>
 
-#include "roomba_rrt/behavior/nav_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 const std::string kNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
 const std::string kCleanNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_clean_nav_tree.xml";
 
-NavLeafConfig configFor(const sim::World& world) {
+NavLeafConfig configFor(const world::World& world) {
   return inProcessNavConfig(navWorldFrom(world), defaultNavPlannerOptions(),
                             InProcessPlanner::Mode::kInline);
 }
@@ -25,7 +25,7 @@ NavLeafConfig configFor(const sim::World& world) {
 /// The simulator and a navigation tree in one loop.
 struct Loop {
   Loop(const std::string& tree_file, const std::string& world_file = "roomba_world_furnished.yaml")
-      : sim(sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/" + world_file)),
+      : sim(world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/" + world_file)),
         nav(configFor(sim.world()), 1, tree_file) {}
 
   /// Steps until the goal is no longer active or `seconds` pass; counts bumper presses.
@@ -36,10 +36,10 @@ struct Loop {
       if (nav.outcome() != GoalOutcome::kActive) return;
     }
   }
-  sim::Velocity step() {
-    const sim::BumperState bumper = sim.senseContact();
+  robot::Velocity step() {
+    const robot::BumperState bumper = sim.senseContact();
     bumps += bumper.pressed ? 1 : 0;
-    const sim::Velocity cmd = nav.tick(bumper, sim.pose());
+    const robot::Velocity cmd = nav.tick(bumper, sim.pose());
     EXPECT_TRUE(std::isfinite(cmd.v) && std::isfinite(cmd.w));
     sim.move(cmd);
     return cmd;
@@ -50,7 +50,7 @@ struct Loop {
   int bumps = 0;
 };
 
-double distanceTo(const sim::Pose2D& a, const sim::Pose2D& b) {
+double distanceTo(const robot::Pose2D& a, const robot::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
 
@@ -92,7 +92,7 @@ TEST(NavBt, new_follower_limits_apply_while_driving) {
 TEST(NavBt, without_a_goal_the_robot_stands_still) {
   Loop loop(kNavTree);
   for (int i = 0; i < 120; ++i) {
-    const sim::Velocity cmd = loop.step();
+    const robot::Velocity cmd = loop.step();
     EXPECT_EQ(cmd.v, 0.0);
     EXPECT_EQ(cmd.w, 0.0);
   }
@@ -102,7 +102,7 @@ TEST(NavBt, without_a_goal_the_robot_stands_still) {
 
 TEST(NavBt, drives_around_furniture_to_the_goal_without_a_bump) {
   Loop loop(kNavTree);
-  const sim::Pose2D goal{1.0, 1.3, M_PI};  // past the round table, above the sofa
+  const robot::Pose2D goal{1.0, 1.3, M_PI};  // past the round table, above the sofa
   loop.nav.setGoal(goal);
   loop.run(90);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
@@ -116,7 +116,7 @@ TEST(NavBt, drives_around_furniture_to_the_goal_without_a_bump) {
 
 TEST(NavBt, reaches_the_corridor_behind_the_bench) {
   Loop loop(kNavTree);
-  const sim::Pose2D goal{3.0, 4.55, 0.0};  // between the bench and the top wall
+  const robot::Pose2D goal{3.0, 4.55, 0.0};  // between the bench and the top wall
   loop.nav.setGoal(goal);
   loop.run(120);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
@@ -126,7 +126,7 @@ TEST(NavBt, reaches_the_corridor_behind_the_bench) {
 
 TEST(NavBt, a_goal_inside_the_sofa_is_aborted_with_the_reason_and_the_robot_stays) {
   Loop loop(kNavTree);
-  const sim::Pose2D start = loop.sim.pose();
+  const robot::Pose2D start = loop.sim.pose();
   loop.nav.setGoal({0.8, 0.3, 0.0});
   loop.run(30);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kAborted);
@@ -140,7 +140,7 @@ TEST(NavBt, a_new_goal_preempts_the_current_one) {
   loop.nav.setGoal({5.5, 2.5, 0.0});
   loop.run(2);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kActive);
-  const sim::Pose2D second{2.0, 2.0, M_PI / 2};
+  const robot::Pose2D second{2.0, 2.0, M_PI / 2};
   loop.nav.setGoal(second);
   loop.run(90);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
@@ -153,7 +153,7 @@ TEST(NavBt, a_cancel_stops_the_robot_at_once) {
   loop.run(3);
   EXPECT_GT(std::fabs(loop.sim.lastCommand().v), 0.05);
   loop.nav.cancelGoal();
-  const sim::Velocity cmd = loop.step();
+  const robot::Velocity cmd = loop.step();
   EXPECT_EQ(cmd.v, 0.0);
   EXPECT_EQ(cmd.w, 0.0);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kNone);
@@ -176,7 +176,7 @@ TEST(NavBt, a_bump_backs_up_spins_and_replans) {
   for (int i = 0; i < 60; ++i) loop.step();
   EXPECT_EQ(loop.nav.stateName(), "FollowPath");
   loop.nav.tick({true, true, true}, loop.sim.pose());  // the bump
-  sim::Velocity cmd = loop.nav.tick({}, loop.sim.pose());
+  robot::Velocity cmd = loop.nav.tick({}, loop.sim.pose());
   EXPECT_EQ(loop.nav.stateName(), "BackUp");
   EXPECT_LT(cmd.v, 0.0);
   bool spun = false;
@@ -192,7 +192,7 @@ TEST(NavBt, a_bump_backs_up_spins_and_replans) {
 
 TEST(NavBt, a_robot_pushed_off_its_path_replans_from_where_it_is) {
   Loop loop(kNavTree);
-  const sim::Pose2D goal{5.0, 2.4, 0.0};
+  const robot::Pose2D goal{5.0, 2.4, 0.0};
   loop.nav.setGoal(goal);
   for (int i = 0; i < 120; ++i) loop.step();
   ASSERT_EQ(loop.nav.stateName(), "FollowPath");
@@ -213,11 +213,11 @@ TEST(NavBt, a_robot_pushed_off_its_path_replans_from_where_it_is) {
 
 TEST(NavBt, a_blocked_path_is_noticed_within_half_a_second_and_replanned) {
   Loop loop(kNavTree);
-  const sim::Pose2D goal{5.0, 2.4, 0.0};
+  const robot::Pose2D goal{5.0, 2.4, 0.0};
   loop.nav.setGoal(goal);
   for (int i = 0; i < 60; ++i) loop.step();
   // The path changes under the robot to one through the bin (as a moved obstacle would make it).
-  const sim::Pose2D here = loop.sim.pose();
+  const robot::Pose2D here = loop.sim.pose();
   loop.nav.tree().blackboard().set<Path>("path", {{here.x, here.y}, {4.9, 3.3}, {5.0, 2.4}});
   bool noticed = false;
   for (int i = 0; i < 31 && !noticed; ++i) {
@@ -235,7 +235,7 @@ TEST(NavBt, the_cleaning_tree_cleans_until_a_goal_and_resumes_after_it) {
   Loop loop(kCleanNavTree);
   for (int i = 0; i < 30; ++i) loop.step();
   EXPECT_EQ(loop.nav.stateName(), "MoveForward");
-  const sim::Pose2D goal{3.0, 2.4, 0.0};
+  const robot::Pose2D goal{3.0, 2.4, 0.0};
   loop.nav.setGoal(goal);
   loop.run(90);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
@@ -247,7 +247,7 @@ TEST(NavBt, the_cleaning_tree_cleans_until_a_goal_and_resumes_after_it) {
 }
 
 TEST(NavBt, the_tree_files_name_their_errors) {
-  const sim::World world;
+  const world::World world;
   const std::string bad = R"(<root><BehaviorTree>
     <FollowPath path="{path}" goal="{goal}" pose="{pose}"/>
   </BehaviorTree></root>)";
@@ -274,4 +274,4 @@ TEST(NavBt, the_tree_files_name_their_errors) {
 }
 
 }  // namespace
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -1,4 +1,4 @@
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -10,12 +10,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
 #include "roomba_rrt/util/yaml_reader.h"
 
-namespace roomba_rrt::sim {
+namespace roomba_rrt::world {
 
 namespace {
 
@@ -212,7 +211,7 @@ void validateRobots(const World& world) {
     if (r.max_linear_speed * world.step >= r.radius) {
       fail("step", "is too long: " + r.name + " would move more than its radius in one step");
     }
-    const Pose2D& p = r.initial_pose;
+    const robot::Pose2D& p = r.initial_pose;
     requireFinite(member(prefix, "initial_pose"), {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
     if (penetrates(world, r.radius, p.x, p.y)) {
       fail(member(prefix, "initial_pose"), "(" + show(p.x) + ", " + show(p.y) + ") puts " + r.name +
@@ -283,7 +282,7 @@ void validate(const World& world) {
     if (!(b.max_x > b.min_x)) fail(member(name, "max_x"), "must be greater than min_x");
     if (!(b.max_y > b.min_y)) fail(member(name, "max_y"), "must be greater than min_y");
   }
-  const Pose2D& p = world.initial_pose;
+  const robot::Pose2D& p = world.initial_pose;
   requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
   if (world.robots.empty() && penetrates(world, p.x, p.y)) {
     fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
@@ -362,4 +361,4 @@ std::string defaultsNotice(const World& world, const std::string& source) {
              : source + " sets no " + sections + ": the defaults are used (" + keys + ")";
 }
 
-}  // namespace roomba_rrt::sim
+}  // namespace roomba_rrt::world

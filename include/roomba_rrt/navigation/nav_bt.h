@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "roomba_rrt/behavior/nav_leaves.h"
 #include "roomba_rrt/bt/tree.h"
+#include "roomba_rrt/navigation/nav_leaves.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 /// A tree of navigation leaves (nav_leaves.h) and the lab's leaves (roomba_tree.h), on a
 /// blackboard with the keys the application writes: `goal` (Pose2D, unset: no goal) and `pose`
@@ -33,7 +33,7 @@ class NavBt {
   NavBt& operator=(const NavBt&) = delete;
 
   /// A new goal (util::InvalidInput naming the component when it is not finite).
-  void setGoal(const sim::Pose2D& goal);
+  void setGoal(const robot::Pose2D& goal);
   void cancelGoal();
 
   /// FollowPath's new limits and tolerances, from its next tick (validated first:
@@ -41,10 +41,10 @@ class NavBt {
   void setFollowerParams(const FollowerParams& params);
   /// The lab's constants for the cleaning leaves of a tree that has them, from the next motion
   /// that starts (as RoombaBehavior::setParams). `params.rate` is ignored.
-  void setRoombaParams(const RoombaParams& params);
+  void setRoombaParams(const behavior::RoombaParams& params);
 
   /// One tick: the bumper and pose of this step in, the command out (zero when no leaf runs).
-  sim::Velocity tick(const sim::BumperState& bumper, const sim::Pose2D& pose);
+  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose);
 
   GoalOutcome outcome() const { return context_.outcome; }
   /// Why the last goal was aborted.
@@ -60,10 +60,10 @@ class NavBt {
         const std::string& source, bool from_file);
 
   NavContext context_;
-  RoombaParams params_;  ///< the cleaning leaves' constants (context_.params points here)
+  behavior::RoombaParams params_;  ///< the cleaning leaves' constants (context_.params points here)
   std::shared_ptr<bt::Blackboard> board_;
-  bt::Blackboard::Entry<sim::Pose2D>* goal_;
-  bt::Blackboard::Entry<sim::Pose2D>* pose_;
+  bt::Blackboard::Entry<robot::Pose2D>* goal_;
+  bt::Blackboard::Entry<robot::Pose2D>* pose_;
   bt::Tree tree_;
 };
 
@@ -85,4 +85,4 @@ std::string treeNodesModel();
 /// (bt::TreeFileError when the file cannot be read or parsed).
 bool usesNavigationLeaves(const std::string& tree_file);
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

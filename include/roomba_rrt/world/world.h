@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "roomba_rrt/geometry/geometry.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
-namespace roomba_rrt::sim {
+namespace roomba_rrt::world {
 
 /// Furniture: round pieces (a table leg, a bin) and axis-aligned rectangular ones (a sofa, a
 /// cupboard), in metres; the shapes of the shared geometry module, which the planner uses too.
@@ -23,7 +23,7 @@ constexpr std::size_t kMaxRobots = 1000;
 /// world's shared `robot:` values.
 struct RobotSpec {
   std::string name;  ///< namespace and tf prefix: a letter, then letters, digits or '_'
-  Pose2D initial_pose{3.2, 2.4, 0.0};
+  robot::Pose2D initial_pose{3.2, 2.4, 0.0};
   double radius = 0.17;            ///< m
   double max_linear_speed = 1.0;   ///< m/s
   double max_angular_speed = 2.0;  ///< rad/s
@@ -42,7 +42,7 @@ struct World {
   double max_linear_speed = 1.0;   ///< |v| is clamped to this, m/s
   double max_angular_speed = 2.0;  ///< |w| is clamped to this, rad/s
   double step = 1.0 / 60.0;        ///< integration step, s
-  Pose2D initial_pose{3.2, 2.4, 0.0};
+  robot::Pose2D initial_pose{3.2, 2.4, 0.0};
 
   double coverage_cell_size = 0.025;  ///< edge of a coverage grid cell, m
   double command_timeout = 0.5;       ///< node: stop when no command arrived for this long, s
@@ -76,6 +76,30 @@ struct WorldLimits {
   static constexpr std::size_t kMaxFileBytes = 1 << 20;  ///< a world file is at most 1 MiB
 };
 
+/// Overlap below this (m) is floating-point rounding of a push-back, not penetration.
+constexpr double kPenetrationTolerance = 1e-9;
+
+/// True when a disc of `radius` centred at (x, y) overlaps a wall or piece of furniture by more
+/// than kPenetrationTolerance (where a robot may not be: validate() and the simulator's contact).
+inline bool penetrates(const World& world, double radius, double x, double y) {
+  const double r = radius - kPenetrationTolerance;
+  if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
+  const geometry::Point2 p{x, y};
+  for (const Circle& c : world.circles) {
+    const double reach = c.radius + r;
+    if (geometry::squaredDistance(p, c.center) < reach * reach) return true;
+  }
+  for (const Rectangle& box : world.rectangles) {
+    if (geometry::squaredDistance(box, p) < r * r) return true;
+  }
+  return false;
+}
+
+/// The same for a disc of the world's robot_radius.
+inline bool penetrates(const World& world, double x, double y) {
+  return penetrates(world, world.robot_radius, x, y);
+}
+
 /// The robots a simulator holds: `world.robots`, or when it is empty the one unnamed robot
 /// (name "") made of robot_radius, the speed limits and initial_pose.
 std::vector<RobotSpec> robotsOf(const World& world);
@@ -101,4 +125,4 @@ World parseWorld(const std::string& yaml_text, const std::string& source = "<str
 /// or "" when the file set every section.
 std::string defaultsNotice(const World& world, const std::string& source);
 
-}  // namespace roomba_rrt::sim
+}  // namespace roomba_rrt::world

@@ -9,8 +9,8 @@
 namespace roomba_rrt::nav_node {
 namespace {
 
-sim::World furnished() {
-  return sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+world::World furnished() {
+  return world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
 }
 
 geometry_msgs::Pose poseAt(double x, double y, double yaw) {
@@ -80,7 +80,7 @@ TEST(NavRos, plan_reply_carries_the_path_or_the_message) {
   PlanPath::Response response;
   response.success = false;
   response.message = "goal: inside obstacle 0";
-  behavior::PlanReply reply = toPlanReply(response);
+  navigation::PlanReply reply = toPlanReply(response);
   EXPECT_FALSE(reply.success);
   EXPECT_EQ(reply.message, "goal: inside obstacle 0");
   response.success = true;

@@ -1,11 +1,11 @@
-#include "roomba_rrt/behavior/path_follower.h"
+#include "roomba_rrt/navigation/path_follower.h"
 
 #include <algorithm>
 #include <cmath>
 #include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 using planning::Point2;
@@ -77,7 +77,8 @@ void PathFollower::setParams(const FollowerParams& params) {
   params_ = params;
 }
 
-void PathFollower::start(const Path& path, const sim::Pose2D& goal, const sim::Velocity& current) {
+void PathFollower::start(const Path& path, const robot::Pose2D& goal,
+                         const robot::Velocity& current) {
   path_ = &path;
   goal_ = goal;
   total_length_ = planning::pathLength(path);
@@ -134,10 +135,10 @@ Point2 PathFollower::pointAt(double s) const {
   return path.back();
 }
 
-sim::Velocity PathFollower::limit(double v, double w) {
+robot::Velocity PathFollower::limit(double v, double w) {
   const double dv = params_.max_linear_accel * params_.dt();
   const double dw = params_.max_angular_accel * params_.dt();
-  sim::Velocity out;
+  robot::Velocity out;
   out.v = std::clamp(std::clamp(v, last_.v - dv, last_.v + dv), -params_.max_linear_speed,
                      params_.max_linear_speed);
   out.w = std::clamp(std::clamp(w, last_.w - dw, last_.w + dw), -params_.max_angular_speed,
@@ -146,9 +147,9 @@ sim::Velocity PathFollower::limit(double v, double w) {
   return out;
 }
 
-FollowStatus PathFollower::step(const sim::Pose2D& pose, sim::Velocity& cmd) {
+FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd) {
   if (!path_ || path_->empty()) {
-    last_ = cmd = sim::Velocity{};
+    last_ = cmd = robot::Velocity{};
     return FollowStatus::kNoPath;
   }
   const FollowerParams& p = params_;
@@ -157,7 +158,7 @@ FollowStatus PathFollower::step(const sim::Pose2D& pose, sim::Velocity& cmd) {
   const double to_goal = std::hypot(goal_.x - pose.x, goal_.y - pose.y);
   const double remaining = std::max(total_length_ - progress_s_, to_goal);
   if (!at_goal_ && deviation_ > p.max_deviation) {
-    last_ = cmd = sim::Velocity{};
+    last_ = cmd = robot::Velocity{};
     return FollowStatus::kStrayed;
   }
   // At the goal point only near the end of the path (a loop may pass the goal earlier).
@@ -172,7 +173,7 @@ FollowStatus PathFollower::step(const sim::Pose2D& pose, sim::Velocity& cmd) {
     const double stopped_w = p.max_angular_accel * p.dt() + 1e-12;
     if (std::fabs(error) <= p.yaw_tolerance && std::fabs(last_.v) <= stopped_v &&
         std::fabs(last_.w) <= stopped_w) {
-      last_ = cmd = sim::Velocity{};
+      last_ = cmd = robot::Velocity{};
       return FollowStatus::kArrived;
     }
     cmd = limit(0.0, turnRate(error, p.max_angular_speed, p.heading_gain, p.max_angular_accel));
@@ -205,4 +206,4 @@ FollowStatus PathFollower::step(const sim::Pose2D& pose, sim::Velocity& cmd) {
   return FollowStatus::kFollowing;
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

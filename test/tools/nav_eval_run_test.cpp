@@ -4,13 +4,13 @@
 
 #include <cmath>
 
-#include "roomba_rrt/behavior/nav_eval.h"
+#include "nav_eval_run.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::tools {
 namespace {
 
-sim::World emptyRoom() {
-  sim::World world;
+world::World emptyRoom() {
+  world::World world;
   world.width = 4;
   world.height = 4;
   world.robot_radius = 0.2;
@@ -22,7 +22,7 @@ TEST(ShortestDiscPath, is_the_straight_line_when_nothing_is_in_the_way) {
 }
 
 TEST(ShortestDiscPath, goes_around_a_disc_within_one_percent_of_the_exact_length) {
-  sim::World world = emptyRoom();
+  world::World world = emptyRoom();
   world.circles = {{2, 2, 0.5}};
   // Start and goal on either side: the exact shortest path hugs the grown disc (radius 0.7):
   // two tangents and an arc.
@@ -36,7 +36,7 @@ TEST(ShortestDiscPath, goes_around_a_disc_within_one_percent_of_the_exact_length
 }
 
 TEST(ShortestDiscPath, goes_around_a_rectangle_and_is_infinite_when_walled_off) {
-  sim::World world = emptyRoom();
+  world::World world = emptyRoom();
   world.rectangles = {{1.9, 0.0, 2.1, 3.0}};  // a wall from the bottom, gap of 1 m at the top
   const double length = shortestDiscPathLength(world, {1, 1, 0}, {3, 1, 0});
   // Exact: a tangent to each rounded corner (centres (1.9, 3) and (2.1, 3), radius 0.2), the
@@ -51,7 +51,7 @@ TEST(ShortestDiscPath, goes_around_a_rectangle_and_is_infinite_when_walled_off) 
 }
 
 TEST(NavEval, reaches_random_goals_in_the_furnished_room_without_a_bump_and_repeats_by_seed) {
-  const sim::World world = sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  const world::World world = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
   NavEvalOptions options;
   options.goals = 10;
   options.seed = 7;
@@ -75,4 +75,4 @@ TEST(NavEval, reaches_random_goals_in_the_furnished_room_without_a_bump_and_repe
 }
 
 }  // namespace
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::tools

@@ -1,4 +1,4 @@
-#include "roomba_rrt/behavior/nav_bt.h"
+#include "roomba_rrt/navigation/nav_bt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,15 +8,15 @@
 #include "roomba_rrt/behavior/roomba_tree.h"
 #include "roomba_rrt/util/invalid_input.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 const std::string kIdle = "Idle";
 
 std::shared_ptr<bt::Blackboard> makeBoard() {
   auto board = std::make_shared<bt::Blackboard>();
-  board->declare<sim::Pose2D>("goal");
-  board->declare<sim::Pose2D>("pose");
+  board->declare<robot::Pose2D>("goal");
+  board->declare<robot::Pose2D>("pose");
   return board;
 }
 
@@ -25,7 +25,7 @@ bt::Tree buildTree(const NavLeafConfig& config, NavContext& context, const std::
                    std::shared_ptr<bt::Blackboard> board) {
   bt::TreeFactory factory;
   factory.setTickRate(config.params.rate);
-  registerRoombaLeaves(factory, config.params, context);
+  behavior::registerRoombaLeaves(factory, config.params, context);
   registerNavLeaves(factory, config, context);
   return from_file ? factory.buildFromFile(text, std::move(board))
                    : factory.buildFromText(text, source, std::move(board));
@@ -36,8 +36,8 @@ bt::Tree buildTree(const NavLeafConfig& config, NavContext& context, const std::
 struct LeafCatalogue {
   LeafCatalogue() : context(0) {
     config.planners = [] { return std::unique_ptr<PathPlanner>(); };  // never called
-    registerRoombaLeaves(lab, config.params, context);
-    registerRoombaLeaves(all, config.params, context);
+    behavior::registerRoombaLeaves(lab, config.params, context);
+    behavior::registerRoombaLeaves(all, config.params, context);
     registerNavLeaves(all, config, context);
   }
   NavLeafConfig config;
@@ -96,8 +96,8 @@ NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string&
     : context_(seed),
       params_(config.params),
       board_(makeBoard()),
-      goal_(&board_->declare<sim::Pose2D>("goal")),
-      pose_(&board_->declare<sim::Pose2D>("pose")),
+      goal_(&board_->declare<robot::Pose2D>("goal")),
+      pose_(&board_->declare<robot::Pose2D>("pose")),
       tree_(buildTree(config, context_, text, source, from_file, board_)) {
   context_.state_name = &kIdle;
   context_.params = &params_;
@@ -112,11 +112,11 @@ void NavBt::setFollowerParams(const FollowerParams& params) {
   ++context_.follower_version;
 }
 
-void NavBt::setRoombaParams(const RoombaParams& params) {
-  retuneMotions(params_, params, context_);
+void NavBt::setRoombaParams(const behavior::RoombaParams& params) {
+  behavior::retuneMotions(params_, params, context_);
 }
 
-void NavBt::setGoal(const sim::Pose2D& goal) {
+void NavBt::setGoal(const robot::Pose2D& goal) {
   for (const auto& [field, value] : {std::pair<const char*, double>{"goal.x", goal.x},
                                      {"goal.y", goal.y},
                                      {"goal.theta", goal.theta}}) {
@@ -134,10 +134,10 @@ void NavBt::cancelGoal() {
   if (context_.outcome == GoalOutcome::kActive) context_.outcome = GoalOutcome::kNone;
 }
 
-sim::Velocity NavBt::tick(const sim::BumperState& bumper, const sim::Pose2D& pose) {
+robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
   context_.bumper = bumper;
   pose_->set(pose);
-  context_.cmd = sim::Velocity{};
+  context_.cmd = robot::Velocity{};
   const bt::Status status = tree_.tick();
   if (status != bt::Status::kRunning && context_.outcome == GoalOutcome::kActive && goal_->get()) {
     goal_->clear();
@@ -155,4 +155,4 @@ sim::Velocity NavBt::tick(const sim::BumperState& bumper, const sim::Pose2D& pos
   return context_.cmd;
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -1,4 +1,4 @@
-#include "roomba_rrt/behavior/path_planner.h"
+#include "roomba_rrt/navigation/path_planner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "roomba_rrt/planning/planner.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 namespace {
 
 using planning::Point2;
@@ -23,7 +23,7 @@ planning::Problem problemFrom(const NavWorld& world) {
 
 }  // namespace
 
-NavWorld navWorldFrom(const sim::World& world, double clearance) {
+NavWorld navWorldFrom(const world::World& world, double clearance) {
   NavWorld nav;
   nav.bounds = {0.0, world.width, 0.0, world.height};
   nav.circles = world.circles;
@@ -183,4 +183,4 @@ bool InProcessPlanner::isPathFree(const Path& path, std::size_t from) const {
   return true;
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

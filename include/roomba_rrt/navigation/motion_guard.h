@@ -3,10 +3,10 @@
 // when the step it starts would bring the disc too close to a wall or a piece of furniture.
 #pragma once
 
-#include "roomba_rrt/behavior/path_planner.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/navigation/path_planner.h"
+#include "roomba_rrt/robot/robot_state.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 /// A safety filter for a disc robot on a unicycle. The followed path keeps `clearance` from
 /// every obstacle, but pure pursuit cuts corners inside it; on one goal in a few thousand that
@@ -23,14 +23,14 @@ class MotionGuard {
   MotionGuard(NavWorld world, double rate, double max_linear_accel, double margin = 0.01);
 
   /// The command to send instead of `cmd` at `pose`.
-  sim::Velocity filter(const sim::Pose2D& pose, const sim::Velocity& cmd) const;
+  robot::Velocity filter(const robot::Pose2D& pose, const robot::Velocity& cmd) const;
 
   /// Distance from the disc centred at (x, y) to the nearest wall or piece of furniture, minus
   /// the radius: the gap (negative when overlapping).
   double gap(double x, double y) const;
 
  private:
-  bool safe(const sim::Pose2D& pose, double v, double w) const;
+  bool safe(const robot::Pose2D& pose, double v, double w) const;
 
   NavWorld world_;
   double dt_;
@@ -38,4 +38,4 @@ class MotionGuard {
   double margin_;
 };
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

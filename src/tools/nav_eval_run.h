@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "roomba_rrt/behavior/nav_bt.h"
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/world/world.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::tools {
 
 /// Length of a shortest path from `start` to `goal` for the world's robot disc (every point of
 /// it at least robot_radius from walls and furniture), computed independently of the planner:
@@ -21,8 +21,8 @@ namespace roomba_rrt::behavior {
 /// shorter than the true shortest; it exceeds it by less than about 1 % plus a cell near tight
 /// passages (16 neighbours alone: ≤ 2.7 %, the taut pull removes most of it). +inf when the
 /// grid finds no way (start or goal not free, or a passage narrower than a cell).
-double shortestDiscPathLength(const sim::World& world, const sim::Pose2D& start,
-                              const sim::Pose2D& goal, double cell = 0.02);
+double shortestDiscPathLength(const world::World& world, const robot::Pose2D& start,
+                              const robot::Pose2D& goal, double cell = 0.02);
 
 struct NavEvalOptions {
   int goals = 20;
@@ -35,14 +35,14 @@ struct NavEvalOptions {
 
 /// One goal's run.
 struct GoalRun {
-  sim::Pose2D start, goal;
+  robot::Pose2D start, goal;
   bool reached = false;
-  int bumps = 0;                   ///< ticks with the bumper pressed
-  double time_s = 0;               ///< robot seconds from the goal to its end
-  double driven_m = 0;             ///< length driven
-  double shortest_m = 0;           ///< shortestDiscPathLength
-  std::string message;             ///< why it was aborted
-  std::vector<sim::Pose2D> trace;  ///< poses, every 6th tick
+  int bumps = 0;                     ///< ticks with the bumper pressed
+  double time_s = 0;                 ///< robot seconds from the goal to its end
+  double driven_m = 0;               ///< length driven
+  double shortest_m = 0;             ///< shortestDiscPathLength
+  std::string message;               ///< why it was aborted
+  std::vector<robot::Pose2D> trace;  ///< poses, every 6th tick
 };
 
 struct NavEvalReport {
@@ -58,7 +58,7 @@ struct NavEvalReport {
 /// Runs `options.goals` random reachable goals (a free pose for the robot's disc with a finite
 /// shortest path, at least min_goal_distance away) one after another from the world's initial
 /// pose. `progress(done, total)` is called after each goal.
-NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tree_file,
+NavEvalReport evaluateNavigation(const world::World& world, const std::string& tree_file,
                                  const NavEvalOptions& options,
                                  const std::function<void(int, int)>& progress = {});
 
@@ -66,4 +66,4 @@ NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tre
 ///  "planning_ms_p50": …}
 std::string toJson(const NavEvalReport& report);
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::tools

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "roomba_rrt/planning/geometry.h"
-#include "roomba_rrt/sim/robot_state.h"
+#include "roomba_rrt/robot/robot_state.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 /// A path: points in the map frame, start first, goal last (the planner's output).
 using Path = std::vector<planning::Point2>;
@@ -82,10 +82,10 @@ class PathFollower {
 
   /// Starts following `path` to `goal` (its x, y should be the path's last point; its θ is the
   /// heading to end with). `current` is the robot's command of the last tick.
-  void start(const Path& path, const sim::Pose2D& goal, const sim::Velocity& current = {});
+  void start(const Path& path, const robot::Pose2D& goal, const robot::Velocity& current = {});
 
   /// One tick from the robot's pose: the status and, in `cmd`, the command for this tick.
-  FollowStatus step(const sim::Pose2D& pose, sim::Velocity& cmd);
+  FollowStatus step(const robot::Pose2D& pose, robot::Velocity& cmd);
 
   /// Distance from the robot to the path found by the last step (m).
   double deviation() const { return deviation_; }
@@ -101,11 +101,11 @@ class PathFollower {
   /// The point at arc length `s` along the path (clamped to its ends).
   planning::Point2 pointAt(double s) const;
   /// Applies the acceleration and speed limits to (v, w) from the last command, and stores it.
-  sim::Velocity limit(double v, double w);
+  robot::Velocity limit(double v, double w);
 
   FollowerParams params_;
   const Path* path_ = nullptr;
-  sim::Pose2D goal_;
+  robot::Pose2D goal_;
   double total_length_ = 0;
   std::size_t segment_ = 0;     ///< index of the segment the robot projects onto
   double segment_start_s_ = 0;  ///< arc length at the start of segment_
@@ -113,7 +113,7 @@ class PathFollower {
   double deviation_ = 0;
   bool at_goal_ = false;
   bool turning_in_place_ = false;
-  sim::Velocity last_;
+  robot::Velocity last_;
 };
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

@@ -1,4 +1,4 @@
-#include "roomba_rrt/sim/world.h"
+#include "roomba_rrt/world/world.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <fstream>
 #include <string>
 
-using roomba_rrt::sim::loadWorld;
-using roomba_rrt::sim::parseWorld;
-using roomba_rrt::sim::World;
+using roomba_rrt::world::loadWorld;
+using roomba_rrt::world::parseWorld;
+using roomba_rrt::world::World;
 
 namespace {
 /// The message parseWorld throws for `yaml`, or "" when it loads.
@@ -178,7 +178,7 @@ TEST(World, a_path_that_is_not_a_small_regular_file_is_named) {
 TEST(World, without_robots_the_world_has_one_unnamed_robot_from_the_shared_fields) {
   const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
   EXPECT_TRUE(world.robots.empty());
-  const auto robots = roomba_rrt::sim::robotsOf(world);
+  const auto robots = roomba_rrt::world::robotsOf(world);
   ASSERT_EQ(robots.size(), 1u);
   EXPECT_EQ(robots[0].name, "");
   EXPECT_EQ(robots[0].radius, world.robot_radius);
@@ -251,16 +251,16 @@ TEST(World, a_key_given_twice_is_refused_naming_it_and_both_lines) {
 
 TEST(World, a_file_that_sets_no_section_says_which_defaults_it_runs_with) {
   const World empty = parseWorld("# truncated to a comment\n", "cut.yaml");
-  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(empty, "cut.yaml"),
+  EXPECT_EQ(roomba_rrt::world::defaultsNotice(empty, "cut.yaml"),
             "cut.yaml sets no room, furniture, robot, initial_pose: the defaults are used "
             "(room.width 6.4, room.height 4.8, no furniture, robot.radius 0.17, "
             "robot.max_linear_speed 1, robot.max_angular_speed 2, initial_pose.x 3.2, "
             "initial_pose.y 2.4, initial_pose.theta 0)");
   const World furnished =
-      roomba_rrt::sim::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
-  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(furnished, "f.yaml"), "");
+      roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  EXPECT_EQ(roomba_rrt::world::defaultsNotice(furnished, "f.yaml"), "");
   const World robot_only = parseWorld("robot: {radius: 0.2}\nroom: {width: 6}\n", "r.yaml");
-  EXPECT_EQ(roomba_rrt::sim::defaultsNotice(robot_only, "r.yaml"),
+  EXPECT_EQ(roomba_rrt::world::defaultsNotice(robot_only, "r.yaml"),
             "r.yaml sets no furniture, initial_pose: the defaults are used (no furniture, "
             "initial_pose.x 3.2, initial_pose.y 2.4, initial_pose.theta 0)");
 }

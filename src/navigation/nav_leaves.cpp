@@ -1,6 +1,6 @@
-#include "roomba_rrt/behavior/nav_leaves.h"
+#include "roomba_rrt/navigation/nav_leaves.h"
 
-#include "roomba_rrt/behavior/motion_guard.h"
+#include "roomba_rrt/navigation/motion_guard.h"
 #include "roomba_rrt/sim/unicycle.h"
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 
 namespace roomba_rrt::bt {
 
-std::string LiteralParser<sim::Pose2D>::parse(const std::string& text, sim::Pose2D& out) {
+std::string LiteralParser<robot::Pose2D>::parse(const std::string& text, robot::Pose2D& out) {
   double v[3];
   std::size_t begin = 0;
   for (int i = 0; i < 3; ++i) {
@@ -31,7 +31,7 @@ std::string LiteralParser<sim::Pose2D>::parse(const std::string& text, sim::Pose
 
 }  // namespace roomba_rrt::bt
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 const char* toString(GoalOutcome outcome) {
   switch (outcome) {
@@ -70,15 +70,15 @@ class NavLeaf : public bt::LeafNode {
 class ComputePath final : public NavLeaf {
  public:
   static PortList providedPorts() {
-    return {inputPort<sim::Pose2D>("start", "where to plan from (the robot's pose)"),
-            inputPort<sim::Pose2D>("goal", "where to plan to"),
+    return {inputPort<robot::Pose2D>("start", "where to plan from (the robot's pose)"),
+            inputPort<robot::Pose2D>("goal", "where to plan to"),
             outputPort<Path>("path", "the plan, start to goal"),
             outputPort<std::string>("error", "why planning failed", "{error}")};
   }
   ComputePath(const NodeSpec& spec, NavContext& context, std::unique_ptr<PathPlanner> planner)
       : NavLeaf(spec.name, context),
-        start_(spec.input<sim::Pose2D>("start")),
-        goal_(spec.input<sim::Pose2D>("goal")),
+        start_(spec.input<robot::Pose2D>("start")),
+        goal_(spec.input<robot::Pose2D>("goal")),
         path_(spec.output<Path>("path")),
         error_(spec.output<std::string>("error")),
         planner_(std::move(planner)) {
@@ -89,8 +89,8 @@ class ComputePath final : public NavLeaf {
   void onEnter() override { requested_ = false; }
   Status onTick() override {
     if (!requested_) {
-      const sim::Pose2D* start = start_.get();
-      const sim::Pose2D* goal = goal_.get();
+      const robot::Pose2D* start = start_.get();
+      const robot::Pose2D* goal = goal_.get();
       if (!start || !goal) {
         error_.set(start ? "no goal to plan to" : "no start pose to plan from");
         return Status::kFailure;
@@ -121,7 +121,7 @@ class ComputePath final : public NavLeaf {
   bool keepCurrentPath() {
     const Path& current = path_.value();
     if (current.size() < 2 || reply_.path.size() < 2) return false;
-    const sim::Pose2D* goal = goal_.get();
+    const robot::Pose2D* goal = goal_.get();
     if (!goal || current.back().x != goal->x || current.back().y != goal->y) return false;
     const planning::Point2 robot = reply_.path.front();
     // What is left of the current path: from the robot's projection on its nearest segment on.
@@ -144,7 +144,7 @@ class ComputePath final : public NavLeaf {
   }
   void onHalt() override { planner_->cancel(); }
 
-  InputPort<sim::Pose2D> start_, goal_;
+  InputPort<robot::Pose2D> start_, goal_;
   OutputPort<Path> path_;
   OutputPort<std::string> error_;
   std::unique_ptr<PathPlanner> planner_;
@@ -156,8 +156,8 @@ class FollowPath final : public NavLeaf {
  public:
   static PortList providedPorts() {
     return {inputPort<Path>("path", "the path to follow"),
-            inputPort<sim::Pose2D>("goal", "the goal pose (its heading is the final one)"),
-            inputPort<sim::Pose2D>("pose", "the robot's pose"),
+            inputPort<robot::Pose2D>("goal", "the goal pose (its heading is the final one)"),
+            inputPort<robot::Pose2D>("pose", "the robot's pose"),
             outputPort<std::string>("error", "why following failed", "{error}")};
   }
   FollowPath(const NodeSpec& spec, NavContext& context, const FollowerParams& params,
@@ -165,8 +165,8 @@ class FollowPath final : public NavLeaf {
       : NavLeaf(spec.name, context),
         guard_(std::move(guard)),
         path_(spec.input<Path>("path")),
-        goal_(spec.input<sim::Pose2D>("goal")),
-        pose_(spec.input<sim::Pose2D>("pose")),
+        goal_(spec.input<robot::Pose2D>("goal")),
+        pose_(spec.input<robot::Pose2D>("pose")),
         error_(spec.output<std::string>("error")),
         follower_(params) {}
 
@@ -177,8 +177,8 @@ class FollowPath final : public NavLeaf {
   }
   Status onTick() override {
     const Path* path = path_.get();
-    const sim::Pose2D* goal = goal_.get();
-    const sim::Pose2D* pose = pose_.get();
+    const robot::Pose2D* goal = goal_.get();
+    const robot::Pose2D* pose = pose_.get();
     if (!path || !goal || !pose) {
       error_.set(!path ? "no path to follow" : !goal ? "no goal" : "no pose");
       return Status::kFailure;
@@ -195,7 +195,7 @@ class FollowPath final : public NavLeaf {
       path_writes_ = path_.writes();
       follower_.start(*path, *goal, context_.previous_cmd);
     }
-    sim::Velocity cmd;
+    robot::Velocity cmd;
     switch (follower_.step(*pose, cmd)) {
       case FollowStatus::kFollowing:
         context_.cmd = guard_ ? guarded(*pose, cmd) : cmd;
@@ -230,8 +230,8 @@ class FollowPath final : public NavLeaf {
   /// The follower's command if the guard lets it pass. Otherwise pure pursuit is cutting a
   /// corner too close to something: aim at the path just ahead instead (following it closely,
   /// as it keeps its clearance), turning in place first, then driving slowly if the guard agrees.
-  sim::Velocity guarded(const sim::Pose2D& pose, const sim::Velocity& cmd) const {
-    const sim::Velocity safe = guard_->filter(pose, cmd);
+  robot::Velocity guarded(const robot::Pose2D& pose, const robot::Velocity& cmd) const {
+    const robot::Velocity safe = guard_->filter(pose, cmd);
     if (cmd.v == 0 || safe.v != 0) return safe;
     const FollowerParams& p = follower_.params();
     const planning::Point2 near = follower_.pointAhead(kCloseLookahead);
@@ -248,7 +248,7 @@ class FollowPath final : public NavLeaf {
   std::shared_ptr<const MotionGuard> guard_;       ///< null: commands unchecked
   int held_ticks_ = 0;  ///< consecutive ticks the guard stopped the robot
   InputPort<Path> path_;
-  InputPort<sim::Pose2D> goal_, pose_;
+  InputPort<robot::Pose2D> goal_, pose_;
   OutputPort<std::string> error_;
   PathFollower follower_;
   std::uint64_t path_writes_ = 0;
@@ -257,10 +257,10 @@ class FollowPath final : public NavLeaf {
 
 class GoalUpdated final : public bt::ConditionNode {
  public:
-  static PortList providedPorts() { return {inputPort<sim::Pose2D>("goal", "the goal")}; }
+  static PortList providedPorts() { return {inputPort<robot::Pose2D>("goal", "the goal")}; }
   explicit GoalUpdated(const NodeSpec& spec)
       : ConditionNode(spec.name),
-        goal_(spec.input<sim::Pose2D>("goal")),
+        goal_(spec.input<robot::Pose2D>("goal")),
         clock_(*spec.blackboard) {}
 
  private:
@@ -273,7 +273,7 @@ class GoalUpdated final : public bt::ConditionNode {
     seen_ = writes;
     return updated ? Status::kSuccess : Status::kFailure;
   }
-  InputPort<sim::Pose2D> goal_;
+  InputPort<robot::Pose2D> goal_;
   const bt::Blackboard& clock_;
   std::uint64_t seen_ = 0;
   std::uint64_t last_tick_ = 0;
@@ -281,13 +281,13 @@ class GoalUpdated final : public bt::ConditionNode {
 
 class HasGoal final : public bt::ConditionNode {
  public:
-  static PortList providedPorts() { return {inputPort<sim::Pose2D>("goal", "the goal")}; }
+  static PortList providedPorts() { return {inputPort<robot::Pose2D>("goal", "the goal")}; }
   explicit HasGoal(const NodeSpec& spec)
-      : ConditionNode(spec.name), goal_(spec.input<sim::Pose2D>("goal")) {}
+      : ConditionNode(spec.name), goal_(spec.input<robot::Pose2D>("goal")) {}
 
  private:
   Status onTick() override { return goal_.get() ? Status::kSuccess : Status::kFailure; }
-  InputPort<sim::Pose2D> goal_;
+  InputPort<robot::Pose2D> goal_;
 };
 
 class IsBumped final : public bt::ConditionNode {
@@ -336,20 +336,20 @@ template <GoalOutcome kOutcome>
 class EndGoal final : public bt::LeafNode {
  public:
   static PortList providedPorts() {
-    PortList ports{inputPort<sim::Pose2D>("goal", "the goal")};
+    PortList ports{inputPort<robot::Pose2D>("goal", "the goal")};
     if (kOutcome == GoalOutcome::kAborted) {
       ports.push_back(inputPort<std::string>("error", "why", "{error}"));
     }
     return ports;
   }
   EndGoal(const NodeSpec& spec, NavContext& context)
-      : LeafNode(spec.name), context_(context), goal_entry_(spec.input<sim::Pose2D>("goal")) {
+      : LeafNode(spec.name), context_(context), goal_entry_(spec.input<robot::Pose2D>("goal")) {
     if (kOutcome == GoalOutcome::kAborted) error_ = spec.input<std::string>("error");
     std::string key;
     if (!bt::parseBlackboardKey(spec.attributes.at("goal"), key)) {
       throw std::invalid_argument("port 'goal' needs a blackboard key like {goal}");
     }
-    goal_ = &spec.blackboard->declare<sim::Pose2D>(key);
+    goal_ = &spec.blackboard->declare<robot::Pose2D>(key);
   }
 
  private:
@@ -366,9 +366,9 @@ class EndGoal final : public bt::LeafNode {
     return Status::kFailure;
   }
   NavContext& context_;
-  InputPort<sim::Pose2D> goal_entry_;
+  InputPort<robot::Pose2D> goal_entry_;
   InputPort<std::string> error_;
-  bt::Blackboard::Entry<sim::Pose2D>* goal_ = nullptr;
+  bt::Blackboard::Entry<robot::Pose2D>* goal_ = nullptr;
 };
 
 template <class Node, class... Args>
@@ -400,9 +400,10 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   factory.registerNodeWithPorts(
       "BackUp", bt::NodeKind::kLeaf,
       [rate, ctx](const NodeSpec& spec) {
-        return std::make_unique<MotionLeaf<BackUp>>(
-            spec.name, RoombaState::kGoBack,
-            BackUp(spec.literal<double>("backup_dist"), spec.literal<double>("backup_speed"), rate),
+        return std::make_unique<behavior::MotionLeaf<behavior::BackUp>>(
+            spec.name, behavior::RoombaState::kGoBack,
+            behavior::BackUp(spec.literal<double>("backup_dist"),
+                             spec.literal<double>("backup_speed"), rate),
             *ctx);
       },
       {inputPort<double>("backup_dist", "how far to back up (m)", "0.15").range(0.0, 5.0),
@@ -410,9 +411,10 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   factory.registerNodeWithPorts(
       "Spin", bt::NodeKind::kLeaf,
       [rate, ctx](const NodeSpec& spec) {
-        return std::make_unique<MotionLeaf<Spin>>(
-            spec.name, RoombaState::kRotate,
-            Spin(spec.literal<double>("spin_dist"), spec.literal<double>("spin_speed"), 1.0 / rate),
+        return std::make_unique<behavior::MotionLeaf<behavior::Spin>>(
+            spec.name, behavior::RoombaState::kRotate,
+            behavior::Spin(spec.literal<double>("spin_dist"), spec.literal<double>("spin_speed"),
+                           1.0 / rate),
             *ctx);
       },
       {inputPort<double>("spin_dist", "how far to turn (rad, positive: left)", "1.57")
@@ -436,4 +438,4 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   });
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

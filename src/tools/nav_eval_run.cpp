@@ -1,4 +1,4 @@
-#include "roomba_rrt/behavior/nav_eval.h"
+#include "nav_eval_run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "roomba_rrt/sim/simulator.h"
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::tools {
 namespace {
 
 using planning::Point2;
@@ -22,14 +22,14 @@ double pointSegmentDistance(const Point2& p, const Point2& a, const Point2& b) {
   return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
 }
 
-double pointRectangleDistance(const Point2& p, const sim::Rectangle& r) {
+double pointRectangleDistance(const Point2& p, const geometry::Rectangle& r) {
   const double dx = std::max({r.min_x - p.x, 0.0, p.x - r.max_x});
   const double dy = std::max({r.min_y - p.y, 0.0, p.y - r.max_y});
   return std::hypot(dx, dy);
 }
 
 /// Whether segment a-b meets the rectangle (Liang–Barsky clipping).
-bool segmentMeetsRectangle(const Point2& a, const Point2& b, const sim::Rectangle& r) {
+bool segmentMeetsRectangle(const Point2& a, const Point2& b, const geometry::Rectangle& r) {
   double t0 = 0, t1 = 1;
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double p[4] = {-dx, dx, -dy, dy};
@@ -50,7 +50,7 @@ bool segmentMeetsRectangle(const Point2& a, const Point2& b, const sim::Rectangl
   return true;
 }
 
-double segmentRectangleDistance(const Point2& a, const Point2& b, const sim::Rectangle& r) {
+double segmentRectangleDistance(const Point2& a, const Point2& b, const geometry::Rectangle& r) {
   if (segmentMeetsRectangle(a, b, r)) return 0;
   double d = std::min(pointRectangleDistance(a, r), pointRectangleDistance(b, r));
   const Point2 corners[4] = {
@@ -60,49 +60,49 @@ double segmentRectangleDistance(const Point2& a, const Point2& b, const sim::Rec
 }
 
 /// Whether the disc of radius `margin` around p is inside the room and clear of the furniture.
-bool discFree(const sim::World& w, const Point2& p, double margin) {
+bool discFree(const world::World& w, const Point2& p, double margin) {
   if (p.x < margin || p.x > w.width - margin || p.y < margin || p.y > w.height - margin) {
     return false;
   }
-  for (const sim::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.circles) {
     if (std::hypot(p.x - c.center.x, p.y - c.center.y) < c.radius + margin) return false;
   }
-  for (const sim::Rectangle& r : w.rectangles) {
+  for (const geometry::Rectangle& r : w.rectangles) {
     if (pointRectangleDistance(p, r) < margin) return false;
   }
   return true;
 }
 
 /// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).
-bool sweepFree(const sim::World& w, const Point2& a, const Point2& b, double margin) {
+bool sweepFree(const world::World& w, const Point2& a, const Point2& b, double margin) {
   if (!discFree(w, a, margin) || !discFree(w, b, margin)) return false;
-  for (const sim::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.circles) {
     if (pointSegmentDistance(c.center, a, b) < c.radius + margin) return false;
   }
-  for (const sim::Rectangle& r : w.rectangles) {
+  for (const geometry::Rectangle& r : w.rectangles) {
     if (segmentRectangleDistance(a, b, r) < margin) return false;
   }
   return true;
 }
 
 /// Records every finished plan's time.
-class TimedPlanner final : public PathPlanner {
+class TimedPlanner final : public navigation::PathPlanner {
  public:
-  TimedPlanner(std::unique_ptr<PathPlanner> inner, std::vector<double>& times)
+  TimedPlanner(std::unique_ptr<navigation::PathPlanner> inner, std::vector<double>& times)
       : inner_(std::move(inner)), times_(times) {}
   void request(const Point2& start, const Point2& goal) override { inner_->request(start, goal); }
-  bool poll(PlanReply& reply) override {
+  bool poll(navigation::PlanReply& reply) override {
     if (!inner_->poll(reply)) return false;
     times_.push_back(reply.planning_ms);
     return true;
   }
   void cancel() override { inner_->cancel(); }
-  bool isPathFree(const Path& path, std::size_t from) const override {
+  bool isPathFree(const navigation::Path& path, std::size_t from) const override {
     return inner_->isPathFree(path, from);
   }
 
  private:
-  std::unique_ptr<PathPlanner> inner_;
+  std::unique_ptr<navigation::PathPlanner> inner_;
   std::vector<double>& times_;
 };
 
@@ -115,8 +115,8 @@ double median(std::vector<double> values) {
 
 }  // namespace
 
-double shortestDiscPathLength(const sim::World& world, const sim::Pose2D& start,
-                              const sim::Pose2D& goal, double cell) {
+double shortestDiscPathLength(const world::World& world, const robot::Pose2D& start,
+                              const robot::Pose2D& goal, double cell) {
   const double inf = std::numeric_limits<double>::infinity();
   const double r = world.robot_radius;
   const Point2 s{start.x, start.y}, g{goal.x, goal.y};
@@ -198,27 +198,27 @@ double shortestDiscPathLength(const sim::World& world, const sim::Pose2D& start,
   return length;
 }
 
-NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tree_file,
+NavEvalReport evaluateNavigation(const world::World& world, const std::string& tree_file,
                                  const NavEvalOptions& options,
                                  const std::function<void(int, int)>& progress) {
   NavEvalReport report;
-  const NavWorld nav_world = navWorldFrom(world, options.clearance);
-  planning::PlannerOptions planner_options = defaultNavPlannerOptions();
+  const navigation::NavWorld nav_world = navigation::navWorldFrom(world, options.clearance);
+  planning::PlannerOptions planner_options = navigation::defaultNavPlannerOptions();
   planner_options.seed = options.seed;
-  const auto mode =
-      options.threaded_planner ? InProcessPlanner::Mode::kThread : InProcessPlanner::Mode::kInline;
-  NavLeafConfig config;
+  const auto mode = options.threaded_planner ? navigation::InProcessPlanner::Mode::kThread
+                                             : navigation::InProcessPlanner::Mode::kInline;
+  navigation::NavLeafConfig config;
   std::vector<double>* times = &report.planning_ms;
   config.planners = [nav_world, planner_options, mode, times] {
     return std::make_unique<TimedPlanner>(
-        std::make_unique<InProcessPlanner>(nav_world, planner_options, mode), *times);
+        std::make_unique<navigation::InProcessPlanner>(nav_world, planner_options, mode), *times);
   };
-  config.checker = std::make_shared<InProcessPlanner>(nav_world, planner_options,
-                                                      InProcessPlanner::Mode::kInline);
+  config.checker = std::make_shared<navigation::InProcessPlanner>(
+      nav_world, planner_options, navigation::InProcessPlanner::Mode::kInline);
   config.known_world = nav_world;
   config.params.rate = 1.0 / world.step;
   config.follower.rate = config.params.rate;
-  NavBt nav(config, options.seed, tree_file);
+  navigation::NavBt nav(config, options.seed, tree_file);
   sim::Simulator simulator(world);
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> ux(0, world.width), uy(0, world.height), ut(-M_PI, M_PI);
@@ -229,7 +229,7 @@ NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tre
     GoalRun run;
     run.start = simulator.pose();
     for (int tries = 0; tries < 100000; ++tries) {
-      const sim::Pose2D candidate{ux(rng), uy(rng), ut(rng)};
+      const robot::Pose2D candidate{ux(rng), uy(rng), ut(rng)};
       if (!discFree(world, {candidate.x, candidate.y}, margin + 0.02)) continue;
       if (std::hypot(candidate.x - run.start.x, candidate.y - run.start.y) <
           options.min_goal_distance) {
@@ -242,17 +242,17 @@ NavEvalReport evaluateNavigation(const sim::World& world, const std::string& tre
     }
     nav.setGoal(run.goal);
     long tick = 0;
-    for (; tick < max_ticks && nav.outcome() == GoalOutcome::kActive; ++tick) {
-      const sim::BumperState bumper = simulator.senseContact();
+    for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
+      const robot::BumperState bumper = simulator.senseContact();
       run.bumps += bumper.pressed ? 1 : 0;
-      const sim::Pose2D before = simulator.pose();
+      const robot::Pose2D before = simulator.pose();
       simulator.move(nav.tick(bumper, before));
       run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
       if (tick % 6 == 0) run.trace.push_back(simulator.pose());
     }
     run.time_s = static_cast<double>(tick) * world.step;
-    run.reached = nav.outcome() == GoalOutcome::kSucceeded;
-    if (nav.outcome() == GoalOutcome::kActive) {
+    run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
+    if (nav.outcome() == navigation::GoalOutcome::kActive) {
       nav.cancelGoal();
       run.message = "timeout";
     } else if (!run.reached) {
@@ -289,4 +289,4 @@ std::string toJson(const NavEvalReport& r) {
   return text;
 }
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::tools

@@ -2,7 +2,7 @@
 // bumper. Plain values, no ROS.
 #pragma once
 
-namespace roomba_rrt::sim {
+namespace roomba_rrt::robot {
 
 /// A planar pose in the map frame (REP-103: metres, radians, x forward, y left, θ counter-clockwise
 /// from +x).
@@ -29,4 +29,4 @@ struct BumperState {
   bool right = false;
 };
 
-}  // namespace roomba_rrt::sim
+}  // namespace roomba_rrt::robot

@@ -9,30 +9,30 @@
 #include <optional>
 #include <string>
 
-#include "roomba_rrt/behavior/path_follower.h"
-#include "roomba_rrt/behavior/path_planner.h"
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/behavior/roomba_state.h"
 #include "roomba_rrt/bt/tree_factory.h"
+#include "roomba_rrt/navigation/path_follower.h"
+#include "roomba_rrt/navigation/path_planner.h"
 
 namespace roomba_rrt::bt {
 template <>
-struct TypeName<sim::Pose2D> {
+struct TypeName<robot::Pose2D> {
   static std::string get() { return "Pose2D"; }
 };
 template <>
-struct TypeName<behavior::Path> {
+struct TypeName<navigation::Path> {
   static std::string get() { return "Path"; }
 };
 /// A literal pose: "x;y;theta" (three finite numbers).
 template <>
-struct LiteralParser<sim::Pose2D> {
+struct LiteralParser<robot::Pose2D> {
   static constexpr bool kParsable = true;
-  static std::string parse(const std::string& text, sim::Pose2D& out);
+  static std::string parse(const std::string& text, robot::Pose2D& out);
 };
 }  // namespace roomba_rrt::bt
 
-namespace roomba_rrt::behavior {
+namespace roomba_rrt::navigation {
 
 /// How a navigation goal ended (what a move_base client is told).
 enum class GoalOutcome : std::uint8_t { kNone, kActive, kSucceeded, kAborted };
@@ -41,9 +41,9 @@ const char* toString(GoalOutcome outcome);
 /// The data the navigation leaves share besides the blackboard: the lab's context (bumper in,
 /// command out, the leaf's name), the previous tick's command (the follower's acceleration
 /// limits start from it), and the outcome of the current goal.
-struct NavContext : RoombaContext {
-  explicit NavContext(std::uint32_t seed) : RoombaContext(seed) {}
-  sim::Velocity previous_cmd;
+struct NavContext : behavior::RoombaContext {
+  explicit NavContext(std::uint32_t seed) : behavior::RoombaContext(seed) {}
+  robot::Velocity previous_cmd;
   GoalOutcome outcome = GoalOutcome::kNone;
   std::string message;  ///< why the goal was aborted
   /// FollowPath's limits and tolerances when they were changed after the tree was built
@@ -57,9 +57,9 @@ using PlannerFactory = std::function<std::unique_ptr<PathPlanner>()>;
 
 /// What the navigation leaves need to be built.
 struct NavLeafConfig {
-  RoombaParams params;      ///< rate (ticks per second) and the Spin's default speed
-  FollowerParams follower;  ///< FollowPath's limits and tolerances
-  PlannerFactory planners;  ///< ComputePath's planners
+  behavior::RoombaParams params;  ///< rate (ticks per second) and the Spin's default speed
+  FollowerParams follower;        ///< FollowPath's limits and tolerances
+  PlannerFactory planners;        ///< ComputePath's planners
   std::shared_ptr<const PathPlanner> checker;  ///< IsPathValid's world (may be null: always valid)
   /// The walls and furniture FollowPath never lets the robot touch (MotionGuard); none: its
   /// commands go out unchecked.
@@ -98,4 +98,4 @@ struct NavLeafConfig {
 /// `context` and the planners must outlive the trees built.
 void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, NavContext& context);
 
-}  // namespace roomba_rrt::behavior
+}  // namespace roomba_rrt::navigation

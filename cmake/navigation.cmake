@@ -1,0 +1,94 @@
+# Navigation: the path follower and its motion guard, the planner interface, the navigation leaves
+# and trees (src/navigation/), ROS-free, a library of its own so that the lab's behaviours do not
+# depend on the planner; the roomba_bt node, which runs the lab's tree or a navigation tree; the
+# roomba_nav_eval tool; tests and the latency probe.
+find_package(Threads REQUIRED)
+add_library(roomba_nav_core
+  src/navigation/path_follower.cpp
+  src/navigation/motion_guard.cpp
+  src/navigation/path_planner.cpp
+  src/navigation/nav_leaves.cpp
+  src/navigation/nav_bt.cpp
+)
+target_include_directories(roomba_nav_core PUBLIC include)
+target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
+  Threads::Threads)
+
+# roomba_bt: the lab's tree, or a navigation tree behind move_base's interface (the move_base
+# action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client). The conversions are
+# unit-tested without a master (nav_ros_test).
+add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/nodes/nav_behavior.cpp
+  src/nodes/nav_ros.cpp src/nodes/planner_ros.cpp)
+target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core)
+add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
+# Goal message to first non-zero /cmd_vel over ROS, in wall time (scripts/bench).
+add_executable(nav_latency_probe bench/nav_latency_probe.cpp)
+target_include_directories(nav_latency_probe PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
+
+# Navigation without ROS: random goals in one process (simulator, tree, planner). Its run loop
+# (src/tools/nav_eval_run.*) is a library of its own, for the tests that drive navigation with it.
+add_library(roomba_nav_eval_run STATIC src/tools/nav_eval_run.cpp)
+target_include_directories(roomba_nav_eval_run PUBLIC ${PROJECT_SOURCE_DIR}/src/tools)
+target_link_libraries(roomba_nav_eval_run PUBLIC roomba_nav_core)
+add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
+target_link_libraries(roomba_nav_eval roomba_nav_eval_run roomba_tools)
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(nav_core_test
+    test/navigation/path_follower_test.cpp
+    test/navigation/nav_bt_test.cpp
+    test/navigation/nav_leaves_test.cpp
+  )
+  if(TARGET nav_core_test)
+    target_link_libraries(nav_core_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_core_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+  # roomba_nav_eval's run loop: goals drawn, outcomes counted, reproducible.
+  catkin_add_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp)
+  if(TARGET nav_eval_run_test)
+    target_link_libraries(nav_eval_run_test roomba_nav_eval_run gtest_main)
+    target_compile_definitions(nav_eval_run_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+  # 12 000 goals in three rooms (about 30 s): its own test, so the quick ones stay quick.
+  catkin_add_gtest(bump_free_navigation_test test/navigation/bump_free_navigation_test.cpp
+    TIMEOUT 600)
+  if(TARGET bump_free_navigation_test)
+    target_link_libraries(bump_free_navigation_test roomba_nav_eval_run gtest_main)
+    target_compile_definitions(bump_free_navigation_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
+      ROOMBA_RRT_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test")
+  endif()
+  # roomba_bt's navigation conversions, without a master.
+  catkin_add_gtest(nav_ros_test test/navigation/nav_ros_test.cpp src/nodes/nav_ros.cpp)
+  if(TARGET nav_ros_test)
+    target_include_directories(nav_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(nav_ros_test roomba_nav_core ${catkin_LIBRARIES} gtest_main)
+    add_dependencies(nav_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
+    target_compile_definitions(nav_ros_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+
+  # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.
+  add_rostest_gtest(nav_rostest test/navigation/nav_goal.test test/navigation/nav_rostest.cpp)
+  add_rostest(test/navigation/nav_action.test DEPENDENCIES nav_rostest)
+  # Two named robots, each with its own navigation roomba_bt, one shared rrt_planner.
+  add_rostest(test/navigation/nav_two_robots.test DEPENDENCIES nav_rostest)
+  if(TARGET nav_rostest)
+    target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(nav_rostest ${catkin_LIBRARIES})
+    add_dependencies(nav_rostest roomba_bt roomba_sim rrt_planner
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+
+  # Its own executable: it replaces operator new to count allocations.
+  catkin_add_gtest(nav_allocation_test test/navigation/nav_allocation_test.cpp)
+  if(TARGET nav_allocation_test)
+    target_link_libraries(nav_allocation_test roomba_nav_core gtest_main)
+    target_compile_definitions(nav_allocation_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+  endif()
+endif()
