@@ -13,6 +13,7 @@
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/behavior/roomba_tree.h"
 #include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/world/world.h"
 #include "roomba_switch.h"
@@ -84,7 +85,7 @@ BENCHMARK(BM_BtBuildFromXml)->Unit(benchmark::kMicrosecond);
 class UntimedPlanner final : public roomba_rrt::navigation::PathPlanner {
  public:
   /// Pauses `state` while planning when `*timed` is true (inside the timed loop).
-  UntimedPlanner(const roomba_rrt::navigation::NavWorld& world, benchmark::State& state,
+  UntimedPlanner(const roomba_rrt::planning::Problem& world, benchmark::State& state,
                  const bool& timed)
       : inner_(world, roomba_rrt::navigation::defaultNavPlannerOptions(),
                roomba_rrt::navigation::InProcessPlanner::Mode::kInline),
@@ -112,8 +113,9 @@ class UntimedPlanner final : public roomba_rrt::navigation::PathPlanner {
 /// restarted outside the timing.
 void BM_NavTreeFollowing(benchmark::State& state) {
   using namespace roomba_rrt::navigation;
-  const NavWorld room = navWorldFrom(
+  roomba_rrt::planning::Problem room = roomba_rrt::planning::roomProblem(
       roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
+  room.clearance = kDefaultClearance;
   NavLeafConfig config = inProcessNavConfig(room);
   bool timed = false;
   config.planners = [&room, &state, &timed] {

@@ -66,7 +66,7 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/sim_invalid_world_test.cpp)
   # What a user sees in rviz: Xvfb, programs on it, screen grabs (imagemagick); also behavior.cmake.
   add_library(roomba_screen_capture STATIC EXCLUDE_FROM_ALL test/common/screen_capture.cpp)
-  # Issue 11: master restarted, then roomba_sim restarted, under scripts/run's supervision: the
+  # Master restarted, then roomba_sim restarted, under scripts/run's supervision: the
   # robot drives again within 5 s (a bash script; it starts its own roscore on a free port).
   add_test(NAME master_restart_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/master_restart_test.bash)
@@ -78,12 +78,12 @@ if(CATKIN_ENABLE_TESTING)
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/scripts_run_test.bash)
   set_tests_properties(scripts_run_test PROPERTIES
     ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 240)
-  # Issue 11: node parameters out of range stop the node naming them; Ctrl-C stops within 1 s.
+  # Node parameters out of range stop the node naming them; Ctrl-C stops within 1 s.
   add_test(NAME node_parameters_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/node_parameters_test.bash)
   set_tests_properties(node_parameters_test PROPERTIES
     ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 300)
-  # Issue 13: two machines (network namespaces joined by a veth pair) against one master:
+  # Two machines (network namespaces joined by a veth pair) against one master:
   # roscore + roomba_sim on one, roomba_fsm + rrt_planner on the other. Needs root and ip netns;
   # without them it exits 77 and ctest shows it as skipped.
   add_test(NAME two_machines_test
@@ -96,7 +96,7 @@ if(CATKIN_ENABLE_TESTING)
   if(TARGET sim_rviz_screenshot_test)
     target_link_libraries(sim_rviz_screenshot_test roomba_screen_capture)
   endif()
-  # Issue 13: two named robots, each driven by its own roomba_fsm under its namespace.
+  # Two named robots, each driven by its own roomba_fsm under its namespace.
   roomba_sim_rostest(sim_two_robots_test test/sim/sim_two_robots.test
     test/sim/sim_two_robots_test.cpp)
   if(TARGET sim_two_robots_test)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
 #include "roomba_rrt/util/text_file.h"
 #include "roomba_rrt/util/yaml_reader.h"
 
@@ -12,10 +13,7 @@ namespace roomba_rrt::behavior {
 namespace {
 
 using util::InvalidInput;
-
-void require(bool ok, const char* field, const char* rule, double value) {
-  if (!ok) throw InvalidInput(field, std::string("must be ") + rule + ", got " + util::show(value));
-}
+using util::require;
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "roomba_rrt/geometry/geometry.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
 namespace {
@@ -14,17 +15,24 @@ constexpr int kBisections = 10;           // the safe fraction of v to about 1/1
 
 }  // namespace
 
-MotionGuard::MotionGuard(NavWorld world, double rate, double max_linear_accel, double margin)
+MotionGuard::MotionGuard(planning::Problem world, double rate, double max_linear_accel,
+                         double margin)
     : world_(std::move(world)),
       dt_(1.0 / rate),
       max_linear_accel_(max_linear_accel),
-      margin_(margin) {}
+      margin_(margin) {
+  util::requirePositive("rate", rate);
+  util::requirePositive("max_linear_accel", max_linear_accel);
+  util::require(std::isfinite(margin) && margin >= 0, "margin", "finite and >= 0", margin);
+  util::require(std::isfinite(world_.robot_radius) && world_.robot_radius >= 0, "robot_radius",
+                "finite and >= 0", world_.robot_radius);
+}
 
 double MotionGuard::gap(double x, double y) const {
   const planning::Point2 p{x, y};
   const planning::Bounds& b = world_.bounds;
   double nearest = std::min({x - b.x_min, b.x_max - x, y - b.y_min, b.y_max - y});
-  for (const auto& c : world_.circles) nearest = std::min(nearest, geometry::distance(c, p));
+  for (const auto& c : world_.obstacles) nearest = std::min(nearest, geometry::distance(c, p));
   for (const auto& r : world_.rectangles) nearest = std::min(nearest, geometry::distance(r, p));
   return nearest - world_.robot_radius;
 }

@@ -72,15 +72,15 @@ planning::PlannerOptions defaultNavPlannerOptions() {
   return options;
 }
 
-NavLeafConfig inProcessNavConfig(const NavWorld& world, const planning::PlannerOptions& options,
+NavLeafConfig inProcessNavConfig(const planning::Problem& world,
+                                 const planning::PlannerOptions& options,
                                  InProcessPlanner::Mode mode) {
+  InProcessPlanner::validate(world, options);  // before any tree is built
   NavLeafConfig config;
   config.planners = [world, options, mode] {
     return std::make_unique<InProcessPlanner>(world, options, mode);
   };
-  config.checker =
-      std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
-  config.known_world = world;
+  config.known_world = std::make_shared<PathChecker>(world);
   return config;
 }
 

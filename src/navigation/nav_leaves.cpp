@@ -75,13 +75,15 @@ class ComputePath final : public NavLeaf {
             outputPort<Path>("path", "the plan, start to goal"),
             outputPort<std::string>("error", "why planning failed", "{error}")};
   }
-  ComputePath(const NodeSpec& spec, NavContext& context, std::unique_ptr<PathPlanner> planner)
+  ComputePath(const NodeSpec& spec, NavContext& context, std::unique_ptr<PathPlanner> planner,
+              std::shared_ptr<const PathChecker> known_world)
       : NavLeaf(spec.name, context),
         start_(spec.input<robot::Pose2D>("start")),
         goal_(spec.input<robot::Pose2D>("goal")),
         path_(spec.output<Path>("path")),
         error_(spec.output<std::string>("error")),
-        planner_(std::move(planner)) {
+        planner_(std::move(planner)),
+        known_world_(std::move(known_world)) {
     if (!planner_) throw std::invalid_argument("ComputePath: no planner");
   }
 
@@ -140,7 +142,8 @@ class ComputePath final : public NavLeaf {
     for (std::size_t i = nearest + 1; i + 1 < current.size(); ++i) {
       left += planning::distance(current[i], current[i + 1]);
     }
-    return left <= geometry::pathLength(reply_.path) && planner_->isPathFree(current, nearest + 1);
+    return left <= geometry::pathLength(reply_.path) &&
+           (!known_world_ || known_world_->isPathFree(current, nearest + 1));
   }
   void onHalt() override { planner_->cancel(); }
 
@@ -148,6 +151,7 @@ class ComputePath final : public NavLeaf {
   OutputPort<Path> path_;
   OutputPort<std::string> error_;
   std::unique_ptr<PathPlanner> planner_;
+  std::shared_ptr<const PathChecker> known_world_;
   PlanReply reply_;
   bool requested_ = false;
 };
@@ -307,7 +311,7 @@ class IsPathValid final : public bt::ConditionNode {
     return {inputPort<Path>("path", "the path to check"),
             outputPort<std::string>("error", "why the path is not valid", "{error}")};
   }
-  IsPathValid(const NodeSpec& spec, std::shared_ptr<const PathPlanner> checker)
+  IsPathValid(const NodeSpec& spec, std::shared_ptr<const PathChecker> checker)
       : ConditionNode(spec.name),
         path_(spec.input<Path>("path")),
         error_(spec.output<std::string>("error")),
@@ -328,7 +332,7 @@ class IsPathValid final : public bt::ConditionNode {
   }
   InputPort<Path> path_;
   OutputPort<std::string> error_;
-  std::shared_ptr<const PathPlanner> checker_;
+  std::shared_ptr<const PathChecker> checker_;
 };
 
 /// GoalSucceeded (kSucceeded) and GoalAborted (kAborted): end the goal and record how.
@@ -383,14 +387,16 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   validate(config.follower);
   if (!config.planners) throw std::invalid_argument("registerNavLeaves: no planner factory");
   const PlannerFactory planners = config.planners;
+  const std::shared_ptr<const PathChecker> known_world = config.known_world;
   NavContext* ctx = &context;
-  factory.registerNodeType<ComputePath>("ComputePath", [planners, ctx](const NodeSpec& spec) {
-    return std::make_unique<ComputePath>(spec, *ctx, planners());
-  });
+  factory.registerNodeType<ComputePath>(
+      "ComputePath", [planners, known_world, ctx](const NodeSpec& spec) {
+        return std::make_unique<ComputePath>(spec, *ctx, planners(), known_world);
+      });
   const FollowerParams follower = config.follower;
   std::shared_ptr<const MotionGuard> guard;
-  if (config.known_world) {
-    guard = std::make_shared<MotionGuard>(*config.known_world, config.follower.rate,
+  if (known_world) {
+    guard = std::make_shared<MotionGuard>(known_world->world(), config.follower.rate,
                                           config.follower.max_linear_accel);
   }
   factory.registerNodeType<FollowPath>("FollowPath", [follower, ctx, guard](const NodeSpec& spec) {
@@ -424,9 +430,8 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   factory.registerNodeType<HasGoal>("HasGoal", make<HasGoal>());
   factory.registerNodeType<IsBumped>(
       "IsBumped", [ctx](const NodeSpec& spec) { return std::make_unique<IsBumped>(spec, *ctx); });
-  const auto checker = config.checker;
-  factory.registerNodeType<IsPathValid>("IsPathValid", [checker](const NodeSpec& spec) {
-    return std::make_unique<IsPathValid>(spec, checker);
+  factory.registerNodeType<IsPathValid>("IsPathValid", [known_world](const NodeSpec& spec) {
+    return std::make_unique<IsPathValid>(spec, known_world);
   });
   using GoalSucceeded = EndGoal<GoalOutcome::kSucceeded>;
   using GoalAborted = EndGoal<GoalOutcome::kAborted>;

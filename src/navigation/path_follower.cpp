@@ -3,18 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include "roomba_rrt/sim/unicycle.h"
-#include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
 namespace {
 
 using planning::Point2;
 
-void requirePositive(const char* field, double value) {
-  if (!(std::isfinite(value) && value > 0)) {
-    throw util::InvalidInput(field, "must be finite and > 0, got " + util::show(value));
-  }
-}
+using util::requirePositive;
 
 double sign(double x) { return x < 0 ? -1.0 : 1.0; }
 

@@ -24,14 +24,14 @@ namespace {
 class BehaviorNode {
  public:
   BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, NodeParams& node_params,
-               std::unique_ptr<behavior::RoombaBehavior> behavior, double rate,
-               double bumper_timeout)
-      : behavior_(std::move(behavior)),
+               CommandOutput& output, std::unique_ptr<behavior::RoombaBehavior> behavior,
+               double rate, double bumper_timeout)
+      : output_(output),
+        behavior_(std::move(behavior)),
         period_(1.0 / rate),
         max_catch_up_(std::max(1, static_cast<int>(rate))),
         bumper_timeout_(bumper_timeout),
         base_frame_(node_params.get<std::string>("base_frame", robotFrame("base_link"))) {
-    cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     state_pub_ = pnh.advertise<std_msgs::String>("state", 10, /*latch=*/true);
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("state_marker", 1, /*latch=*/true);
     bumper_sub_ = nh.subscribe("bumper", 1, &BehaviorNode::onBumper, this);
@@ -88,7 +88,7 @@ class BehaviorNode {
     const ros::Time now = ros::Time::now();
     if (!have_bumper_ || (now - last_bumper_).toSec() > bumper_timeout_) {
       // A behaviour must not drive blind: stop until the bumper speaks again.
-      cmd_pub_.publish(geometry_msgs::Twist());
+      output_.stop();
       ROS_WARN_THROTTLE(5.0, "no /bumper for more than %.2f s: commanding zero velocity",
                         bumper_timeout_);
       next_tick_ = ros::Time();  // no catching up on the blind time
@@ -115,10 +115,7 @@ class BehaviorNode {
     }
     if (ticks == 0) return;                                  // an early event: nothing is due yet
     if (ticks == max_catch_up_) next_tick_ = now + period_;  // too far behind: do not chase
-    geometry_msgs::Twist twist;
-    twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
-    twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
-    cmd_pub_.publish(twist);
+    output_.publish(cmd);
   }
 
   void publishState(const std::string& state) {
@@ -137,13 +134,14 @@ class BehaviorNode {
     marker_pub_.publish(marker);
   }
 
+  CommandOutput& output_;
   std::unique_ptr<behavior::RoombaBehavior> behavior_;
   std::unique_ptr<Reconfigure<RoombaBehaviorConfig>> reconfigure_;
   ros::Duration period_;
   int max_catch_up_;  ///< at most one second of ticks per timer event
   double bumper_timeout_;
   std::string base_frame_;  ///< ~base_frame: the frame the state text hangs on
-  ros::Publisher cmd_pub_, state_pub_, marker_pub_;
+  ros::Publisher state_pub_, marker_pub_;
   ros::Subscriber bumper_sub_, odom_sub_;
   ros::Timer timer_;
 
@@ -156,6 +154,16 @@ class BehaviorNode {
 };
 
 }  // namespace
+
+CommandOutput::CommandOutput(ros::NodeHandle& nh)
+    : pub_(nh.advertise<geometry_msgs::Twist>("cmd_vel", 1)) {}
+
+void CommandOutput::publish(const robot::Velocity& cmd) {
+  geometry_msgs::Twist twist;
+  twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
+  twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
+  pub_.publish(twist);
+}
 
 std::string robotFrame(const std::string& frame) {
   std::string ns = ros::this_node::getNamespace();
@@ -191,8 +199,9 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
       throw std::invalid_argument(std::string("~") + e.what());
     }
 
-    BehaviorNode node(nh, pnh, node_params,
-                      make_behavior(node_params, params, static_cast<std::uint32_t>(seed)),
+    CommandOutput output(nh);
+    BehaviorNode node(nh, pnh, node_params, output,
+                      make_behavior(node_params, params, static_cast<std::uint32_t>(seed), output),
                       params.rate, bumper_timeout);
     node_params.warnUnknown();
     ROS_INFO("%s: ticking at %.1f Hz (seed %d, parameters from %s)", node_name.c_str(), params.rate,

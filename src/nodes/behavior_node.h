@@ -14,10 +14,26 @@
 
 namespace roomba_rrt::nodes {
 
+/// The node's one /cmd_vel publisher. The node publishes each tick's command through it; a
+/// behaviour that must act between timer events (roomba_bt's navigation: a goal arrived, plan and
+/// move now; a goal was refused or canceled, stop now) publishes through the same one.
+class CommandOutput {
+ public:
+  explicit CommandOutput(ros::NodeHandle& nh);
+  /// Publishes `cmd`; a component that is not finite goes out as 0.
+  void publish(const robot::Velocity& cmd);
+  void stop() { publish({}); }
+
+ private:
+  ros::Publisher pub_;
+};
+
 /// Makes the behaviour from the parameters; `node_params` reads node-specific ones (roomba_bt's
-/// ~tree_file). May throw std::exception: the node then exits with its message.
+/// ~tree_file); `output` is the node's /cmd_vel (it outlives the behaviour). May throw
+/// std::exception: the node then exits with its message.
 using BehaviorMaker = std::function<std::unique_ptr<behavior::RoombaBehavior>(
-    NodeParams& node_params, const behavior::RoombaParams& params, std::uint32_t seed)>;
+    NodeParams& node_params, const behavior::RoombaParams& params, std::uint32_t seed,
+    CommandOutput& output)>;
 
 /// Runs a behaviour node until shutdown and returns the process exit code (non-zero when the
 /// parameters or the behaviour cannot be loaded).

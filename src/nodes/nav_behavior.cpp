@@ -1,7 +1,6 @@
 #include "nav_behavior.h"
 
 #include <actionlib/server/simple_action_server.h>
-#include <geometry_msgs/Twist.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/Path.h>
 #include <roomba_rrt/NavFollowerConfig.h>
@@ -18,6 +17,8 @@
 #include "planner_ros.h"
 #include "reconfigure.h"
 #include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::nav_node {
 namespace {
@@ -31,7 +32,7 @@ const std::string kIdle = "Idle";
 /// What makeNavBehavior reads from the parameters besides the tree.
 struct Settings {
   world::World world;
-  double clearance = 0.05;
+  double clearance = navigation::kDefaultClearance;
   std::string global_frame = "map", robot_frame = "base_link";
   navigation::NavLeafConfig config;
 };
@@ -67,14 +68,14 @@ class PlanPathClient {
 class NavBehavior final : public behavior::RoombaBehavior {
  public:
   NavBehavior(const behavior::RoombaParams& params, std::uint32_t seed,
-              const std::string& tree_file, Settings settings)
+              const std::string& tree_file, Settings settings, nodes::CommandOutput& output)
       : RoombaBehavior(params, seed),
+        output_(output),
         settings_(std::move(settings)),
         nav_(settings_.config, seed, tree_file),
         listener_(buffer_),
         server_(nh_, "move_base", false) {
     context_.state_name = &kIdle;
-    cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1);
     plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
     // /move_base_simple/goal becomes a goal of the action, as in move_base, so that a goal from
     // rviz preempts an action client's goal and is reported on move_base/status.
@@ -191,7 +192,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
     goal_open_ = true;
     ticks_since_feedback_ = 0;
     // Tick at once so that planning starts now, not at the next timer event.
-    cmd_pub_.publish(toTwist(step()));
+    output_.publish(step());
   }
 
   void onPreempt() {
@@ -260,14 +261,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
         });
   }
 
-  static geometry_msgs::Twist toTwist(const robot::Velocity& cmd) {
-    geometry_msgs::Twist twist;
-    twist.linear.x = std::isfinite(cmd.v) ? cmd.v : 0.0;
-    twist.angular.z = std::isfinite(cmd.w) ? cmd.w : 0.0;
-    return twist;
-  }
-  void stop() { cmd_pub_.publish(geometry_msgs::Twist()); }
+  void stop() { output_.stop(); }
 
+  nodes::CommandOutput& output_;  ///< the node's /cmd_vel
   Settings settings_;
   navigation::NavBt nav_;
   ros::NodeHandle nh_;
@@ -275,7 +271,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   tf2_ros::TransformListener listener_;
   MoveBaseServer server_;
   std::unique_ptr<nodes::Reconfigure<NavFollowerConfig>> follower_reconfigure_;
-  ros::Publisher cmd_pub_, plan_pub_, action_goal_pub_;
+  ros::Publisher plan_pub_, action_goal_pub_;
   ros::Subscriber simple_goal_sub_;
 
   robot::BumperState bumper_;
@@ -287,10 +283,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
 double finiteParam(nodes::NodeParams& params, const std::string& name, double fallback,
                    double min) {
   const double value = params.get(name, fallback);
-  if (!(std::isfinite(value) && value >= min)) {
-    throw std::invalid_argument("~" + name + " must be a finite number >= " + std::to_string(min) +
-                                ", got " + std::to_string(value));
-  }
+  util::require(std::isfinite(value) && value >= min, "~" + name,
+                "finite and >= " + util::show(min), value);
   return value;
 }
 
@@ -299,19 +293,21 @@ double finiteParam(nodes::NodeParams& params, const std::string& name, double fa
 std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& node_params,
                                                           const behavior::RoombaParams& params,
                                                           std::uint32_t seed,
-                                                          const std::string& tree_file) {
+                                                          const std::string& tree_file,
+                                                          nodes::CommandOutput& output) {
   Settings s;
   const std::string world_file =
       node_params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   s.world = world::loadWorld(world_file);
-  s.clearance = finiteParam(node_params, "clearance", 0.05, 0.0);
+  s.clearance = finiteParam(node_params, "clearance", navigation::kDefaultClearance, 0.0);
   s.global_frame = node_params.get<std::string>("global_frame", s.global_frame);
   s.robot_frame = node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
   const std::string planner = node_params.get<std::string>("planner", "service");
   const std::string service =
       node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");
 
-  const navigation::NavWorld world = navigation::navWorldFrom(s.world, s.clearance);
+  planning::Problem world = planning::roomProblem(s.world);
+  world.clearance = s.clearance;
   planning::PlannerOptions options = navigation::defaultNavPlannerOptions();
   options.seed = seed;
   if (planner == "in_process") {
@@ -322,9 +318,8 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
       return std::make_unique<InProcessPlanner>(world, options, InProcessPlanner::Mode::kThread,
                                                 PlanPathClient(service, clearance));
     };
-    s.config.checker =
-        std::make_shared<InProcessPlanner>(world, options, InProcessPlanner::Mode::kInline);
-    s.config.known_world = world;
+    InProcessPlanner::validate(world, options);
+    s.config.known_world = std::make_shared<navigation::PathChecker>(world);
   } else {
     throw std::invalid_argument("~planner must be 'service' or 'in_process', got '" + planner +
                                 "'");
@@ -342,7 +337,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
   ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
            planner == "service" ? (" (" + service + ")").c_str() : "");
-  return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s));
+  return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
 }
 
 }  // namespace roomba_rrt::nav_node

@@ -10,6 +10,7 @@
 
 #include <ros/ros.h>
 
+#include "behavior_node.h"
 #include "node_params.h"
 #include "roomba_rrt/behavior/roomba_behavior.h"
 
@@ -20,10 +21,12 @@ namespace roomba_rrt::nav_node {
 /// ~plan_path_service, ~clearance, ~global_frame, ~robot_frame (default base_link, or
 /// <ns>/base_link in a namespace: a named robot of roomba_sim), ~max_linear_speed,
 /// ~max_angular_speed, ~xy_tolerance, ~yaw_tolerance. std::invalid_argument naming the
-/// parameter when one is invalid.
+/// parameter when one is invalid. Its commands between timer events (a new goal, a goal refused or
+/// canceled) go out through the node's `output`.
 std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& node_params,
                                                           const behavior::RoombaParams& params,
                                                           std::uint32_t seed,
-                                                          const std::string& tree_file);
+                                                          const std::string& tree_file,
+                                                          nodes::CommandOutput& output);
 
 }  // namespace roomba_rrt::nav_node

@@ -1,7 +1,7 @@
 // How many plans the rrt_planner node runs at once, and who gets a thread when all are taken.
 // ROS-free.
 //
-// Fairness (issue 20): turning a request away whenever every thread was busy let any client deny
+// Fairness: turning a request away whenever every thread was busy let any client deny
 // the service to all others with a handful of long plans (six unreachable plans at the request
 // cap held every thread for two seconds). Requests now come in two kinds. An *ordinary* request
 // asks for no more iterations than the node's ~ordinary_iterations (20 000 by default: a default

@@ -30,13 +30,15 @@ int main(int argc, char** argv) {
   using roomba_rrt::behavior::RoombaBt;
   return roomba_rrt::nodes::runBehaviorNode(
       argc, argv, "roomba_bt",
-      [](roomba_rrt::nodes::NodeParams& node_params, const auto& params,
-         std::uint32_t seed) -> std::unique_ptr<roomba_rrt::behavior::RoombaBehavior> {
+      [](roomba_rrt::nodes::NodeParams& node_params, const auto& params, std::uint32_t seed,
+         roomba_rrt::nodes::CommandOutput& output)
+          -> std::unique_ptr<roomba_rrt::behavior::RoombaBehavior> {
         const std::string tree_file = node_params.get<std::string>(
             "tree_file", roomba_rrt::nodes::packageConfigFile("roomba_tree.xml"));
         ROS_INFO("roomba_bt: tree from %s", tree_file.c_str());
         if (roomba_rrt::navigation::usesNavigationLeaves(tree_file)) {
-          return roomba_rrt::nav_node::makeNavBehavior(node_params, params, seed, tree_file);
+          return roomba_rrt::nav_node::makeNavBehavior(node_params, params, seed, tree_file,
+                                                       output);
         }
         return std::make_unique<RoombaBt>(params, seed, tree_file);
       });

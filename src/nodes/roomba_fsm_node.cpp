@@ -6,7 +6,7 @@ int main(int argc, char** argv) {
   using roomba_rrt::behavior::RoombaFsm;
   return roomba_rrt::nodes::runBehaviorNode(
       argc, argv, "roomba_fsm",
-      [](roomba_rrt::nodes::NodeParams&, const auto& params, std::uint32_t seed) {
+      [](roomba_rrt::nodes::NodeParams&, const auto& params, std::uint32_t seed, auto&) {
         return std::make_unique<RoombaFsm>(params, seed);
       });
 }

@@ -29,6 +29,7 @@
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/RrtPlannerConfig.h>
 #include <roomba_rrt/planning/planner.h>
+#include <roomba_rrt/util/require.h>
 
 #include "master_watch.h"
 #include "node_params.h"
@@ -124,10 +125,7 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
 int threadsParam(nodes::NodeParams& pnh) {
   constexpr int kMaxThreads = 64;
   const int threads = pnh.get("threads", 4);
-  if (threads < 1 || threads > kMaxThreads) {
-    throw std::invalid_argument("~threads: must be in [1, " + std::to_string(kMaxThreads) +
-                                "] (got " + std::to_string(threads) + ")");
-  }
+  util::requireInRange("~threads", threads, 1, kMaxThreads);
   return std::max(2, threads);
 }
 
@@ -148,16 +146,10 @@ class RrtPlannerNode {
     animate_every_ = params.get("animate_every", 10);
     const double animate_rate = params.get("animate_rate", 20.0);
     // Documented ranges (doc/nodes.md): outside them the node stops at start naming the parameter.
-    if (max_marker_nodes_ < 0 || max_marker_nodes_ > planning::kDefaultMaxIterationsCap) {
-      throw std::invalid_argument("~max_marker_nodes: must be in [0, " +
-                                  std::to_string(planning::kDefaultMaxIterationsCap) + "] (got " +
-                                  std::to_string(max_marker_nodes_) + ")");
-    }
+    util::requireInRange("~max_marker_nodes", max_marker_nodes_, 0,
+                         planning::kDefaultMaxIterationsCap);
     if (animate_every_ < 1) throw std::invalid_argument("~animate_every: must be >= 1");
-    if (!(animate_rate >= 0.1 && animate_rate <= 1000)) {
-      throw std::invalid_argument("~animate_rate: must be in [0.1, 1000] Hz (got " +
-                                  std::to_string(animate_rate) + ")");
-    }
+    util::requireInRange("~animate_rate", animate_rate, 0.1, 1000, "Hz");
     animate_period_ = ros::WallDuration(1.0 / animate_rate);
 
     tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);

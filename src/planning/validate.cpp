@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "roomba_rrt/planning/limits.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -14,19 +15,11 @@ using util::InvalidInput;
 using util::member;
 using util::show;
 
-// "field: must be finite (got v)" unless v is finite. (Fields are string_views: plan() validates
-// every call and a lab solve takes some 20 us, so the checks of valid input build no strings.)
-void requireFinite(std::string_view field, double v) {
-  if (!std::isfinite(v)) {
-    throw InvalidInput(std::string(field), "must be finite (got " + show(v) + ")");
-  }
-}
+using util::requireFinite;
 
-// "field: must be in [lo, hi] <unit> (got v)" unless lo <= v <= hi.
+// Lengths and coordinates are in metres.
 void requireRange(std::string_view field, double v, double lo, double hi, const char* unit = "m") {
-  if (v >= lo && v <= hi) return;
-  throw InvalidInput(std::string(field), "must be in [" + show(lo) + ", " + show(hi) + "] " + unit +
-                                             " (got " + show(v) + ")");
+  util::requireInRange(field, v, lo, hi, unit);
 }
 
 // Both of the above, for a coordinate.
@@ -84,8 +77,8 @@ void validateBounds(const Bounds& b) {
   if (b.x_max - b.x_min < kMinBoundsExtent || b.y_max - b.y_min < kMinBoundsExtent) {
     throw InvalidInput("bounds",
                        "width (x_max - x_min) and height (y_max - y_min) must be at least " +
-                           show(kMinBoundsExtent) + " m (got " + show(b.x_max - b.x_min) + " x " +
-                           show(b.y_max - b.y_min) + ")");
+                           show(kMinBoundsExtent) + " m, got " + show(b.x_max - b.x_min) + " x " +
+                           show(b.y_max - b.y_min));
   }
 }
 
@@ -125,13 +118,13 @@ void validateRectangles(const std::vector<Rectangle>& rectangles) {
       requireCoordinate(member(field, key), value);
     }
     if (!(r.min_x < r.max_x)) {
-      throw InvalidInput(member(field, "max_x"), "must be > min_x (got " + show(r.max_x) +
+      throw InvalidInput(member(field, "max_x"), "must be > min_x, got " + show(r.max_x) +
                                                      " <= " + show(r.min_x) +
-                                                     ": an empty or inverted rectangle)");
+                                                     " (an empty or inverted rectangle)");
     }
-    throw InvalidInput(member(field, "max_y"), "must be > min_y (got " + show(r.max_y) +
+    throw InvalidInput(member(field, "max_y"), "must be > min_y, got " + show(r.max_y) +
                                                    " <= " + show(r.min_y) +
-                                                   ": an empty or inverted rectangle)");
+                                                   " (an empty or inverted rectangle)");
   }
 }
 
@@ -156,9 +149,9 @@ void validateProblem(const Problem& problem) {
   if (problem.obstacles.size() + problem.rectangles.size() >
       static_cast<std::size_t>(kMaxObstacles)) {
     throw InvalidInput("obstacles", "at most " + std::to_string(kMaxObstacles) +
-                                        " obstacles and rectangles together (got " +
+                                        " obstacles and rectangles together, got " +
                                         std::to_string(problem.obstacles.size()) + " + " +
-                                        std::to_string(problem.rectangles.size()) + ")");
+                                        std::to_string(problem.rectangles.size()));
   }
   validateObstacles(problem.obstacles);
   validateRectangles(problem.rectangles);
@@ -174,11 +167,10 @@ void validateOptions(const PlannerOptions& o, int max_iterations_cap) {
   requireRange("step", o.step, kMinStep, kMaxLength);
   requireFinite("goal_bias", o.goal_bias);
   if (o.goal_bias < 0 || o.goal_bias > 1) {
-    throw InvalidInput("goal_bias", "must be in [0, 1] (got " + show(o.goal_bias) + ")");
+    util::failRule("goal_bias", "in [0, 1]", o.goal_bias);
   }
   if (o.max_iterations < 1) {
-    throw InvalidInput("max_iterations",
-                       "must be >= 1 (got " + std::to_string(o.max_iterations) + ")");
+    throw InvalidInput("max_iterations", "must be >= 1, got " + std::to_string(o.max_iterations));
   }
   if (o.max_iterations > max_iterations_cap) {
     throw InvalidInput("max_iterations", std::to_string(o.max_iterations) +

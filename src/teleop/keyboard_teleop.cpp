@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::teleop {
 namespace {
@@ -79,11 +79,7 @@ double stepped(double value, int presses, double step, double limit) {
   return std::clamp(next * step, -limit, limit);
 }
 
-void requirePositive(const char* field, double value) {
-  if (!std::isfinite(value) || value <= 0) {
-    throw util::InvalidInput(field, "must be a finite number > 0, got " + util::show(value));
-  }
-}
+using util::requirePositive;
 
 }  // namespace
 

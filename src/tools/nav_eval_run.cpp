@@ -7,6 +7,7 @@
 #include <queue>
 #include <random>
 
+#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/sim/simulator.h"
 
 namespace roomba_rrt::tools {
@@ -14,61 +15,16 @@ namespace {
 
 using planning::Point2;
 
-double pointSegmentDistance(const Point2& p, const Point2& a, const Point2& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length_sq = dx * dx + dy * dy;
-  double t = 0;
-  if (length_sq > 0) t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length_sq, 0.0, 1.0);
-  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
-}
-
-double pointRectangleDistance(const Point2& p, const geometry::Rectangle& r) {
-  const double dx = std::max({r.min_x - p.x, 0.0, p.x - r.max_x});
-  const double dy = std::max({r.min_y - p.y, 0.0, p.y - r.max_y});
-  return std::hypot(dx, dy);
-}
-
-/// Whether segment a-b meets the rectangle (Liang–Barsky clipping).
-bool segmentMeetsRectangle(const Point2& a, const Point2& b, const geometry::Rectangle& r) {
-  double t0 = 0, t1 = 1;
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double p[4] = {-dx, dx, -dy, dy};
-  const double q[4] = {a.x - r.min_x, r.max_x - a.x, a.y - r.min_y, r.max_y - a.y};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-    } else {
-      const double t = q[i] / p[i];
-      if (p[i] < 0) {
-        t0 = std::max(t0, t);
-      } else {
-        t1 = std::min(t1, t);
-      }
-      if (t0 > t1) return false;
-    }
-  }
-  return true;
-}
-
-double segmentRectangleDistance(const Point2& a, const Point2& b, const geometry::Rectangle& r) {
-  if (segmentMeetsRectangle(a, b, r)) return 0;
-  double d = std::min(pointRectangleDistance(a, r), pointRectangleDistance(b, r));
-  const Point2 corners[4] = {
-      {r.min_x, r.min_y}, {r.max_x, r.min_y}, {r.max_x, r.max_y}, {r.min_x, r.max_y}};
-  for (const Point2& c : corners) d = std::min(d, pointSegmentDistance(c, a, b));
-  return d;
-}
-
 /// Whether the disc of radius `margin` around p is inside the room and clear of the furniture.
 bool discFree(const world::World& w, const Point2& p, double margin) {
   if (p.x < margin || p.x > w.width - margin || p.y < margin || p.y > w.height - margin) {
     return false;
   }
   for (const geometry::Circle& c : w.circles) {
-    if (std::hypot(p.x - c.center.x, p.y - c.center.y) < c.radius + margin) return false;
+    if (geometry::distance(p, c.center) < c.radius + margin) return false;
   }
   for (const geometry::Rectangle& r : w.rectangles) {
-    if (pointRectangleDistance(p, r) < margin) return false;
+    if (geometry::distance(r, p) < margin) return false;
   }
   return true;
 }
@@ -76,11 +32,14 @@ bool discFree(const world::World& w, const Point2& p, double margin) {
 /// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).
 bool sweepFree(const world::World& w, const Point2& a, const Point2& b, double margin) {
   if (!discFree(w, a, margin) || !discFree(w, b, margin)) return false;
+  const geometry::Segment sweep{a, b};
   for (const geometry::Circle& c : w.circles) {
-    if (pointSegmentDistance(c.center, a, b) < c.radius + margin) return false;
+    if (geometry::distance(c.center, geometry::closestPoint(sweep, c.center)) < c.radius + margin) {
+      return false;
+    }
   }
   for (const geometry::Rectangle& r : w.rectangles) {
-    if (segmentRectangleDistance(a, b, r) < margin) return false;
+    if (geometry::distance(r, sweep) < margin) return false;
   }
   return true;
 }
@@ -97,9 +56,6 @@ class TimedPlanner final : public navigation::PathPlanner {
     return true;
   }
   void cancel() override { inner_->cancel(); }
-  bool isPathFree(const navigation::Path& path, std::size_t from) const override {
-    return inner_->isPathFree(path, from);
-  }
 
  private:
   std::unique_ptr<navigation::PathPlanner> inner_;
@@ -202,7 +158,8 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
                                  const NavEvalOptions& options,
                                  const std::function<void(int, int)>& progress) {
   NavEvalReport report;
-  const navigation::NavWorld nav_world = navigation::navWorldFrom(world, options.clearance);
+  planning::Problem nav_world = planning::roomProblem(world);
+  nav_world.clearance = options.clearance;
   planning::PlannerOptions planner_options = navigation::defaultNavPlannerOptions();
   planner_options.seed = options.seed;
   const auto mode = options.threaded_planner ? navigation::InProcessPlanner::Mode::kThread
@@ -213,9 +170,8 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
     return std::make_unique<TimedPlanner>(
         std::make_unique<navigation::InProcessPlanner>(nav_world, planner_options, mode), *times);
   };
-  config.checker = std::make_shared<navigation::InProcessPlanner>(
-      nav_world, planner_options, navigation::InProcessPlanner::Mode::kInline);
-  config.known_world = nav_world;
+  navigation::InProcessPlanner::validate(nav_world, planner_options);
+  config.known_world = std::make_shared<navigation::PathChecker>(nav_world);
   config.params.rate = 1.0 / world.step;
   config.follower.rate = config.params.rate;
   navigation::NavBt nav(config, options.seed, tree_file);

@@ -29,8 +29,8 @@ struct NavEvalOptions {
   std::uint32_t seed = 1;
   double timeout_s = 120;          ///< robot seconds per goal before it counts as not reached
   double min_goal_distance = 0.5;  ///< m from the robot, so each goal is a real trip
-  double clearance = 0.05;         ///< planner clearance on top of the robot radius
-  bool threaded_planner = false;   ///< plan on a worker thread (not deterministic)
+  double clearance = navigation::kDefaultClearance;  ///< on top of the robot radius, m
+  bool threaded_planner = false;  ///< plan on a worker thread (not deterministic)
 };
 
 /// One goal's run.

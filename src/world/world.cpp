@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
 #include "roomba_rrt/util/text_file.h"
 #include "roomba_rrt/util/yaml_reader.h"
 
@@ -27,24 +28,18 @@ using util::show;
   throw InvalidInput(field, problem);
 }
 
-/// value ∈ (0, max].
-void requirePositiveAtMost(const std::string& name, double value, double max) {
-  if (!(std::isfinite(value) && value > 0 && value <= max))
-    fail(name, "must be a finite number in (0, " + show(max) + "], got " + show(value));
-}
+using util::requirePositive;
 
-/// value ∈ [min, max].
 void requireRange(const std::string& name, double value, double min, double max) {
-  if (!(value >= min && value <= max))
-    fail(name, "must be a number in [" + show(min) + ", " + show(max) + "], got " + show(value));
+  util::requireInRange(name, value, min, max);
 }
 
-/// Every named value under `prefix` ("initial_pose" + ".x") must be finite.
-void requireFinite(const std::string& prefix,
-                   std::initializer_list<std::pair<const char*, double>> values) {
+/// Every named coordinate under `prefix` ("initial_pose" + ".x") is within the supported range.
+void requireCoordinates(const std::string& prefix,
+                        std::initializer_list<std::pair<const char*, double>> values) {
   for (const auto& [key, value] : values) {
-    requireRange(member(prefix, key), value, -WorldLimits::kMaxCoordinate,
-                 WorldLimits::kMaxCoordinate);
+    util::requireInRange(member(prefix, key), value, -WorldLimits::kMaxCoordinate,
+                         WorldLimits::kMaxCoordinate);
   }
 }
 
@@ -203,16 +198,16 @@ void validateRobots(const World& world) {
            "must start with a letter and hold only letters, digits and '_', got '" + r.name + "'");
     }
     if (!names.insert(r.name).second) fail(member(prefix, "name"), "repeats '" + r.name + "'");
-    requirePositiveAtMost(member(prefix, "radius"), r.radius, WorldLimits::kMaxRobotRadius);
-    requirePositiveAtMost(member(prefix, "max_linear_speed"), r.max_linear_speed,
-                          WorldLimits::kMaxSpeed);
-    requirePositiveAtMost(member(prefix, "max_angular_speed"), r.max_angular_speed,
-                          WorldLimits::kMaxSpeed);
+    requirePositive(member(prefix, "radius"), r.radius, WorldLimits::kMaxRobotRadius);
+    requirePositive(member(prefix, "max_linear_speed"), r.max_linear_speed, WorldLimits::kMaxSpeed);
+    requirePositive(member(prefix, "max_angular_speed"), r.max_angular_speed,
+                    WorldLimits::kMaxSpeed);
     if (r.max_linear_speed * world.step >= r.radius) {
       fail("step", "is too long: " + r.name + " would move more than its radius in one step");
     }
     const robot::Pose2D& p = r.initial_pose;
-    requireFinite(member(prefix, "initial_pose"), {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
+    requireCoordinates(member(prefix, "initial_pose"),
+                       {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});
     if (penetrates(world, r.radius, p.x, p.y)) {
       fail(member(prefix, "initial_pose"), "(" + show(p.x) + ", " + show(p.y) + ") puts " + r.name +
                                                "'s disc inside a wall or a piece of furniture");
@@ -231,14 +226,14 @@ void validateRobots(const World& world) {
 
 void validate(const World& world) {
   using L = WorldLimits;
-  requirePositiveAtMost("room.width", world.width, L::kMaxRoomSize);
-  requirePositiveAtMost("room.height", world.height, L::kMaxRoomSize);
-  requirePositiveAtMost("robot.radius", world.robot_radius, L::kMaxRobotRadius);
-  requirePositiveAtMost("robot.max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
-  requirePositiveAtMost("robot.max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
+  requirePositive("room.width", world.width, L::kMaxRoomSize);
+  requirePositive("room.height", world.height, L::kMaxRoomSize);
+  requirePositive("robot.radius", world.robot_radius, L::kMaxRobotRadius);
+  requirePositive("robot.max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
+  requirePositive("robot.max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
   requireRange("step", world.step, L::kMinStep, L::kMaxStep);
   requireRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
-  requirePositiveAtMost("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
+  requirePositive("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
   requireRange("real_time_factor", world.real_time_factor, L::kMinRealTimeFactor,
                L::kMaxRealTimeFactor);
   const std::size_t furniture = world.circles.size() + world.rectangles.size();
@@ -271,19 +266,19 @@ void validate(const World& world) {
   for (std::size_t i = 0; i < world.circles.size(); ++i) {
     const Circle& c = world.circles[i];
     const std::string name = entry("furniture.circles", i);
-    requireFinite(name, {{"x", c.center.x}, {"y", c.center.y}});
-    requirePositiveAtMost(member(name, "radius"), c.radius, WorldLimits::kMaxRoomSize);
+    requireCoordinates(name, {{"x", c.center.x}, {"y", c.center.y}});
+    requirePositive(member(name, "radius"), c.radius, WorldLimits::kMaxRoomSize);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
     const Rectangle& b = world.rectangles[i];
     const std::string name = entry("furniture.rectangles", i);
-    requireFinite(name,
-                  {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}});
+    requireCoordinates(
+        name, {{"min_x", b.min_x}, {"min_y", b.min_y}, {"max_x", b.max_x}, {"max_y", b.max_y}});
     if (!(b.max_x > b.min_x)) fail(member(name, "max_x"), "must be greater than min_x");
     if (!(b.max_y > b.min_y)) fail(member(name, "max_y"), "must be greater than min_y");
   }
   const robot::Pose2D& p = world.initial_pose;
-  requireFinite("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
+  requireCoordinates("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
   if (world.robots.empty() && penetrates(world, p.x, p.y)) {
     fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
                              ") puts the robot's disc inside a wall or a piece of furniture");

@@ -23,9 +23,9 @@ refuses() {  # refuses TEXT NODE ARGS...: exits 1 within 20 s, its output contai
     say "FAIL: $* -> exit $rc, wanted 1 and '$text':"; cat "$work/out"; failures=$((failures + 1))
   fi
 }
-refuses "real_time_factor: must be a number in [0.0001, 10000], got 1e-300" roomba_sim _real_time_factor:=1e-300
+refuses "real_time_factor: must be in [0.0001, 10000], got 1e-300" roomba_sim _real_time_factor:=1e-300
 refuses "real_time_factor" roomba_sim _real_time_factor:=1e9
-refuses "step: must be a number in [0.0001, 1], got 1e-300" roomba_sim _step:=1e-300
+refuses "step: must be in [0.0001, 1], got 1e-300" roomba_sim _step:=1e-300
 refuses "coverage_cell_size" roomba_sim _coverage_cell_size:=1e-9
 refuses "room.width" roomba_sim _room/width:=1e5
 refuses "not a regular file" roomba_sim _world_file:=/tmp

@@ -6,6 +6,7 @@
 // about 30 s in Release.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "nav_eval_run.h"
@@ -35,8 +36,23 @@ INSTANTIATE_TEST_SUITE_P(Rooms, BumpFreeNavigation,
                                            ROOMBA_RRT_TEST_DIR "/navigation/worlds/dining.yaml",
                                            ROOMBA_RRT_TEST_DIR "/navigation/worlds/office.yaml"));
 
+TEST(MotionGuard, refuses_limits_it_cannot_keep_naming_them) {
+  planning::Problem world;
+  world.bounds = {0, 4, 0, 4};
+  world.robot_radius = 0.17;
+  try {
+    MotionGuard(world, 60, 0.0);
+    FAIL() << "a zero acceleration was accepted";
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(e.field(), "max_linear_accel");
+    EXPECT_STREQ(e.what(), "max_linear_accel: must be finite and > 0, got 0");
+  }
+  world.robot_radius = std::nan("");
+  EXPECT_THROW(MotionGuard(world, 60, 0.5), util::InvalidInput);
+}
+
 TEST(MotionGuard, slows_a_step_that_would_touch_and_never_stops_a_turn_in_place) {
-  NavWorld world;
+  planning::Problem world;
   world.bounds = {0, 4, 0, 4};
   world.rectangles = {{2.0, 1.0, 3.0, 3.0}};
   world.robot_radius = 0.17;

@@ -50,9 +50,6 @@ class CountingPlanner final : public PathPlanner {
     return true;
   }
   void cancel() override { planner_->cancel(); }
-  bool isPathFree(const Path& path, std::size_t from) const override {
-    return planner_->isPathFree(path, from);
-  }
 
  private:
   std::unique_ptr<PathPlanner> planner_;
@@ -60,9 +57,10 @@ class CountingPlanner final : public PathPlanner {
 };
 
 TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating) {
-  NavWorld world;
+  planning::Problem world;
+  world.clearance = kDefaultClearance;
   world.bounds = {0, 10, 0, 10};
-  world.circles = {{{5, 5.6}, 0.3}};
+  world.obstacles = {{{5, 5.6}, 0.3}};
   world.robot_radius = 0.17;
   NavLeafConfig config = inProcessNavConfig(world);
   // Counts the plans that arrive (a replan that is not shorter than what is left of the current

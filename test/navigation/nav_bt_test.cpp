@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -18,8 +19,9 @@ const std::string kNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
 const std::string kCleanNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_clean_nav_tree.xml";
 
 NavLeafConfig configFor(const world::World& world) {
-  return inProcessNavConfig(navWorldFrom(world), defaultNavPlannerOptions(),
-                            InProcessPlanner::Mode::kInline);
+  planning::Problem room = planning::roomProblem(world);
+  room.clearance = kDefaultClearance;
+  return inProcessNavConfig(room, defaultNavPlannerOptions(), InProcessPlanner::Mode::kInline);
 }
 
 /// The simulator and a navigation tree in one loop.

@@ -183,10 +183,34 @@ TEST_F(LeafTest, is_bumped_reads_the_bumper) {
   EXPECT_EQ(tree.tick(), bt::Status::kSuccess);
 }
 
-TEST(InProcessPlanner, plans_on_its_worker_thread_and_reports_once) {
-  NavWorld world;
+TEST(PathChecker, a_robot_hugging_furniture_plans_from_the_nearest_free_point_and_its_path_counts) {
+  planning::Problem world;
   world.bounds = {0, 10, 0, 10};
-  world.circles = {{{5, 5}, 1.0}};
+  world.obstacles = {{{5, 5}, 1.0}};
+  world.robot_radius = 0.2;
+  world.clearance = kDefaultClearance;
+  const PathChecker checker(world);
+  ASSERT_TRUE(checker.fits());
+  // 1.2 m from the centre: the disc touches the table but is inside the clearance.
+  const planning::Point2 hugging{6.2, 5.0};
+  EXPECT_FALSE(checker.isPointFree(hugging));
+  const planning::Point2 start = checker.freeStart(hugging);
+  EXPECT_TRUE(checker.isPointFree(start));
+  EXPECT_LE(planning::distance(start, hugging), 0.06);
+  // A path from where the robot stands counts as free when the rest of it is.
+  EXPECT_TRUE(checker.isPathFree({hugging, {8, 5}, {8, 8}}, 0));
+  EXPECT_FALSE(checker.isPathFree({hugging, {8, 5}, {5, 5.5}}, 0));
+  // Walls: the bounds shrunk by radius + clearance.
+  EXPECT_FALSE(checker.isPointFree({0.2, 5}));
+  world.robot_radius = 5.0;
+  EXPECT_FALSE(PathChecker(world).fits());
+}
+
+TEST(InProcessPlanner, plans_on_its_worker_thread_and_reports_once) {
+  planning::Problem world;
+  world.clearance = kDefaultClearance;
+  world.bounds = {0, 10, 0, 10};
+  world.obstacles = {{{5, 5}, 1.0}};
   world.robot_radius = 0.2;
   InProcessPlanner planner(world, planning::PlannerOptions{});
   planner.request({1, 1}, {9, 9});
@@ -197,13 +221,14 @@ TEST(InProcessPlanner, plans_on_its_worker_thread_and_reports_once) {
   }
   ASSERT_TRUE(reply.success) << reply.message;
   EXPECT_EQ(reply.path.back().x, 9);
-  EXPECT_TRUE(planner.isPathFree(reply.path, 0));
-  EXPECT_FALSE(planner.poll(reply));                      // reported once
-  EXPECT_FALSE(planner.isPathFree({{1, 5}, {9, 5}}, 0));  // through the grown disc
+  EXPECT_TRUE(PathChecker(world).isPathFree(reply.path, 0));
+  EXPECT_FALSE(planner.poll(reply));                                 // reported once
+  EXPECT_FALSE(PathChecker(world).isPathFree({{1, 5}, {9, 5}}, 0));  // through the grown disc
 }
 
 TEST(InProcessPlanner, a_goal_in_a_grown_rectangle_is_refused_naming_it) {
-  NavWorld world;
+  planning::Problem world;
+  world.clearance = kDefaultClearance;
   world.bounds = {0, 10, 0, 10};
   world.rectangles = {{2, 2, 3, 3}};
   world.robot_radius = 0.2;
@@ -218,7 +243,8 @@ TEST(InProcessPlanner, a_goal_in_a_grown_rectangle_is_refused_naming_it) {
 
 }  // namespace
 TEST(InProcessPlanner, refuses_a_robot_size_the_library_refuses_naming_the_field) {
-  NavWorld world;
+  planning::Problem world;
+  world.clearance = kDefaultClearance;
   world.bounds = {0, 10, 0, 10};
   for (const auto& [radius, clearance, field] :
        {std::tuple{std::nan(""), 0.05, "robot_radius"}, std::tuple{0.2, -1.0, "clearance"},

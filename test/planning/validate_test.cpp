@@ -123,9 +123,9 @@ TEST(Validate, throws_invalid_input_that_holds_the_field_path_and_the_problem_ap
     FAIL() << "accepted an inverted rectangle";
   } catch (const util::InvalidInput& invalid) {
     EXPECT_EQ(invalid.field(), "rectangles[1].max_x");
-    EXPECT_EQ(invalid.problem(), "must be > min_x (got 2 <= 3: an empty or inverted rectangle)");
+    EXPECT_EQ(invalid.problem(), "must be > min_x, got 2 <= 3 (an empty or inverted rectangle)");
     EXPECT_STREQ(invalid.what(),
-                 "rectangles[1].max_x: must be > min_x (got 2 <= 3: an empty or "
+                 "rectangles[1].max_x: must be > min_x, got 2 <= 3 (an empty or "
                  "inverted rectangle)");
   }
 }

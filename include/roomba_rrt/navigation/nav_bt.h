@@ -70,10 +70,12 @@ class NavBt {
 /// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.
 planning::PlannerOptions defaultNavPlannerOptions();
 
-/// Leaf configuration with the planning library in-process on `world`: one InProcessPlanner in
-/// `mode` per ComputePath, and an inline one as IsPathValid's checker.
+/// Leaf configuration with the planning library in-process on `world` (a planning::Problem whose
+/// start and goal are ignored): one InProcessPlanner in `mode` per ComputePath, and `world` as
+/// the known world (util::InvalidInput naming the field when the planner refuses it).
 NavLeafConfig inProcessNavConfig(
-    const NavWorld& world, const planning::PlannerOptions& options = defaultNavPlannerOptions(),
+    const planning::Problem& world,
+    const planning::PlannerOptions& options = defaultNavPlannerOptions(),
     InProcessPlanner::Mode mode = InProcessPlanner::Mode::kThread);
 
 /// The <TreeNodesModel> (BehaviorTree.CPP v4, for Groot2) of every node a roomba_bt tree can

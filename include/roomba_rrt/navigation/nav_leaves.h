@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/behavior/roomba_state.h"
 #include "roomba_rrt/bt/tree_factory.h"
+#include "roomba_rrt/navigation/path_checker.h"
 #include "roomba_rrt/navigation/path_follower.h"
 #include "roomba_rrt/navigation/path_planner.h"
 
@@ -60,10 +60,10 @@ struct NavLeafConfig {
   behavior::RoombaParams params;  ///< rate (ticks per second) and the Spin's default speed
   FollowerParams follower;        ///< FollowPath's limits and tolerances
   PlannerFactory planners;        ///< ComputePath's planners
-  std::shared_ptr<const PathPlanner> checker;  ///< IsPathValid's world (may be null: always valid)
-  /// The walls and furniture FollowPath never lets the robot touch (MotionGuard); none: its
-  /// commands go out unchecked.
-  std::optional<NavWorld> known_world;
+  /// The walls and furniture the robot knows: IsPathValid and ComputePath check paths against
+  /// them, and FollowPath never lets the robot touch them (MotionGuard). Null: every path counts
+  /// as free and FollowPath's commands go out unchecked.
+  std::shared_ptr<const PathChecker> known_world;
 };
 
 /// Registers, on `factory`:
@@ -89,7 +89,7 @@ struct NavLeafConfig {
 ///   since the previous tick, else FAILURE (Nav2's GoalUpdated).
 /// - HasGoal goal="{goal}": SUCCESS while a goal is set.
 /// - IsBumped: SUCCESS while the bumper is pressed.
-/// - IsPathValid path="{path}" error="{error}": SUCCESS when the path is free in the checker's
+/// - IsPathValid path="{path}" error="{error}": SUCCESS when the path is free in the known
 ///   world, else FAILURE with "the path is blocked".
 /// - GoalSucceeded goal="{goal}": the goal is reached: clears it, outcome SUCCEEDED, SUCCESS.
 /// - GoalAborted goal="{goal}" error="{error}": clears the goal, outcome ABORTED with the

@@ -12,29 +12,12 @@
 #include <thread>
 #include <vector>
 
+#include "roomba_rrt/navigation/path_checker.h"
 #include "roomba_rrt/navigation/path_follower.h"
-#include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
-#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::navigation {
-
-/// What a navigation plan must avoid: the room, its furniture and the robot's size. The planner
-/// keeps the robot's disc (radius + clearance) clear of every wall and obstacle, with the
-/// planning library's exact tests (circles grown, rectangles rounded by the margin).
-/// A start inside a grown obstacle (a robot hugging furniture) is planned from the nearest free
-/// point within 0.25 m, the path starting with the real start.
-struct NavWorld {
-  planning::Bounds bounds;                ///< the room (walls)
-  std::vector<planning::Circle> circles;  ///< round obstacles
-  std::vector<planning::Rectangle> rectangles;
-  double robot_radius = 0;  ///< m, 0: a point
-  double clearance = 0.05;  ///< m, kept on top of the radius
-};
-
-/// The simulator's world as a planning world (room, furniture, robot radius).
-NavWorld navWorldFrom(const world::World& world, double clearance = 0.05);
 
 /// A finished plan.
 struct PlanReply {
@@ -60,19 +43,17 @@ class PathPlanner {
   virtual bool poll(PlanReply& reply) = 0;
   /// Abandons the pending plan, if any.
   virtual void cancel() = 0;
-  /// Whether the part of `path` from point `from` on is free for the robot (a replan is due
-  /// when it is not); the default says yes. A first point that is not free (the robot's own
-  /// start, a little inside the clearance) does not count.
-  virtual bool isPathFree(const Path& path, std::size_t from) const {
-    (void)path;
-    (void)from;
-    return true;
-  }
 };
 
 /// The planning library in-process: plan() on a worker thread (kThread), or, for deterministic
 /// simulations in one loop, inside request() with the result reported by the next poll()
 /// (kInline). Each request uses seed options.seed + (number of earlier requests).
+///
+/// The world is a planning::Problem whose start and goal are ignored: the planner keeps the
+/// robot's disc (robot_radius + clearance) clear of every wall and obstacle, with the planning
+/// library's exact tests (circles grown, rectangles rounded by the margin). A start inside a grown
+/// obstacle (a robot hugging furniture) is planned from the nearest free point within 0.25 m
+/// (PathChecker::freeStart), the path starting with the real start.
 ///
 /// kThread on the tick thread: poll() is one atomic load (and a swap of vectors when a result
 /// is ready, so the finished path's memory is freed by the worker, not the tick); request(), once
@@ -87,39 +68,31 @@ class InProcessPlanner final : public PathPlanner {
   using PlanFunction = std::function<PlanReply(const planning::Point2& start,
                                                const planning::Point2& goal, std::uint32_t seed)>;
 
-  /// std::invalid_argument naming the field when the world or options are invalid. With
-  /// `plan_function`, requests are planned by it (the world still answers isPathFree and
-  /// freeStart).
-  InProcessPlanner(NavWorld world, const planning::PlannerOptions& options,
+  /// util::InvalidInput naming the field when the world or options are invalid. With
+  /// `plan_function`, requests are planned by it (the world still moves the start to a free
+  /// point).
+  InProcessPlanner(planning::Problem world, const planning::PlannerOptions& options,
                    Mode mode = Mode::kThread, PlanFunction plan_function = {});
   ~InProcessPlanner() override;
+  /// What the constructor refuses (util::InvalidInput naming the field, source "planner").
+  static void validate(const planning::Problem& world, const planning::PlannerOptions& options);
 
   void request(const planning::Point2& start, const planning::Point2& goal) override;
   bool poll(PlanReply& reply) override;
   void cancel() override;
-  bool isPathFree(const Path& path, std::size_t from) const override;
 
   /// Plans at once on the calling thread (also what the worker runs).
   PlanReply planNow(const planning::Point2& start, const planning::Point2& goal,
                     std::uint32_t seed) const;
-  const NavWorld& world() const { return world_; }
-  /// Whether the robot's centre may be at `p` (inside the shrunk bounds, outside every grown
-  /// obstacle).
-  bool isPointFree(const planning::Point2& p) const;
-  /// `start` if it is free, else the nearest free point within 0.25 m of it (`start` when none
-  /// is): where a plan for a robot hugging furniture starts.
-  planning::Point2 freeStart(const planning::Point2& start) const;
+  const planning::Problem& world() const { return checker_.world(); }
 
  private:
   void work();
 
-  NavWorld world_;
+  PathChecker checker_;  ///< the world; where a plan may start
   planning::PlannerOptions options_;
   Mode mode_;
   PlanFunction plan_function_;
-  planning::Problem base_;              ///< the world as a planning problem (start, goal unset)
-  planning::CollisionChecker checker_;  ///< exact tests against the grown obstacles
-  planning::Bounds shrunk_;             ///< bounds shrunk by radius + clearance
 
   std::mutex mutex_;
   std::condition_variable wake_;

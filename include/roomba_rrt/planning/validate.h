@@ -9,8 +9,8 @@
 namespace roomba_rrt::planning {
 
 /// Throws util::InvalidInput naming the first field the query cannot be planned with, e.g.
-/// "start: inside obstacle 0", "step: must be in [1e-06, 1e+06] m (got -1)",
-/// "obstacles[2].radius: must be in [0, 1e+06] m (got -1)"; returns when it can be planned.
+/// "start: inside obstacle 0", "step: must be in [1e-06, 1e+06] m, got -1",
+/// "obstacles[2].radius: must be in [0, 1e+06] m, got -1"; returns when it can be planned.
 /// Checks: NaN/Inf anywhere; empty or inverted bounds, or a span beyond the double range; negative
 /// radius; a rectangle with a NaN corner, or empty or inverted ("rectangles[2].max_x: must be >
 /// min_x"); robot_radius or clearance NaN, negative, or too big for the bounds; start/goal outside

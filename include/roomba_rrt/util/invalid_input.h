@@ -30,9 +30,10 @@ inline std::string entry(const std::string& list, std::size_t index) {
 }
 
 /// Input that cannot be used: which field (its path, see member()) and what is wrong with it.
-/// what() reads "field: problem", e.g. "step: must be in [1e-06, 1e+06] m (got -1)", or just
+/// what() reads "field: problem", e.g. "step: must be in [1e-06, 1e+06] m, got -1", or just
 /// "problem" when no single field is to blame; in(source) prefixes the file it came from:
-/// "world.yaml: robot.radius: must be a finite number in (0, 10], got -1".
+/// "world.yaml: robot.radius: must be in (0, 10], got -1". The checks of numbers
+/// (require.h) word every such message the same way: "must be <rule>, got <value>".
 ///
 /// It is a std::invalid_argument, so callers that only need the text catch that.
 class InvalidInput : public std::invalid_argument {
