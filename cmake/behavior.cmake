@@ -43,10 +43,8 @@ configure_file(cmake/lab_tree_xml.h.in
 target_include_directories(roomba_behavior_core PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
 
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
-add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/master_watch.cpp
-  src/nodes/node_params.cpp)
-target_include_directories(roomba_behavior_node PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core ${catkin_LIBRARIES})
+add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp)
+target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core roomba_node_common)
 add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
   ${catkin_EXPORTED_TARGETS})
 
@@ -61,45 +59,19 @@ target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core)
 
 if(CATKIN_ENABLE_TESTING)
   # The engines: the finite state machine, and the behavior tree's nodes, factory and files.
-  catkin_add_gtest(fsm_test test/fsm/state_machine_test.cpp)
-  if(TARGET fsm_test)
-    target_link_libraries(fsm_test roomba_behavior_core gtest_main)
-  endif()
-  catkin_add_gtest(bt_test
-    test/bt/control_nodes_test.cpp
-    test/bt/decorators_test.cpp
-    test/bt/tree_factory_test.cpp
-    test/bt/tree_file_format_test.cpp
-    test/bt/blackboard_ports_test.cpp
-    test/bt/nav_control_nodes_test.cpp
-  )
-  if(TARGET bt_test)
-    target_link_libraries(bt_test roomba_behavior_core PkgConfig::TINYXML2 gtest_main)
-    target_compile_definitions(bt_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(fsm_test test/fsm/state_machine_test.cpp LINK roomba_behavior_core)
+  roomba_rrt_gtest(bt_test test/bt/control_nodes_test.cpp test/bt/decorators_test.cpp
+    test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
+    test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
+    LINK roomba_behavior_core PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.
-  catkin_add_gtest(behavior_core_test
-    test/behavior/roomba_params_test.cpp
-    test/behavior/roomba_behavior_test.cpp
-    test/behavior/roomba_bt_test.cpp
-    test/behavior/fsm_bt_equivalence_test.cpp
-  )
-  if(TARGET behavior_core_test)
-    target_link_libraries(behavior_core_test roomba_behavior_core gtest_main)
-    target_compile_definitions(behavior_core_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(behavior_core_test test/behavior/roomba_params_test.cpp
+    test/behavior/roomba_behavior_test.cpp test/behavior/roomba_bt_test.cpp
+    test/behavior/fsm_bt_equivalence_test.cpp LINK roomba_behavior_core)
 
   # The roomba_coverage tool as a user runs it (its PNG's seed, its progress bar).
-  catkin_add_gtest(roomba_coverage_test test/tools/roomba_coverage_test.cpp)
-  if(TARGET roomba_coverage_test)
-    target_link_libraries(roomba_coverage_test gtest_main)
-    target_compile_definitions(roomba_coverage_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-    add_dependencies(roomba_coverage_test roomba_coverage)
-  endif()
+  roomba_rrt_gtest(roomba_coverage_test test/tools/roomba_coverage_test.cpp DEPENDS roomba_coverage)
 
   # Through real ROS: roomba_sim at 10x real time with either behaviour node.
   add_rostest_gtest(behavior_rostest test/behavior/roomba_fsm.test

@@ -37,41 +37,16 @@ add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
 target_link_libraries(roomba_nav_eval roomba_nav_eval_run roomba_tools)
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(nav_core_test
-    test/navigation/path_follower_test.cpp
-    test/navigation/nav_bt_test.cpp
-    test/navigation/nav_leaves_test.cpp
-  )
-  if(TARGET nav_core_test)
-    target_link_libraries(nav_core_test roomba_nav_core gtest_main)
-    target_compile_definitions(nav_core_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(nav_core_test test/navigation/path_follower_test.cpp
+    test/navigation/nav_bt_test.cpp test/navigation/nav_leaves_test.cpp LINK roomba_nav_core)
   # roomba_nav_eval's run loop: goals drawn, outcomes counted, reproducible.
-  catkin_add_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp)
-  if(TARGET nav_eval_run_test)
-    target_link_libraries(nav_eval_run_test roomba_nav_eval_run gtest_main)
-    target_compile_definitions(nav_eval_run_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp LINK roomba_nav_eval_run)
   # 12 000 goals in three rooms (about 30 s): its own test, so the quick ones stay quick.
-  catkin_add_gtest(bump_free_navigation_test test/navigation/bump_free_navigation_test.cpp
-    TIMEOUT 600)
-  if(TARGET bump_free_navigation_test)
-    target_link_libraries(bump_free_navigation_test roomba_nav_eval_run gtest_main)
-    target_compile_definitions(bump_free_navigation_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
-      ROOMBA_RRT_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test")
-  endif()
+  roomba_rrt_gtest(bump_free_navigation_test test/navigation/bump_free_navigation_test.cpp
+    LINK roomba_nav_eval_run)
   # roomba_bt's navigation conversions, without a master.
-  catkin_add_gtest(nav_ros_test test/navigation/nav_ros_test.cpp src/nodes/nav_ros.cpp)
-  if(TARGET nav_ros_test)
-    target_include_directories(nav_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(nav_ros_test roomba_nav_core ${catkin_LIBRARIES} gtest_main)
-    add_dependencies(nav_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
-    target_compile_definitions(nav_ros_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(nav_ros_test test/navigation/nav_ros_test.cpp src/nodes/nav_ros.cpp
+    LINK roomba_nav_core ROS)
 
   # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.
   add_rostest_gtest(nav_rostest test/navigation/nav_goal.test test/navigation/nav_rostest.cpp)
@@ -86,10 +61,5 @@ if(CATKIN_ENABLE_TESTING)
   endif()
 
   # Its own executable: it replaces operator new to count allocations.
-  catkin_add_gtest(nav_allocation_test test/navigation/nav_allocation_test.cpp)
-  if(TARGET nav_allocation_test)
-    target_link_libraries(nav_allocation_test roomba_nav_core gtest_main)
-    target_compile_definitions(nav_allocation_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(nav_allocation_test test/navigation/nav_allocation_test.cpp LINK roomba_nav_core)
 endif()

@@ -33,21 +33,10 @@ add_executable(rrt_plot src/tools/rrt_plot.cpp)
 target_link_libraries(rrt_plot roomba_tools)
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(planning_core_test
-    test/planning/geometry_test.cpp
-    test/planning/matlab_random_test.cpp
-    test/planning/nearest_neighbors_test.cpp
-    test/planning/rrt_test.cpp
-    test/planning/algorithms_test.cpp
-    test/planning/validate_test.cpp
-    test/planning/robustness_test.cpp
-    test/planning/room_test.cpp
-  )
-  if(TARGET planning_core_test)
-    target_link_libraries(planning_core_test rrt_planning gtest_main)
-    target_compile_definitions(planning_core_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(planning_core_test test/planning/geometry_test.cpp
+    test/planning/matlab_random_test.cpp test/planning/nearest_neighbors_test.cpp
+    test/planning/rrt_test.cpp test/planning/algorithms_test.cpp test/planning/validate_test.cpp
+    test/planning/robustness_test.cpp test/planning/room_test.cpp LINK rrt_planning)
 endif()
 
 # planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.
@@ -63,11 +52,8 @@ endif()
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
 add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
-  src/nodes/plan_slots.cpp src/nodes/master_watch.cpp src/nodes/node_params.cpp)
-target_include_directories(rrt_planner PRIVATE include ${catkin_INCLUDE_DIRS})
-target_link_libraries(rrt_planner rrt_planning ${catkin_LIBRARIES})
-# Its scenario file when the package is not on ROS_PACKAGE_PATH (ros::package finds it otherwise).
-target_compile_definitions(rrt_planner PRIVATE ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+  src/nodes/plan_slots.cpp)
+target_link_libraries(rrt_planner rrt_planning roomba_node_common)
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 add_executable(plan_path_bench bench/plan_path_bench.cpp)
@@ -100,8 +86,5 @@ if(CATKIN_ENABLE_TESTING)
       ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
   endforeach()
   # Who gets a planning thread when all are taken (ROS-free).
-  catkin_add_gtest(plan_slots_test test/planner_node/plan_slots_test.cpp src/nodes/plan_slots.cpp)
-  if(TARGET plan_slots_test)
-    target_link_libraries(plan_slots_test gtest_main)
-  endif()
+  roomba_rrt_gtest(plan_slots_test test/planner_node/plan_slots_test.cpp src/nodes/plan_slots.cpp)
 endif()

@@ -2,13 +2,8 @@
 # here the tests that the .cfg ranges are the validated ones and that every node reconfigures.
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(reconfigure_ranges_test test/nodes/reconfigure_ranges_test.cpp)
-  if(TARGET reconfigure_ranges_test)
-    target_include_directories(reconfigure_ranges_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(reconfigure_ranges_test roomba_nav_core rrt_planning roomba_sim_core
-      roomba_behavior_core ${catkin_LIBRARIES} gtest_main)
-    add_dependencies(reconfigure_ranges_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
-  endif()
+  roomba_rrt_gtest(reconfigure_ranges_test test/nodes/reconfigure_ranges_test.cpp
+    LINK roomba_nav_core rrt_planning roomba_sim_core roomba_behavior_core ROS)
   add_rostest(test/nodes/reconfigure.test
     DEPENDENCIES roomba_sim roomba_fsm roomba_bt rrt_planner)
   # The install space on its own: installed executables, libraries, roomba_bt's two trees, and

@@ -14,10 +14,8 @@ target_link_libraries(roomba_sim_core PUBLIC roomba_world)
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
 # The node wires parameters, topics and timers; src/nodes/sim_ros.cpp builds its messages.
-add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/sim_ros.cpp
-  src/nodes/master_watch.cpp src/nodes/node_params.cpp)
-target_include_directories(roomba_sim PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(roomba_sim roomba_sim_core ${catkin_LIBRARIES})
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/sim_ros.cpp)
+target_link_libraries(roomba_sim roomba_sim_core roomba_node_common)
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 # Measures the node's sustained real-time factor while reading every /odom (doc/performance.md).
@@ -26,27 +24,13 @@ target_include_directories(sim_rtf_probe PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_rtf_probe ${catkin_LIBRARIES})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(sim_core_test
-    test/sim/unicycle_test.cpp
-    test/sim/contact_test.cpp
-    test/sim/coverage_grid_test.cpp
-    test/sim/simulator_test.cpp
-    test/sim/multi_robot_simulator_test.cpp
-    test/sim/robot_grid_test.cpp
-  )
-  if(TARGET sim_core_test)
-    target_link_libraries(sim_core_test roomba_sim_core gtest_main)
-    target_compile_definitions(sim_core_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(sim_core_test test/sim/unicycle_test.cpp test/sim/contact_test.cpp
+    test/sim/coverage_grid_test.cpp test/sim/simulator_test.cpp
+    test/sim/multi_robot_simulator_test.cpp test/sim/robot_grid_test.cpp LINK roomba_sim_core)
 
   # roomba_sim's messages (odometry, tf, bumper, markers, coverage map), without a master.
-  catkin_add_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/nodes/sim_ros.cpp)
-  if(TARGET sim_ros_test)
-    target_include_directories(sim_ros_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(sim_ros_test roomba_sim_core ${catkin_LIBRARIES} gtest_main)
-    add_dependencies(sim_ros_test ${${PROJECT_NAME}_EXPORTED_TARGETS})
-  endif()
+  roomba_rrt_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/nodes/sim_ros.cpp
+    LINK roomba_sim_core ROS)
 
   # A rostest whose test node (gtest) talks to roomba_sim through a real master.
   function(roomba_sim_rostest target launch_file source)

@@ -3,16 +3,12 @@
 add_library(roomba_teleop_core src/teleop/keyboard_teleop.cpp)
 target_include_directories(roomba_teleop_core PUBLIC include)
 
-add_executable(roomba_teleop src/nodes/roomba_teleop_node.cpp src/nodes/node_params.cpp)
-target_include_directories(roomba_teleop PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(roomba_teleop roomba_teleop_core ${catkin_LIBRARIES})
+add_executable(roomba_teleop src/nodes/roomba_teleop_node.cpp)
+target_link_libraries(roomba_teleop roomba_teleop_core roomba_node_common)
 add_dependencies(roomba_teleop ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(teleop_core_test test/teleop/keyboard_teleop_test.cpp)
-  if(TARGET teleop_core_test)
-    target_link_libraries(teleop_core_test roomba_teleop_core gtest_main)
-  endif()
+  roomba_rrt_gtest(teleop_core_test test/teleop/keyboard_teleop_test.cpp LINK roomba_teleop_core)
   # roomba_teleop on a pseudo-terminal driving roomba_sim through a real master.
   add_test(NAME teleop_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/teleop_test.bash)

@@ -10,9 +10,6 @@ target_compile_definitions(roomba_tools PUBLIC ROOMBA_RRT_CONFIG_DIR="${PROJECT_
 
 if(CATKIN_ENABLE_TESTING)
   # The shared flags and statistics, and roomba_coverage's arguments and statistics.
-  catkin_add_gtest(tools_test test/tools/tools_test.cpp src/tools/coverage_arguments.cpp
-    src/tools/coverage_statistics.cpp)
-  if(TARGET tools_test)
-    target_link_libraries(tools_test roomba_tools gtest_main)
-  endif()
+  roomba_rrt_gtest(tools_test test/tools/tools_test.cpp src/tools/coverage_arguments.cpp
+    src/tools/coverage_statistics.cpp LINK roomba_tools)
 endif()

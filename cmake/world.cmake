@@ -7,10 +7,5 @@ target_include_directories(roomba_world PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_world PUBLIC roomba_geometry yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(world_test test/world/world_test.cpp)
-  if(TARGET world_test)
-    target_link_libraries(world_test roomba_world gtest_main)
-    target_compile_definitions(world_test PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-  endif()
+  roomba_rrt_gtest(world_test test/world/world_test.cpp LINK roomba_world)
 endif()

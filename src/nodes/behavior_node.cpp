@@ -171,10 +171,6 @@ std::string robotFrame(const std::string& frame) {
   return ns.empty() ? frame : ns + "/" + frame;
 }
 
-std::string packageConfigFile(const std::string& file_name) {
-  return ros::package::getPath("roomba_rrt") + "/config/" + file_name;
-}
-
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
                     const BehaviorMaker& make_behavior) {
   ros::init(argc, argv, node_name);

@@ -50,7 +50,4 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
 /// `rosrun roomba_rrt roomba_fsm __ns:=robot1` needs no frame parameter. Call after ros::init.
 std::string robotFrame(const std::string& frame);
 
-/// The path of a file in the package's config/ folder (ros::package::getPath).
-std::string packageConfigFile(const std::string& file_name);
-
 }  // namespace roomba_rrt::nodes

@@ -1,5 +1,7 @@
 #include "node_params.h"
 
+#include <ros/package.h>
+
 #include <algorithm>
 #include <sstream>
 
@@ -174,6 +176,12 @@ void NodeParams::warnUnknown() const {
              ros::this_node::getName().c_str(), name.c_str(),
              nearest.empty() ? "" : (" (did you mean ~" + nearest + "?)").c_str());
   }
+}
+
+std::string packageConfigFile(const std::string& file_name) {
+  const std::string package = ros::package::getPath("roomba_rrt");
+  if (package.empty()) return std::string(ROOMBA_RRT_CONFIG_DIR) + "/" + file_name;
+  return package + "/config/" + file_name;
 }
 
 }  // namespace roomba_rrt::nodes

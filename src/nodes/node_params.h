@@ -53,4 +53,9 @@ class NodeParams {
   std::vector<std::string> written_;  ///< written back, not set at start: deleted at exit
 };
 
+/// The path of a file in the package's config/ folder, where the nodes' default files are
+/// (ros::package::getPath; the source tree's config/ when the package is not on
+/// ROS_PACKAGE_PATH).
+std::string packageConfigFile(const std::string& file_name);
+
 }  // namespace roomba_rrt::nodes

@@ -60,9 +60,8 @@ constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 /// none is left pinned to override the next world file). Throws std::invalid_argument naming the
 /// bad parameter.
 World loadWorldParameters(nodes::NodeParams& params) {
-  const std::string default_file =
-      ros::package::getPath("roomba_rrt") + "/config/roomba_world.yaml";
-  const std::string world_file = params.get<std::string>("world_file", default_file);
+  const std::string world_file =
+      params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   World world = world::loadWorld(world_file);
   // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
   const std::string notice = world::defaultsNotice(world, world_file);

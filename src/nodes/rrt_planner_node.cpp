@@ -114,9 +114,8 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
     throw std::invalid_argument("parameter ~" + std::string(invalid.what()));
   }
   // Scenario "room": the simulator's world file (its room, furniture and robot radius).
-  const std::string package = ros::package::getPath("roomba_rrt");
-  const std::string world_file = pnh.get<std::string>(
-      "world_file", package.empty() ? "" : package + "/config/roomba_world.yaml");
+  const std::string world_file =
+      pnh.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   if (!world_file.empty()) d.room = planning::loadRoom(world_file);  // throws with the reason
   return d;
 }
@@ -134,11 +133,8 @@ class RrtPlannerNode {
   RrtPlannerNode(ros::NodeHandle& pnh, nodes::NodeParams& params)
       : defaults_(std::make_shared<const NodeDefaults>(loadDefaults(params))),
         slots_(threadsParam(params)) {
-    const std::string package = ros::package::getPath("roomba_rrt");
-    const std::string scenarios_file = params.get<std::string>(
-        "scenarios_file",
-        package.empty() ? ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"  // not on ROS_PACKAGE_PATH
-                        : package + "/config/rrt_scenarios.yaml");
+    const std::string scenarios_file =
+        params.get<std::string>("scenarios_file", nodes::packageConfigFile("rrt_scenarios.yaml"));
     scenarios_ = planning::loadScenarios(scenarios_file);  // throws with the reason
     frame_id_ = params.get<std::string>("frame_id", "map");
     max_marker_nodes_ = params.get("max_marker_nodes", 200000);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -36,6 +37,16 @@ inline void requireInRange(std::string_view field, double value, double lo, doub
       field,
       "in [" + show(lo) + ", " + show(hi) + "]" + (unit.empty() ? "" : " ") + std::string(unit),
       value);
+}
+
+/// The same for a whole number, printed whole: "<field>: must be in [0, 5000000], got -1".
+template <class Int, std::enable_if_t<std::is_integral_v<Int>, int> = 0>
+void requireInRange(std::string_view field, Int value, long long lo, long long hi,
+                    std::string_view unit = "") {
+  if (value >= lo && value <= hi) return;
+  throw InvalidInput(std::string(field), "must be in [" + std::to_string(lo) + ", " +
+                                             std::to_string(hi) + "]" + (unit.empty() ? "" : " ") +
+                                             std::string(unit) + ", got " + std::to_string(value));
 }
 
 /// 0 < value ≤ max (NaN fails): "<field>: must be finite and > 0, got <value>" without a finite

@@ -1,0 +1,10 @@
+# What every node shares: its private parameters read one way and the config folder it takes its
+# default files from (node_params), and the watch that stops it when the master is gone for good
+# (master_watch).
+
+add_library(roomba_node_common STATIC src/nodes/node_params.cpp src/nodes/master_watch.cpp)
+target_include_directories(roomba_node_common PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(roomba_node_common PUBLIC ${catkin_LIBRARIES})
+# The source tree's config/, for a node run without the package on ROS_PACKAGE_PATH.
+target_compile_definitions(roomba_node_common PRIVATE
+  ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
