@@ -36,8 +36,9 @@ RR_PACKAGES=(
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # libraries of the ROS-free cores and the tools
   libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
+  libsdl2-image-dev  # map images (PGM, PNG), decoded as map_server decodes them
   # tests, benchmarks, fuzzing (clang's libFuzzer and sanitizer runtimes), pictures
-  libgtest-dev librostest-dev python3-rostest python3-rosunit
+  libgtest-dev librostest-dev python3-rostest python3-rosunit libpng-dev
   libompl-dev libbenchmark-dev
   clang libfuzzer-14-dev libclang-rt-14-dev
   rviz xvfb libgl1-mesa-dri imagemagick iproute2 util-linux procps

@@ -1,0 +1,246 @@
+#include "roomba_rrt/geometry/map_file.h"
+
+#include <SDL2/SDL_image.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <set>
+
+#include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
+#include "roomba_rrt/util/text_file.h"
+#include "roomba_rrt/util/yaml_reader.h"
+
+namespace roomba_rrt::geometry {
+namespace {
+
+using util::InvalidInput;
+
+/// The keys a map_server YAML may have (Nav2's `mode` included).
+const std::set<std::string> kKeys = {"image",           "resolution",  "origin", "negate",
+                                     "occupied_thresh", "free_thresh", "mode"};
+
+double number(const YAML::Node& root, const char* key) {
+  const YAML::Node node = root[key];
+  if (!node.IsScalar()) throw InvalidInput(key, "must be a number");
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InvalidInput(key, "must be a number, got '" + node.Scalar() + "'");
+  }
+}
+
+/// Width and height from the image's header, before SDL2_image allocates anything: a PNG's
+/// IHDR chunk, or a PNM's first three tokens (magic, width, height; comments skipped).
+/// Throws InvalidInput (field "image") for anything else.
+void imageSize(const std::string& path, long long& width, long long& height) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput("image", "cannot open '" + path + "'");
+  unsigned char head[24] = {};
+  in.read(reinterpret_cast<char*>(head), sizeof head);
+  const std::streamsize got = in.gcount();
+  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (got >= 24 && std::equal(kPng, kPng + 8, head)) {
+    const auto be32 = [&](int at) {
+      return (static_cast<long long>(head[at]) << 24) | (head[at + 1] << 16) | (head[at + 2] << 8) |
+             head[at + 3];
+    };
+    width = be32(16);
+    height = be32(20);
+    return;
+  }
+  if (got >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') {
+    in.clear();
+    in.seekg(2);
+    long long values[2] = {-1, -1};
+    for (long long& value : values) {
+      int c = in.get();
+      while (c != EOF && (std::isspace(c) || c == '#')) {
+        if (c == '#') {
+          while (c != EOF && c != '\n') c = in.get();
+        }
+        c = in.get();
+      }
+      if (c == EOF || !std::isdigit(c)) break;
+      value = 0;
+      while (c != EOF && std::isdigit(c) && value < (1LL << 40)) {
+        value = value * 10 + (c - '0');
+        c = in.get();
+      }
+    }
+    width = values[0];
+    height = values[1];
+    if (width >= 0 && height >= 0) return;
+    throw InvalidInput("image", "'" + path + "': a PNM header without its width and height");
+  }
+  throw InvalidInput("image", "'" + path + "' is not a PGM or PNG image");
+}
+
+/// The grid of the decoded image, map_server's way.
+void readPixels(const SDL_Surface& image, const MapFile& map, OccupancyGrid& grid) {
+  const int channels = image.format->BytesPerPixel;
+  grid.width = image.w;
+  grid.height = image.h;
+  grid.cells.assign(static_cast<std::size_t>(image.w) * image.h, OccupancyGrid::kUnknown);
+  const auto* pixels = static_cast<const unsigned char*>(image.pixels);
+  for (int j = 0; j < image.h; ++j) {
+    const unsigned char* row = pixels + static_cast<std::size_t>(j) * image.pitch;
+    for (int i = 0; i < image.w; ++i) {
+      const unsigned char* p = row + static_cast<std::size_t>(i) * channels;
+      int sum = 0;
+      for (int k = 0; k < channels; ++k) sum += p[k];
+      const double average = static_cast<double>(sum) / channels;
+      // Image row 0 is the top: the grid's last row.
+      grid.cells[static_cast<std::size_t>(image.h - 1 - j) * image.w + i] =
+          trinaryValue(average, map.negate, map.occupied_thresh, map.free_thresh);
+    }
+  }
+}
+
+void readImage(MapFile& map, long long max_cells) {
+  std::error_code error;
+  const auto status = std::filesystem::status(map.image, error);
+  if (error || !std::filesystem::exists(status)) {
+    throw InvalidInput("image", "'" + map.image + "' does not exist");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw InvalidInput("image", "'" + map.image + "' is not a regular file");
+  }
+  const auto bytes = std::filesystem::file_size(map.image, error);
+  if (error || bytes > MapLimits::kMaxImageBytes) {
+    throw InvalidInput("image", "'" + map.image + "' has more than " +
+                                    std::to_string(MapLimits::kMaxImageBytes) + " bytes");
+  }
+  long long width = 0, height = 0;
+  imageSize(map.image, width, height);
+  if (width < 1 || height < 1) {
+    throw InvalidInput("image", "'" + map.image + "' has no pixels (" + std::to_string(width) +
+                                    " x " + std::to_string(height) + ")");
+  }
+  if (width > max_cells || height > max_cells || width * height > max_cells) {
+    throw InvalidInput("image", "'" + map.image + "' has " + std::to_string(width) + " x " +
+                                    std::to_string(height) + " pixels; at most " +
+                                    std::to_string(max_cells) + " cells are supported");
+  }
+  const std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> image(IMG_Load(map.image.c_str()),
+                                                                   SDL_FreeSurface);
+  if (!image) {
+    throw InvalidInput("image", "cannot decode '" + map.image + "': " + IMG_GetError());
+  }
+  if (image->w != width || image->h != height) {
+    throw InvalidInput("image", "'" + map.image + "': its header says " + std::to_string(width) +
+                                    " x " + std::to_string(height) + ", its pixels are " +
+                                    std::to_string(image->w) + " x " + std::to_string(image->h));
+  }
+  if (SDL_MUSTLOCK(image.get()) && SDL_LockSurface(image.get()) != 0) {
+    throw InvalidInput("image", "cannot read the pixels of '" + map.image + "'");
+  }
+  readPixels(*image, map, map.grid);
+  if (SDL_MUSTLOCK(image.get())) SDL_UnlockSurface(image.get());
+}
+
+void readYaml(const std::string& text, MapFile& map) {
+  const YAML::Node root = util::parseYaml(text);
+  if (!root.IsMap())
+    throw InvalidInput("", "must be a mapping (image:, resolution:, origin:, ...)");
+  for (const auto& pair : root) {
+    const std::string key = pair.first.Scalar();
+    if (!kKeys.count(key)) throw InvalidInput(key, "is not a map_server key");
+  }
+  for (const char* key : {"image", "resolution", "origin"}) {
+    if (!root[key]) throw InvalidInput(key, "is missing");
+  }
+  if (!root["image"].IsScalar() || root["image"].Scalar().empty()) {
+    throw InvalidInput("image", "must be a file name");
+  }
+  const std::filesystem::path image = root["image"].Scalar();
+  map.image = image.is_absolute()
+                  ? image.string()
+                  : (std::filesystem::path(map.yaml).parent_path() / image).string();
+
+  map.resolution = number(root, "resolution");
+  util::requireInRange("resolution", map.resolution, MapLimits::kMinResolution,
+                       MapLimits::kMaxResolution, "m");
+
+  const YAML::Node origin = root["origin"];
+  if (!origin.IsSequence() || (origin.size() != 2 && origin.size() != 3)) {
+    throw InvalidInput("origin", "must be [x, y, yaw]");
+  }
+  double values[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < origin.size(); ++k) {
+    const std::string field = util::entry("origin", k);
+    try {
+      values[k] = origin[k].as<double>();
+    } catch (const YAML::Exception&) {
+      throw InvalidInput(field, "must be a number");
+    }
+    util::requireInRange(field, values[k], -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate,
+                         "m");
+  }
+  if (values[2] != 0) {
+    throw InvalidInput("origin[2]", "a rotated map (yaw " + util::show(values[2]) +
+                                        ") is not supported; rotate the image and use yaw 0");
+  }
+  map.origin = {values[0], values[1]};
+
+  if (root["negate"]) {
+    const double negate = number(root, "negate");
+    util::require(negate == 0 || negate == 1, "negate", "0 or 1", negate);
+    map.negate = negate == 1;
+  }
+  if (root["occupied_thresh"]) map.occupied_thresh = number(root, "occupied_thresh");
+  if (root["free_thresh"]) map.free_thresh = number(root, "free_thresh");
+  util::requireInRange("occupied_thresh", map.occupied_thresh, 0, 1);
+  util::requireInRange("free_thresh", map.free_thresh, 0, 1);
+  if (!(map.free_thresh < map.occupied_thresh)) {
+    throw InvalidInput("free_thresh", "must be below occupied_thresh (" +
+                                          util::show(map.occupied_thresh) + "), got " +
+                                          util::show(map.free_thresh));
+  }
+  if (root["mode"] && root["mode"].Scalar() != "trinary") {
+    throw InvalidInput("mode", "only 'trinary' is read (free, occupied, unknown), got '" +
+                                   root["mode"].Scalar() + "'");
+  }
+}
+
+}  // namespace
+
+std::int8_t trinaryValue(double average, bool negate, double occupied_thresh, double free_thresh) {
+  if (negate) average = 255.0 - average;
+  const double occupancy = (255.0 - average) / 255.0;
+  if (occupancy > occupied_thresh) return OccupancyGrid::kOccupied;
+  if (occupancy < free_thresh) return OccupancyGrid::kFree;
+  return OccupancyGrid::kUnknown;
+}
+
+MapFile loadMap(const std::string& yaml_path, long long max_cells) {
+  MapFile map;
+  map.yaml = yaml_path;
+  try {
+    readYaml(util::readTextFile(yaml_path, MapLimits::kMaxYamlBytes, "map file"), map);
+    readImage(map, max_cells);
+  } catch (const InvalidInput& e) {
+    throw e.source().empty() ? e.in(yaml_path) : e;
+  } catch (const YAML::Exception& e) {
+    throw InvalidInput("", std::string("malformed map file: ") + e.what(), yaml_path);
+  }
+  map.grid.resolution = map.resolution;
+  map.grid.origin = map.origin;
+  return map;
+}
+
+bool isMapYaml(const std::string& path) {
+  try {
+    const YAML::Node root =
+        util::parseYaml(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
+    return root.IsMap() && root["image"];
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace roomba_rrt::geometry
