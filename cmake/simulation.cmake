@@ -26,7 +26,8 @@ target_link_libraries(sim_rtf_probe ${catkin_LIBRARIES})
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(sim_core_test test/sim/unicycle_test.cpp test/sim/contact_test.cpp
     test/sim/coverage_grid_test.cpp test/sim/simulator_test.cpp
-    test/sim/multi_robot_simulator_test.cpp test/sim/robot_grid_test.cpp LINK roomba_sim_core)
+    test/sim/multi_robot_simulator_test.cpp test/sim/robot_grid_test.cpp test/sim/map_world_test.cpp
+    LINK roomba_sim_core)
 
   # roomba_sim's messages (odometry, tf, bumper, markers, coverage map), without a master.
   roomba_rrt_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/nodes/sim_ros.cpp

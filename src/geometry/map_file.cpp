@@ -235,8 +235,9 @@ MapFile loadMap(const std::string& yaml_path, long long max_cells) {
 
 bool isMapYaml(const std::string& path) {
   try {
+    // Leniently: a map with a mistake (a key twice, say) is still a map, refused by loadMap.
     const YAML::Node root =
-        util::parseYaml(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
+        YAML::Load(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
     return root.IsMap() && root["image"];
   } catch (const std::exception&) {
     return false;

@@ -37,6 +37,7 @@
 #include "node_params.h"
 #include "reconfigure.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
+#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
 #include "sim_ros.h"
 
@@ -62,7 +63,13 @@ constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 World loadWorldParameters(nodes::NodeParams& params) {
   const std::string world_file =
       params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
-  World world = world::loadWorld(world_file);
+  World world = world::readWorldFile(world_file);
+  try {
+    world::validate(world);  // the file as it is, named in the message
+  } catch (const util::InvalidInput& e) {
+    // A map world starts at the map's origin unless told otherwise: ~initial_pose may move it.
+    if (!(world.map && e.field() == "initial_pose")) throw e.in(world_file);
+  }
   // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
   const std::string notice = world::defaultsNotice(world, world_file);
   if (world.defaulted_sections.size() == 4) {
@@ -89,7 +96,10 @@ World loadWorldParameters(nodes::NodeParams& params) {
   }
   for (const auto& [name, value] : overrides) {
     // With named robots the initial poses are the robots' own: nothing to show or override.
-    const bool applies = world.robots.empty() || std::string(name).rfind("initial_pose/", 0) != 0;
+    // A map's extent is its room.
+    const bool applies =
+        (world.robots.empty() || std::string(name).rfind("initial_pose/", 0) != 0) &&
+        !(world.map && std::string(name).rfind("room/", 0) == 0);
     if (applies) *value = params.get(name, *value);
   }
   world::validate(world);
@@ -123,9 +133,22 @@ class RoombaSimNode {
       trails_.push_back(sim_node::makeTrail(i));
     }
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
+    if (sim_.world().map) publishMap(*sim_.world().map);
     publishStaticTransforms();
     world_markers_ = sim_node::worldMarkers(sim_.world());
     startReconfigure();
+  }
+
+  /// The world's map on /map and /map_metadata, latched, exactly as map_server would publish
+  /// the same file, so that rviz's Map display, a planner or any map_server client finds it.
+  void publishMap(const geometry::OccupancyGrid& grid) {
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, /*latch=*/true);
+    map_metadata_pub_ = nh_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, /*latch=*/true);
+    const ros::Time stamp = ros::Time::now();
+    map_pub_.publish(sim_node::toMapMessage(grid, stamp));
+    map_metadata_pub_.publish(sim_node::toMapMetaData(grid, stamp));
+    ROS_INFO("roomba_sim: map %s, %d x %d cells of %g m, on /map", sim_.world().map_file.c_str(),
+             grid.width, grid.height, grid.resolution);
   }
 
   /// The fixed-step loop: sense contact, publish the state, apply the latest command, keep pace
@@ -310,6 +333,7 @@ class RoombaSimNode {
   std::vector<visualization_msgs::Marker> trails_;  ///< one per robot
 
   ros::Publisher clock_pub_, markers_pub_, coverage_pub_, coverage_map_pub_;
+  ros::Publisher map_pub_, map_metadata_pub_;  ///< latched, as map_server's
   ros::ServiceServer reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;

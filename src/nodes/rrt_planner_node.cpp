@@ -116,7 +116,17 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
   // Scenario "room": the simulator's world file (its room, furniture and robot radius).
   const std::string world_file =
       pnh.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
-  if (!world_file.empty()) d.room = planning::loadRoom(world_file);  // throws with the reason
+  if (!world_file.empty()) {
+    const world::World world = world::loadWorld(world_file);  // throws with the reason
+    if (world.map) {
+      ROS_WARN(
+          "rrt_planner: %s is a map: scenario room is not available (planning on maps is not "
+          "supported yet)",
+          world_file.c_str());
+    } else {
+      d.room = planning::roomProblem(world);
+    }
+  }
   return d;
 }
 

@@ -147,6 +147,8 @@ nav_msgs::OccupancyGrid toCoverageMap(const sim::CoverageGrid& grid, const ros::
   map.info.resolution = static_cast<float>(grid.cellSize());
   map.info.width = grid.columns();
   map.info.height = grid.rows();
+  map.info.origin.position.x = grid.origin().x;
+  map.info.origin.position.y = grid.origin().y;
   map.info.origin.orientation.w = 1.0;
   map.data.resize(static_cast<std::size_t>(grid.columns()) * grid.rows());
   for (int row = 0; row < grid.rows(); ++row) {
@@ -180,13 +182,35 @@ void extendTrail(const robot::Pose2D& pose, Marker& trail) {
   points.push_back(p);
 }
 
+nav_msgs::OccupancyGrid toMapMessage(const geometry::OccupancyGrid& grid, const ros::Time& stamp) {
+  nav_msgs::OccupancyGrid map;
+  map.header.stamp = stamp;
+  map.header.frame_id = "map";
+  map.info = toMapMetaData(grid, stamp);
+  map.data.assign(grid.cells.begin(), grid.cells.end());
+  return map;
+}
+
+nav_msgs::MapMetaData toMapMetaData(const geometry::OccupancyGrid& grid, const ros::Time& stamp) {
+  nav_msgs::MapMetaData info;
+  info.map_load_time = stamp;
+  info.resolution = static_cast<float>(grid.resolution);
+  info.width = grid.width;
+  info.height = grid.height;
+  info.origin.position.x = grid.origin.x;
+  info.origin.position.y = grid.origin.y;
+  info.origin.orientation.w = 1.0;
+  return info;
+}
+
 std::vector<Marker> worldMarkers(const world::World& w) {
   const double t = kWallThickness;
+  const double x0 = w.origin.x, y0 = w.origin.y, x1 = x0 + w.width, y1 = y0 + w.height;
   std::vector<Marker> markers = {
-      makeBox("walls", 0, -t, -t, 0, w.height + t, kWallHeight, kWallColour),
-      makeBox("walls", 1, w.width, -t, w.width + t, w.height + t, kWallHeight, kWallColour),
-      makeBox("walls", 2, 0, -t, w.width, 0, kWallHeight, kWallColour),
-      makeBox("walls", 3, 0, w.height, w.width, w.height + t, kWallHeight, kWallColour),
+      makeBox("walls", 0, x0 - t, y0 - t, x0, y1 + t, kWallHeight, kWallColour),
+      makeBox("walls", 1, x1, y0 - t, x1 + t, y1 + t, kWallHeight, kWallColour),
+      makeBox("walls", 2, x0, y0 - t, x1, y0, kWallHeight, kWallColour),
+      makeBox("walls", 3, x0, y1, x1, y1 + t, kWallHeight, kWallColour),
   };
   int id = 0;
   for (const geometry::Circle& c : w.circles) {

@@ -89,6 +89,10 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
 }
 
 Problem roomProblem(const world::World& world) {
+  if (world.map) {
+    throw util::InvalidInput("map", "planning in a map world (" + world.map_file +
+                                        ") is not supported yet: plan in a room world");
+  }
   Problem p;
   p.bounds = {0, world.width, 0, world.height};
   p.obstacles = world.circles;

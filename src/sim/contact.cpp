@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace roomba_rrt::sim {
 
@@ -13,16 +14,63 @@ const double kHeadOnLateral = std::sin(10.0 * M_PI / 180.0);
 /// Enough for any corner: each pass removes the deepest overlaps, two usually suffice.
 constexpr int kMaxResolvePasses = 8;
 
+/// Pushes the disc of radius r at (x, y) out of the rectangle along the normal through the
+/// rectangle's closest point (out through the nearest side when the centre is inside); returns
+/// true when it overlapped by more than the tolerance.
+bool pushOutOf(const geometry::Rectangle& box, const double r, double& x, double& y) {
+  const geometry::Point2 q = geometry::closestPoint(box, geometry::Point2{x, y});
+  const double dx = x - q.x, dy = y - q.y;
+  const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, q);
+  if (d2 >= (r - kPenetrationTolerance) * (r - kPenetrationTolerance)) return false;
+  if (d2 > 0) {  // centre outside: along the normal through the closest point
+    const double d = std::sqrt(d2);
+    x = q.x + dx * (r / d);
+    y = q.y + dy * (r / d);
+  } else {  // centre inside: out through the nearest side
+    const double left = x - box.min_x, right = box.max_x - x;
+    const double bottom = y - box.min_y, top = box.max_y - y;
+    const double nearest = std::min({left, right, bottom, top});
+    if (nearest == left) {
+      x = box.min_x - r;
+    } else if (nearest == right) {
+      x = box.max_x + r;
+    } else if (nearest == bottom) {
+      y = box.min_y - r;
+    } else {
+      y = box.max_y + r;
+    }
+  }
+  return true;
+}
+
+/// Pushes the disc out of the map's blocked cells near it, the deepest first: the disc pushed
+/// straight off a wall's face is then clear of the neighbouring cells' corners along that face,
+/// so a wall made of many squares acts like one flat wall (no sideways nudge at the seams).
+bool pushOutOfMap(const geometry::OccupancyGrid& map, const double r, double& x, double& y) {
+  thread_local std::vector<geometry::Rectangle> squares;
+  geometry::blockedSquaresNear(map, geometry::Point2{x, y}, r, squares);
+  if (squares.empty()) return false;
+  const geometry::Point2 p{x, y};
+  std::sort(squares.begin(), squares.end(),
+            [&p](const geometry::Rectangle& a, const geometry::Rectangle& b) {
+              return geometry::squaredDistance(a, p) < geometry::squaredDistance(b, p);
+            });
+  bool pushed = false;
+  for (const geometry::Rectangle& square : squares) pushed = pushOutOf(square, r, x, y) || pushed;
+  return pushed;
+}
+
 /// One pass over every surface; returns true when something was pushed.
 bool pushOutOnce(const world::World& world, const double r, double& x, double& y) {
   bool pushed = false;
   // Walls: the normal is an axis, so pushing back is a clamp (exactly onto the wall).
-  if (x < r || x > world.width - r) {
-    x = std::clamp(x, r, world.width - r);
+  const double x0 = world.origin.x, y0 = world.origin.y;
+  if (x < x0 + r || x > x0 + world.width - r) {
+    x = std::clamp(x, x0 + r, x0 + world.width - r);
     pushed = true;
   }
-  if (y < r || y > world.height - r) {
-    y = std::clamp(y, r, world.height - r);
+  if (y < y0 + r || y > y0 + world.height - r) {
+    y = std::clamp(y, y0 + r, y0 + world.height - r);
     pushed = true;
   }
   for (const geometry::Circle& c : world.circles) {
@@ -39,31 +87,9 @@ bool pushOutOnce(const world::World& world, const double r, double& x, double& y
     }
     pushed = true;
   }
-  for (const geometry::Rectangle& box : world.rectangles) {
-    const geometry::Point2 q = geometry::closestPoint(box, geometry::Point2{x, y});
-    const double dx = x - q.x, dy = y - q.y;
-    const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, q);
-    if (d2 >= (r - kPenetrationTolerance) * (r - kPenetrationTolerance)) continue;
-    if (d2 > 0) {  // centre outside: along the normal through the closest point
-      const double d = std::sqrt(d2);
-      x = q.x + dx * (r / d);
-      y = q.y + dy * (r / d);
-    } else {  // centre inside: out through the nearest side
-      const double left = x - box.min_x, right = box.max_x - x;
-      const double bottom = y - box.min_y, top = box.max_y - y;
-      const double nearest = std::min({left, right, bottom, top});
-      if (nearest == left) {
-        x = box.min_x - r;
-      } else if (nearest == right) {
-        x = box.max_x + r;
-      } else if (nearest == bottom) {
-        y = box.min_y - r;
-      } else {
-        y = box.max_y + r;
-      }
-    }
-    pushed = true;
-  }
+  for (const geometry::Rectangle& box : world.rectangles)
+    pushed = pushOutOf(box, r, x, y) || pushed;
+  if (world.map) pushed = pushOutOfMap(*world.map, r, x, y) || pushed;
   return pushed;
 }
 
@@ -101,10 +127,11 @@ robot::BumperState senseDisc(const world::World& world, const double radius,
     closeSwitches(bumper, cos_t, sin_t, nx, ny);
   };
   const double x = pose.x, y = pose.y;
-  if (x <= r) contact(-1, 0);
-  if (x >= world.width - r) contact(1, 0);
-  if (y <= r) contact(0, -1);
-  if (y >= world.height - r) contact(0, 1);
+  const double x0 = world.origin.x, y0 = world.origin.y;
+  if (x <= x0 + r) contact(-1, 0);
+  if (x >= x0 + world.width - r) contact(1, 0);
+  if (y <= y0 + r) contact(0, -1);
+  if (y >= y0 + world.height - r) contact(0, 1);
   const geometry::Point2 p{x, y};
   for (const geometry::Circle& c : world.circles) {
     if (geometry::withinMargin(c, p, r)) contact(c.center.x - x, c.center.y - y);
@@ -112,6 +139,14 @@ robot::BumperState senseDisc(const world::World& world, const double radius,
   for (const geometry::Rectangle& box : world.rectangles) {
     const geometry::Point2 q = geometry::closestPoint(box, p);
     if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
+  }
+  if (world.map) {
+    thread_local std::vector<geometry::Rectangle> squares;
+    geometry::blockedSquaresNear(*world.map, p, r, squares);
+    for (const geometry::Rectangle& square : squares) {
+      const geometry::Point2 q = geometry::closestPoint(square, p);
+      contact(q.x - x, q.y - y);
+    }
   }
   return bumper;
 }

@@ -11,6 +11,7 @@ namespace {
 constexpr int kBitsPerWord = 64;
 
 bool insideFurniture(const world::World& world, double x, double y) {
+  if (world.map && world.map->blocked(world.map->column(x), world.map->row(y))) return true;
   for (const geometry::Circle& c : world.circles) {
     if (std::hypot(x - c.center.x, y - c.center.y) <= c.radius) return true;
   }
@@ -50,16 +51,20 @@ std::uint64_t spanMask(int first, int last) {
 CoverageGrid::CoverageGrid(const world::World& world)
     : cell_(world.coverage_cell_size),
       inverse_cell_(1.0 / cell_),
+      origin_(world.origin),
       columns_(static_cast<int>(std::ceil(world.width / cell_ - 1e-9))),
       rows_(static_cast<int>(std::ceil(world.height / cell_ - 1e-9))),
       words_per_row_((columns_ + kBitsPerWord - 1) / kBitsPerWord),
       free_(static_cast<std::size_t>(rows_) * words_per_row_, 0),
       swept_(free_.size(), 0) {
   for (int row = 0; row < rows_; ++row) {
-    const double y = (row + 0.5) * cell_;
+    const double y = origin_.y + (row + 0.5) * cell_;
     for (int column = 0; column < columns_; ++column) {
-      const double x = (column + 0.5) * cell_;
-      if (x > world.width || y > world.height || insideFurniture(world, x, y)) continue;
+      const double x = origin_.x + (column + 0.5) * cell_;
+      if (x > origin_.x + world.width || y > origin_.y + world.height ||
+          insideFurniture(world, x, y)) {
+        continue;
+      }
       free_[row * words_per_row_ + column / kBitsPerWord] |= 1ULL << (column % kBitsPerWord);
       ++free_count_;
     }
@@ -68,7 +73,9 @@ CoverageGrid::CoverageGrid(const world::World& world)
 
 void CoverageGrid::markDisc(double x, double y, double r) {
   // In cell units, cell (i, j) has its centre at (i + 0.5, j + 0.5).
-  const double cx = x * inverse_cell_ - 0.5, cy = y * inverse_cell_ - 0.5, cr = r * inverse_cell_;
+  const double cx = (x - origin_.x) * inverse_cell_ - 0.5;
+  const double cy = (y - origin_.y) * inverse_cell_ - 0.5;
+  const double cr = r * inverse_cell_;
   if (!(std::isfinite(cx) && std::isfinite(cy) && cr >= 0 && cr < 1e6)) return;
   // Rows whose centre line is within r of y (clamped before converting, so far-away discs are
   // safe).

@@ -41,7 +41,7 @@ MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
   for (std::size_t i = 0; i < specs_.size(); ++i) {
     const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
-    grid_.insert(static_cast<int>(i), p.x, p.y);
+    grid_.insert(static_cast<int>(i), p.x - world_.origin.x, p.y - world_.origin.y);
   }
   reset();
 }
@@ -49,7 +49,7 @@ MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
 bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& y) const {
   const double r = specs_[robot].radius;
   bool pushed = false;
-  grid_.forEachNear(x, y, [&](int j) {
+  grid_.forEachNear(x - world_.origin.x, y - world_.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
     const robot::Pose2D& q = robots_[j].pose;
     const double reach = r + specs_[j].radius;
@@ -71,7 +71,7 @@ bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& 
 bool MultiRobotSimulator::overlapsRobot(std::size_t robot, double x, double y) const {
   const double r = specs_[robot].radius - kPenetrationTolerance;
   bool overlaps = false;
-  grid_.forEachNear(x, y, [&](int j) {
+  grid_.forEachNear(x - world_.origin.x, y - world_.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
     const double reach = r + specs_[j].radius;
     const double dx = x - robots_[j].pose.x, dy = y - robots_[j].pose.y;
@@ -98,7 +98,7 @@ void MultiRobotSimulator::senseContact() {
     resolvePenetration(world_, r, robot.pose.x, robot.pose.y);
     robot.bumper = senseBumper(world_, r, robot.pose);
     if (!others) continue;
-    grid_.forEachNear(robot.pose.x, robot.pose.y, [&](int j) {
+    grid_.forEachNear(robot.pose.x - world_.origin.x, robot.pose.y - world_.origin.y, [&](int j) {
       if (static_cast<std::size_t>(j) == i) return;
       const robot::Pose2D& q = robots_[j].pose;
       const double reach = r + specs_[j].radius + kContactTolerance;
@@ -126,7 +126,8 @@ void MultiRobotSimulator::move(const std::vector<robot::Velocity>& commands) {
     }
     if (robot.pose.x != previous.x || robot.pose.y != previous.y) {
       coverage_[i].markDisc(robot.pose.x, robot.pose.y, spec.radius);
-      grid_.move(static_cast<int>(i), robot.pose.x, robot.pose.y);
+      grid_.move(static_cast<int>(i), robot.pose.x - world_.origin.x,
+                 robot.pose.y - world_.origin.y);
     }
   }
   ++steps_;
@@ -158,7 +159,7 @@ void MultiRobotSimulator::setPose(std::size_t robot, const robot::Pose2D& pose) 
   }
   Robot& r = robots_[robot];
   r.pose = placed;
-  grid_.move(static_cast<int>(robot), placed.x, placed.y);
+  grid_.move(static_cast<int>(robot), placed.x - world_.origin.x, placed.y - world_.origin.y);
   r.bumper = senseBumper(world_, specs_[robot].radius, r.pose);
   coverage_[robot].markDisc(r.pose.x, r.pose.y, specs_[robot].radius);
 }
@@ -170,7 +171,7 @@ void MultiRobotSimulator::reset() {
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
-    grid_.move(static_cast<int>(i), p.x, p.y);
+    grid_.move(static_cast<int>(i), p.x - world_.origin.x, p.y - world_.origin.y);
   }
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     coverage_[i].clear();
@@ -194,7 +195,8 @@ std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n) {
     std::vector<world::RobotSpec> robots;
     for (int row = 0; row < rows && static_cast<int>(robots.size()) < n; ++row) {
       for (int column = 0; column < columns && static_cast<int>(robots.size()) < n; ++column) {
-        const double x = (column + 0.5) * w, y = (row + 0.5) * h;
+        const double x = world.origin.x + (column + 0.5) * w;
+        const double y = world.origin.y + (row + 0.5) * h;
         if (penetrates(world, r, x, y)) continue;
         robots.push_back(world::RobotSpec{"robot" + std::to_string(robots.size() + 1),
                                           robot::Pose2D{x, y, 0.0}, r, world.max_linear_speed,

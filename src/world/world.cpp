@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <initializer_list>
 #include <set>
 #include <stdexcept>
 #include <utility>
 
+#include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/require.h"
 #include "roomba_rrt/util/text_file.h"
@@ -99,12 +101,43 @@ void readList(Section& parent, const std::string& key, std::vector<Item>& items,
   }
 }
 
-World readWorld(const YAML::Node& root) {
+/// The map named by `map:` (relative to the world file's folder): its grid, and the room it
+/// makes (origin and size = its extent). The initial pose defaults to the map's origin (0, 0).
+void readMap(const YAML::Node& node, const std::string& source, World& world) {
+  if (!node.IsScalar() || node.Scalar().empty()) fail("map", "must be a map_server YAML file");
+  std::filesystem::path file = node.Scalar();
+  if (file.is_relative() && source != "<string>") {
+    file = std::filesystem::path(source).parent_path() / file;
+  }
+  geometry::MapFile map;
+  try {
+    map = geometry::loadMap(file.string());
+  } catch (const InvalidInput& e) {
+    // "map: apartment.yaml: resolution: must be ...": the world's key, then the map's own.
+    throw InvalidInput("map", e.what());
+  }
+  const geometry::Rectangle extent = map.grid.extent();
+  world.origin = map.origin;
+  world.width = extent.max_x - extent.min_x;
+  world.height = extent.max_y - extent.min_y;
+  world.initial_pose = {0.0, 0.0, 0.0};
+  world.map_file = file.string();
+  world.map = std::make_shared<const geometry::OccupancyGrid>(std::move(map.grid));
+}
+
+World readWorld(const YAML::Node& root, const std::string& source) {
   World world;
   Section top(root, "");
+  const bool has_map = root.IsMap() && root["map"];
   for (const char* section : {"room", "furniture", "robot", "initial_pose"}) {
     const YAML::Node node = root.IsMap() ? root[section] : YAML::Node();
-    if (!node || node.IsNull()) world.defaulted_sections.push_back(section);
+    if ((!node || node.IsNull()) && !(has_map && std::string(section) == "room")) {
+      world.defaulted_sections.push_back(section);
+    }
+  }
+  if (has_map) {
+    if (root["room"]) fail("room", "cannot be used with map: the map's extent is the room");
+    readMap(top.child("map"), source, world);
   }
   {
     Section room(top.child("room"), "room");
@@ -280,8 +313,12 @@ void validate(const World& world) {
   const robot::Pose2D& p = world.initial_pose;
   requireCoordinates("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
   if (world.robots.empty() && penetrates(world, p.x, p.y)) {
-    fail("initial_pose", "(" + show(p.x) + ", " + show(p.y) +
-                             ") puts the robot's disc inside a wall or a piece of furniture");
+    fail("initial_pose",
+         "(" + show(p.x) + ", " + show(p.y) +
+             ") puts the robot's disc inside a wall or a piece of " +
+             (world.map ? "furniture, or on a blocked cell of the map: give the robot a free "
+                          "initial_pose (x, y)"
+                        : "furniture"));
   }
   validateRobots(world);
 }
@@ -294,10 +331,10 @@ std::vector<RobotSpec> robotsOf(const World& world) {
 
 namespace {
 /// Reads and validates; every message starts with `source` (the file) and names the parameter.
-World buildWorld(const YAML::Node& root, const std::string& source) {
+World buildWorld(const YAML::Node& root, const std::string& source, bool check = true) {
   try {
-    World world = readWorld(root);
-    validate(world);
+    World world = readWorld(root, source);
+    if (check) validate(world);
     return world;
   } catch (const InvalidInput& e) {
     throw e.in(source);
@@ -324,8 +361,30 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
 }
 
 World loadWorld(const std::string& yaml_path) {
-  return parseWorld(util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file"),
-                    yaml_path);
+  World world = readWorldFile(yaml_path);
+  try {
+    validate(world);
+  } catch (const InvalidInput& e) {
+    throw e.in(yaml_path);
+  }
+  return world;
+}
+
+World readWorldFile(const std::string& yaml_path) {
+  if (geometry::isMapYaml(yaml_path)) {
+    // A map_server YAML given as the world: the map with every other default.
+    YAML::Node root;
+    root["map"] = std::filesystem::path(yaml_path).filename().string();
+    return buildWorld(root, yaml_path, /*check=*/false);
+  }
+  const std::string text = util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file");
+  YAML::Node root;
+  try {
+    root = util::parseYaml(text);
+  } catch (const InvalidInput& e) {
+    throw e.in(yaml_path);
+  }
+  return buildWorld(root, yaml_path, /*check=*/false);
 }
 
 std::string defaultsNotice(const World& world, const std::string& source) {

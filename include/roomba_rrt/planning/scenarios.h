@@ -16,7 +16,8 @@ std::map<std::string, Problem> loadScenarios(const std::string& path);
 
 /// The simulator's room as a planning problem (scenario `room`): bounds = the room's walls,
 /// obstacles = its furniture (circles and rectangles), robot_radius = the world's robot, start and
-/// goal = the robot's initial position (callers set their own).
+/// goal = the robot's initial position (callers set their own). A world that is a map is refused
+/// (util::InvalidInput naming `map`): the planner does not plan on occupancy grids yet.
 Problem roomProblem(const world::World& world);
 
 /// roomProblem() of a world file (config/roomba_world.yaml format). Throws util::InvalidInput

@@ -9,9 +9,10 @@
 namespace roomba_rrt::sim {
 
 /// A grid of square cells over the room (cell (0, 0) has its lower-left corner at the room's
-/// origin; cell (i, j) covers x ∈ [i·c, (i+1)·c), y ∈ [j·c, (j+1)·c)).
+/// origin (x0, y0); cell (i, j) covers x ∈ [x0 + i·c, x0 + (i+1)·c), y likewise).
 ///
-/// - A cell is *free* when its centre is not inside (or on the edge of) a piece of furniture.
+/// - A cell is *free* when its centre is not inside (or on the edge of) a piece of furniture,
+///   nor on a blocked cell of the world's map (the map's free floor).
 ///   The corners of the room are free floor even though the round robot can never reach them,
 ///   so a perfect run stays below 100 %.
 /// - A cell is *swept* when its centre has been inside (or on the edge of) the robot's disc at
@@ -34,6 +35,7 @@ class CoverageGrid {
   int columns() const { return columns_; }
   int rows() const { return rows_; }
   double cellSize() const { return cell_; }
+  const geometry::Point2& origin() const { return origin_; }  ///< the room's lower-left corner
   bool isFree(int column, int row) const { return test(free_, column, row); }
   bool isSwept(int column, int row) const { return test(swept_, column, row); }
 
@@ -50,6 +52,7 @@ class CoverageGrid {
 
   double cell_;
   double inverse_cell_;
+  geometry::Point2 origin_;
   int columns_;
   int rows_;
   int words_per_row_;

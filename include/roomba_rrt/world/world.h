@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "roomba_rrt/geometry/geometry.h"
+#include "roomba_rrt/geometry/occupancy_grid.h"
 #include "roomba_rrt/robot/robot_state.h"
 
 namespace roomba_rrt::world {
@@ -33,8 +35,16 @@ struct RobotSpec {
 /// simulation: a 6.4 m × 4.8 m empty room, a 0.17 m Roomba at the centre facing +x, 1.0 m/s and
 /// 2.0 rad/s speed limits, steps of 1/60 s.
 struct World {
-  double width = 6.4;   ///< walls at x = 0 and x = width
-  double height = 4.8;  ///< walls at y = 0 and y = height
+  double width = 6.4;   ///< walls at x = origin.x and x = origin.x + width
+  double height = 4.8;  ///< walls at y = origin.y and y = origin.y + height
+  /// The room's lower-left corner: (0, 0) for a room of the world file; the map's origin when
+  /// the world is a map (its walls are then the map's edges).
+  geometry::Point2 origin;
+  /// A map (a map_server YAML: `map:` in the world file, or the world file itself): its
+  /// occupied and unknown cells are walls, exactly (the disc against each cell's square), and
+  /// its extent is the room. Copies of the world share the grid.
+  std::shared_ptr<const geometry::OccupancyGrid> map;
+  std::string map_file;  ///< the map's YAML, "" without a map
   std::vector<Circle> circles;
   std::vector<Rectangle> rectangles;
 
@@ -79,11 +89,15 @@ struct WorldLimits {
 /// Overlap below this (m) is floating-point rounding of a push-back, not penetration.
 constexpr double kPenetrationTolerance = 1e-9;
 
-/// True when a disc of `radius` centred at (x, y) overlaps a wall or piece of furniture by more
-/// than kPenetrationTolerance (where a robot may not be: validate() and the simulator's contact).
+/// True when a disc of `radius` centred at (x, y) overlaps a wall, a piece of furniture or a
+/// blocked map cell by more than kPenetrationTolerance (where a robot may not be: validate() and
+/// the simulator's contact).
 inline bool penetrates(const World& world, double radius, double x, double y) {
   const double r = radius - kPenetrationTolerance;
-  if (x < r || y < r || x > world.width - r || y > world.height - r) return true;
+  const double x0 = world.origin.x, y0 = world.origin.y;
+  if (x < x0 + r || y < y0 + r || x > x0 + world.width - r || y > y0 + world.height - r) {
+    return true;
+  }
   const geometry::Point2 p{x, y};
   for (const Circle& c : world.circles) {
     const double reach = c.radius + r;
@@ -92,7 +106,7 @@ inline bool penetrates(const World& world, double radius, double x, double y) {
   for (const Rectangle& box : world.rectangles) {
     if (geometry::squaredDistance(box, p) < r * r) return true;
   }
-  return false;
+  return world.map && geometry::distanceToBlocked(*world.map, p, r) < r;
 }
 
 /// The same for a disc of the world's robot_radius.
@@ -116,6 +130,11 @@ void validate(const World& world);
 /// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
 /// of the wrong type, an unknown key or a world that fails validate().
 World loadWorld(const std::string& yaml_path);
+
+/// loadWorld without validate(), for a caller that overrides values before it validates them
+/// itself (roomba_sim's private parameters: a map world's ~initial_pose). Still refuses what
+/// cannot be read (the file, its keys and types, the map).
+World readWorldFile(const std::string& yaml_path);
 
 /// Same as loadWorld, from YAML text (used by tests); `source` names it in error messages.
 World parseWorld(const std::string& yaml_text, const std::string& source = "<string>");
