@@ -10,6 +10,8 @@ if(ROOMBA_RRT_SANITIZE)
 
   roomba_rrt_fuzzer(world_fuzzer)
   target_link_libraries(world_fuzzer roomba_sim_core)
+  roomba_rrt_fuzzer(map_fuzzer)
+  target_link_libraries(map_fuzzer roomba_geometry)
   roomba_rrt_fuzzer(roomba_params_fuzzer)
   target_link_libraries(roomba_params_fuzzer roomba_behavior_core)
   roomba_rrt_fuzzer(tree_fuzzer)

@@ -9,10 +9,11 @@
 #include "roomba_rrt/world/world.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace roomba_rrt::sim;
-  World world;
+  using roomba_rrt::sim::Simulator;
+  roomba_rrt::world::World world;
   try {
-    world = parseWorld(std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml");
+    world = roomba_rrt::world::parseWorld(std::string(reinterpret_cast<const char*>(data), size),
+                                          "fuzz.yaml");
   } catch (const roomba_rrt::util::InvalidInput&) {
     return 0;  // refused with a message naming the field: fine
   }
