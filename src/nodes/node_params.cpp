@@ -122,6 +122,23 @@ NodeParams::NodeParams(const ros::NodeHandle& private_nh) : nh_(private_nh) {}
 
 NodeParams::~NodeParams() {
   for (const std::string& name : written_) nh_.deleteParam(name);
+  // Deleting ~initial_pose/x, /y and /theta leaves ~initial_pose as an empty mapping, which
+  // hasParam still sees (the next start with named robots took it for a pose given by the user):
+  // remove the groups that the deletions emptied, the deepest first.
+  std::set<std::string> groups;
+  for (const std::string& name : written_) {
+    for (std::size_t slash = name.rfind('/'); slash != std::string::npos && slash > 0;
+         slash = name.rfind('/', slash - 1)) {
+      groups.insert(name.substr(0, slash));
+    }
+  }
+  for (auto group = groups.rbegin(); group != groups.rend(); ++group) {
+    XmlRpcValue value;
+    if (nh_.getParam(*group, value) && value.getType() == XmlRpcValue::TypeStruct &&
+        value.size() == 0) {
+      nh_.deleteParam(*group);
+    }
+  }
 }
 
 template <class T>

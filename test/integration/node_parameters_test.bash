@@ -68,6 +68,11 @@ warns_and_writes_back() {  # NODE PARAMS...: runs NODE for 3 s
   else
     say "ok: $node removed ~$probe when it stopped"
   fi
+  # Nor the group it was in, emptied (~room: {} reads as given: a world with named robots then
+  # refused the ~initial_pose nobody set).
+  if [[ $probe == */* ]] && rosparam get "/$node/${probe%%/*}" >/dev/null 2>&1; then
+    say "FAIL: $node left the empty group ~${probe%%/*} on the master"; failures=$((failures + 1))
+  fi
   if grep -qF "$warning" "$work/out"; then
     say "ok: $node warns '$warning'"
   else
