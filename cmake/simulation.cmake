@@ -81,6 +81,14 @@ if(CATKIN_ENABLE_TESTING)
   if(TARGET sim_rviz_screenshot_test)
     target_link_libraries(sim_rviz_screenshot_test roomba_screen_capture)
   endif()
+  # A map world: /map as map_server publishes the file, the robot never ends on a wall.
+  roomba_sim_rostest(sim_map_test test/sim/sim_map.test test/sim/sim_map_test.cpp)
+  if(TARGET sim_map_test)
+    target_link_libraries(sim_map_test roomba_geometry)
+    target_compile_definitions(sim_map_test PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+    add_dependencies(sim_map_test roomba_fsm)
+  endif()
   # Two named robots, each driven by its own roomba_fsm under its namespace.
   roomba_sim_rostest(sim_two_robots_test test/sim/sim_two_robots.test
     test/sim/sim_two_robots_test.cpp)

@@ -1,0 +1,84 @@
+// roomba_sim in a map world through a real master (sim_map.test): /map and /map_metadata are
+// latched, in frame map, and equal the map file cell by cell (read here with the same reader
+// map_server's users would compare against: geometry::loadMap); roomba_fsm drives the robot
+// through the apartment for 60 s of robot time and no /odom puts its disc on a blocked cell.
+#include <gtest/gtest.h>
+#include <nav_msgs/MapMetaData.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "roomba_rrt/geometry/map_file.h"
+
+namespace {
+
+using roomba_rrt::geometry::OccupancyGrid;
+
+/// Spins until `done` holds or `wall_seconds` of wall time pass.
+bool waitUntil(const std::function<bool()>& done, double wall_seconds) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wall_seconds);
+  while (ros::ok() && ros::WallTime::now() < deadline) {
+    ros::spinOnce();
+    if (done()) return true;
+    ros::WallDuration(0.002).sleep();
+  }
+  return false;
+}
+
+TEST(SimMap, map_is_the_file_cell_by_cell_and_the_robot_never_ends_on_a_wall) {
+  const roomba_rrt::geometry::MapFile file =
+      roomba_rrt::geometry::loadMap(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml");
+  ros::NodeHandle nh;
+  nav_msgs::OccupancyGrid map;
+  nav_msgs::MapMetaData metadata;
+  bool have_map = false, have_metadata = false;
+  auto map_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "/map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) {
+        map = *m;
+        have_map = true;
+      });
+  auto metadata_sub = nh.subscribe<nav_msgs::MapMetaData>(
+      "/map_metadata", 1, [&](const nav_msgs::MapMetaData::ConstPtr& m) {
+        metadata = *m;
+        have_metadata = true;
+      });
+  ASSERT_TRUE(waitUntil([&] { return have_map && have_metadata; }, 30)) << "no latched /map";
+  EXPECT_EQ(map.header.frame_id, "map");
+  EXPECT_EQ(map.info.width, static_cast<unsigned>(file.grid.width));
+  EXPECT_EQ(map.info.height, static_cast<unsigned>(file.grid.height));
+  EXPECT_FLOAT_EQ(map.info.resolution, static_cast<float>(file.resolution));
+  EXPECT_DOUBLE_EQ(map.info.origin.position.x, file.origin.x);
+  EXPECT_DOUBLE_EQ(map.info.origin.position.y, file.origin.y);
+  EXPECT_EQ(std::vector<std::int8_t>(map.data.begin(), map.data.end()), file.grid.cells);
+  EXPECT_EQ(metadata, map.info);
+
+  // The robot's disc (0.17 m) never ends a step on a blocked cell: its centre keeps the radius
+  // from every blocked square (up to the simulator's contact tolerance).
+  long odoms = 0, on_walls = 0;
+  double first_stamp = -1, last_stamp = 0;
+  auto odom_sub =
+      nh.subscribe<nav_msgs::Odometry>("/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& odom) {
+        const auto& p = odom->pose.pose.position;
+        ++odoms;
+        if (first_stamp < 0) first_stamp = odom->header.stamp.toSec();
+        last_stamp = odom->header.stamp.toSec();
+        if (roomba_rrt::geometry::distanceToBlocked(file.grid, {p.x, p.y}, 1.0) < 0.17 - 1e-6) {
+          ++on_walls;
+        }
+      });
+  ASSERT_TRUE(waitUntil([&] { return first_stamp >= 0 && last_stamp - first_stamp > 60; }, 60))
+      << odoms << " /odom in " << last_stamp - first_stamp << " s of robot time";
+  EXPECT_EQ(on_walls, 0) << "of " << odoms << " /odom";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "sim_map_test");
+  return RUN_ALL_TESTS();
+}
