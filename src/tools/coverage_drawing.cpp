@@ -45,7 +45,8 @@ void drawCleanedFloor(cairo_t* cr, const sim::CoverageGrid& grid, const RoomCanv
       }
       int end = col;
       while (end < grid.columns() && grid.isSwept(end, row)) ++end;
-      cairo_rectangle(cr, c.px(col * cell), c.py((row + 1) * cell), (end - col) * cell * c.scale,
+      cairo_rectangle(cr, c.px(grid.origin().x + col * cell),
+                      c.py(grid.origin().y + (row + 1) * cell), (end - col) * cell * c.scale,
                       cell * c.scale);
       col = end;
     }
@@ -218,7 +219,7 @@ double drawCountLegend(cairo_t* cr, const PlotFrame& f, const FleetStatistics& f
 void drawRunPicture(const std::string& file, const sim::Simulator& simulator, const Run& run,
                     const std::string& title) {
   const world::World& world = simulator.world();
-  const RoomCanvas c{world.height};
+  const RoomCanvas c = roomCanvas(world);
   const double legend = 190.0;
   PngImage image(static_cast<int>(world.width * c.scale + 2 * c.margin + legend),
                  static_cast<int>(world.height * c.scale + 2 * c.margin + c.header));
@@ -229,7 +230,8 @@ void drawRunPicture(const std::string& file, const sim::Simulator& simulator, co
   drawPath(cr, run.path, c);
 
   drawTitle(cr, title, c.margin, 26, 15);
-  drawRunLegend(cr, c.px(world.width) + 25, c.py(world.height) + 10);
+  drawRunLegend(cr, c.px(world.origin.x + world.width) + 25,
+                c.py(world.origin.y + world.height) + 10);
   image.write(file);
 }
 

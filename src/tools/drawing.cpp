@@ -1,5 +1,6 @@
 #include "drawing.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace roomba_rrt::tools {
@@ -43,11 +44,43 @@ void drawTitle(cairo_t* cr, const std::string& title, double x, double baseline,
   cairo_show_text(cr, title.c_str());
 }
 
+RoomCanvas roomCanvas(const world::World& world) {
+  RoomCanvas c{world.height};
+  c.scale = std::min(100.0, 1200.0 / std::max(world.width, world.height));
+  c.origin = world.origin;
+  return c;
+}
+
 void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
-  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
+  cairo_rectangle(cr, c.px(world.origin.x), c.py(world.origin.y + world.height),
+                  world.width * c.scale, world.height * c.scale);
   cairo_fill(cr);
 }
+
+namespace {
+
+/// A map's blocked cells, one rectangle per run of them in a row.
+void drawBlockedCells(cairo_t* cr, const geometry::OccupancyGrid& map, const RoomCanvas& c) {
+  cairo_set_source_rgb(cr, 0.30, 0.30, 0.30);
+  const double r = map.resolution;
+  for (int j = 0; j < map.height; ++j) {
+    for (int i = 0; i < map.width;) {
+      if (!map.blocked(i, j)) {
+        ++i;
+        continue;
+      }
+      int end = i;
+      while (end < map.width && map.blocked(end, j)) ++end;
+      cairo_rectangle(cr, c.px(map.origin.x + i * r), c.py(map.origin.y + (j + 1) * r),
+                      (end - i) * r * c.scale, r * c.scale);
+      i = end;
+    }
+  }
+  cairo_fill(cr);
+}
+
+}  // namespace
 
 void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
@@ -61,9 +94,11 @@ void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCan
                     (r.max_y - r.min_y) * c.scale);
   }
   cairo_fill(cr);
+  if (world.map) drawBlockedCells(cr, *world.map, c);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 3);
-  cairo_rectangle(cr, c.px(0), c.py(world.height), world.width * c.scale, world.height * c.scale);
+  cairo_rectangle(cr, c.px(world.origin.x), c.py(world.origin.y + world.height),
+                  world.width * c.scale, world.height * c.scale);
   cairo_stroke(cr);
 }
 

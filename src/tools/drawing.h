@@ -52,14 +52,19 @@ struct RoomCanvas {
   double scale = 100.0;  ///< pixels per metre
   double margin = 20.0;
   double header = 30.0;
-  double px(double x) const { return margin + x * scale; }
-  double py(double y) const { return header + margin + (height - y) * scale; }
+  geometry::Point2 origin;  ///< the room's lower-left corner (a map's origin), m
+  double px(double x) const { return margin + (x - origin.x) * scale; }
+  double py(double y) const { return header + margin + (origin.y + height - y) * scale; }
 };
+
+/// The canvas of a world's room: 100 pixels per metre, fewer for a room (a map) larger than
+/// 12 m so that the picture stays within about 1200 pixels.
+RoomCanvas roomCanvas(const world::World& world);
 
 /// The floor, light grey.
 void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c);
 
-/// Furniture (filled, brown) and the walls (black outline).
+/// Furniture (filled, brown), a map's blocked cells (dark grey) and the walls (black outline).
 void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c);
 
 }  // namespace roomba_rrt::tools

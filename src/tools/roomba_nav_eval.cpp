@@ -40,7 +40,7 @@ const char* const kUsage =
 /// The room, every run's trace (green: reached, red: not) and each goal as an arrow.
 void drawPng(const std::string& file, const roomba_rrt::world::World& world,
              const roomba_rrt::tools::NavEvalReport& report, const std::string& title) {
-  const roomba_rrt::tools::RoomCanvas c{world.height};
+  const roomba_rrt::tools::RoomCanvas c = roomba_rrt::tools::roomCanvas(world);
   const int width = static_cast<int>(world.width * c.scale + 2 * c.margin);
   const int height = static_cast<int>(world.height * c.scale + 2 * c.margin + c.header);
   roomba_rrt::tools::PngImage image(width, height);

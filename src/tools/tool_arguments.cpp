@@ -27,6 +27,7 @@ std::string defaultScenarioFile() { return ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios
 std::string worldFile(const std::string& value) {
   if (value == "empty") return ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml";
   if (value == "furnished") return ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
+  if (value == "apartment") return ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml";
   return value;
 }
 

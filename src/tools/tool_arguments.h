@@ -15,7 +15,8 @@ namespace roomba_rrt::tools {
 std::string defaultScenarioFile();
 
 /// A --world value as scripts/run takes it: `empty` (the lab's room, config/roomba_world.yaml),
-/// `furnished` (config/roomba_world_furnished.yaml), or a world file's path (unchanged).
+/// `furnished` (config/roomba_world_furnished.yaml), `apartment` (config/maps/apartment.yaml, a
+/// map), or a world file's path (unchanged).
 std::string worldFile(const std::string& value);
 
 /// What the tools' common flags set.
