@@ -331,6 +331,15 @@ std::vector<RobotSpec> robotsOf(const World& world) {
 
 namespace {
 /// Reads and validates; every message starts with `source` (the file) and names the parameter.
+/// The YAML of a world file (duplicate keys refused), errors naming `source`.
+YAML::Node parseText(const std::string& yaml_text, const std::string& source) {
+  try {
+    return util::parseYaml(yaml_text);
+  } catch (const InvalidInput& e) {
+    throw e.in(source);
+  }
+}
+
 World buildWorld(const YAML::Node& root, const std::string& source, bool check = true) {
   try {
     World world = readWorld(root, source);
@@ -351,13 +360,7 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
                            std::to_string(WorldLimits::kMaxFileBytes) + " are supported",
                        source);
   }
-  YAML::Node root;
-  try {
-    root = util::parseYaml(yaml_text);
-  } catch (const InvalidInput& e) {
-    throw e.in(source);
-  }
-  return buildWorld(root, source);
+  return buildWorld(parseText(yaml_text, source), source);
 }
 
 World loadWorld(const std::string& yaml_path) {
@@ -378,13 +381,7 @@ World readWorldFile(const std::string& yaml_path) {
     return buildWorld(root, yaml_path, /*check=*/false);
   }
   const std::string text = util::readTextFile(yaml_path, WorldLimits::kMaxFileBytes, "world file");
-  YAML::Node root;
-  try {
-    root = util::parseYaml(text);
-  } catch (const InvalidInput& e) {
-    throw e.in(yaml_path);
-  }
-  return buildWorld(root, yaml_path, /*check=*/false);
+  return buildWorld(parseText(text, yaml_path), yaml_path, /*check=*/false);
 }
 
 std::string defaultsNotice(const World& world, const std::string& source) {
