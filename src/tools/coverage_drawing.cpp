@@ -35,23 +35,9 @@ Rgb colourOfCount(std::size_t index) {
 
 /// Cleaned floor: one rectangle per run of swept cells in a row.
 void drawCleanedFloor(cairo_t* cr, const sim::CoverageGrid& grid, const RoomCanvas& c) {
-  const double cell = grid.cellSize();
   setColour(cr, kCleanedColour);
-  for (int row = 0; row < grid.rows(); ++row) {
-    for (int col = 0; col < grid.columns();) {
-      if (!grid.isSwept(col, row)) {
-        ++col;
-        continue;
-      }
-      int end = col;
-      while (end < grid.columns() && grid.isSwept(end, row)) ++end;
-      cairo_rectangle(cr, c.px(grid.origin().x + col * cell),
-                      c.py(grid.origin().y + (row + 1) * cell), (end - col) * cell * c.scale,
-                      cell * c.scale);
-      col = end;
-    }
-  }
-  cairo_fill(cr);
+  fillCells(cr, c, grid.origin(), grid.cellSize(), grid.columns(), grid.rows(),
+            [&grid](int column, int row) { return grid.isSwept(column, row); });
 }
 
 /// The path, one polyline per stretch in the same state; Rotate (in place) as dots; the start.

@@ -58,29 +58,23 @@ void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_fill(cr);
 }
 
-namespace {
-
-/// A map's blocked cells, one rectangle per run of them in a row.
-void drawBlockedCells(cairo_t* cr, const geometry::OccupancyGrid& map, const RoomCanvas& c) {
-  cairo_set_source_rgb(cr, 0.30, 0.30, 0.30);
-  const double r = map.resolution;
-  for (int j = 0; j < map.height; ++j) {
-    for (int i = 0; i < map.width;) {
-      if (!map.blocked(i, j)) {
-        ++i;
+void fillCells(cairo_t* cr, const RoomCanvas& c, const geometry::Point2& origin, double cell,
+               int columns, int rows, const std::function<bool(int, int)>& filled) {
+  for (int row = 0; row < rows; ++row) {
+    for (int col = 0; col < columns;) {
+      if (!filled(col, row)) {
+        ++col;
         continue;
       }
-      int end = i;
-      while (end < map.width && map.blocked(end, j)) ++end;
-      cairo_rectangle(cr, c.px(map.origin.x + i * r), c.py(map.origin.y + (j + 1) * r),
-                      (end - i) * r * c.scale, r * c.scale);
-      i = end;
+      int end = col;
+      while (end < columns && filled(end, row)) ++end;
+      cairo_rectangle(cr, c.px(origin.x + col * cell), c.py(origin.y + (row + 1) * cell),
+                      (end - col) * cell * c.scale, cell * c.scale);
+      col = end;
     }
   }
   cairo_fill(cr);
 }
-
-}  // namespace
 
 void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
@@ -94,7 +88,12 @@ void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCan
                     (r.max_y - r.min_y) * c.scale);
   }
   cairo_fill(cr);
-  if (world.map) drawBlockedCells(cr, *world.map, c);
+  if (world.map) {  // its blocked cells, dark grey
+    const geometry::OccupancyGrid& map = *world.map;
+    cairo_set_source_rgb(cr, 0.30, 0.30, 0.30);
+    fillCells(cr, c, map.origin, map.resolution, map.width, map.height,
+              [&map](int i, int j) { return map.blocked(i, j); });
+  }
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 3);
   cairo_rectangle(cr, c.px(world.origin.x), c.py(world.origin.y + world.height),

@@ -5,6 +5,7 @@
 
 #include <cairo.h>
 
+#include <functional>
 #include <string>
 
 #include "roomba_rrt/world/world.h"
@@ -60,6 +61,12 @@ struct RoomCanvas {
 /// The canvas of a world's room: 100 pixels per metre, fewer for a room (a map) larger than
 /// 12 m so that the picture stays within about 1200 pixels.
 RoomCanvas roomCanvas(const world::World& world);
+
+/// Fills the cells of a grid (`columns` × `rows` squares of `cell` m, cell (0, 0)'s lower-left
+/// corner at `origin`) for which `filled(column, row)` holds, one rectangle per run of them in a
+/// row, in the current colour.
+void fillCells(cairo_t* cr, const RoomCanvas& c, const geometry::Point2& origin, double cell,
+               int columns, int rows, const std::function<bool(int, int)>& filled);
 
 /// The floor, light grey.
 void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c);
