@@ -12,22 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "../common/wait_until.h"
 #include "roomba_rrt/geometry/map_file.h"
 
 namespace {
 
 using roomba_rrt::geometry::OccupancyGrid;
 
-/// Spins until `done` holds or `wall_seconds` of wall time pass.
-bool waitUntil(const std::function<bool()>& done, double wall_seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wall_seconds);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    if (done()) return true;
-    ros::WallDuration(0.002).sleep();
-  }
-  return false;
-}
+using roomba_rrt::test::waitUntil;
 
 TEST(SimMap, map_is_the_file_cell_by_cell_and_the_robot_never_ends_on_a_wall) {
   const roomba_rrt::geometry::MapFile file =

@@ -15,18 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "../common/wait_until.h"
+
 namespace {
 
-/// Spins until `done` holds or `wall_seconds` of wall time pass.
-bool waitUntil(const std::function<bool()>& done, double wall_seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wall_seconds);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    if (done()) return true;
-    ros::WallDuration(0.002).sleep();
-  }
-  return false;
-}
+using roomba_rrt::test::waitUntil;
 
 /// What one robot's /<name>/odom said.
 struct Track {
