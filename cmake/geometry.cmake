@@ -6,6 +6,7 @@
 pkg_check_modules(SDL2_IMAGE REQUIRED IMPORTED_TARGET SDL2_image)
 
 add_library(roomba_geometry src/geometry/geometry.cpp src/geometry/occupancy_grid.cpp
+  src/geometry/distance_transform.cpp src/geometry/clearance_map.cpp
   src/geometry/map_file.cpp)
 target_include_directories(roomba_geometry PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_geometry PRIVATE yaml-cpp PkgConfig::SDL2_IMAGE)
@@ -15,5 +16,6 @@ if(CATKIN_ENABLE_TESTING)
   pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
   roomba_rrt_gtest(geometry_test test/geometry/geometry_test.cpp
     test/geometry/occupancy_grid_test.cpp test/geometry/map_file_test.cpp
+    test/geometry/clearance_map_test.cpp
     LINK roomba_geometry PkgConfig::LIBPNG)
 endif()

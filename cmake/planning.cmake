@@ -36,7 +36,8 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(planning_core_test test/planning/geometry_test.cpp
     test/planning/matlab_random_test.cpp test/planning/nearest_neighbors_test.cpp
     test/planning/rrt_test.cpp test/planning/algorithms_test.cpp test/planning/validate_test.cpp
-    test/planning/robustness_test.cpp test/planning/room_test.cpp LINK rrt_planning)
+    test/planning/robustness_test.cpp test/planning/room_test.cpp
+    test/planning/map_planning_test.cpp LINK rrt_planning)
 endif()
 
 # planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.

@@ -89,16 +89,21 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
 }
 
 Problem roomProblem(const world::World& world) {
-  if (world.map) {
-    throw util::InvalidInput("map", "planning in a map world (" + world.map_file +
-                                        ") is not supported yet: plan in a room world");
-  }
-  Problem p;
-  p.bounds = {0, world.width, 0, world.height};
+  Problem p = world.map ? mapProblem(world.map) : Problem{};
+  p.bounds = {world.origin.x, world.origin.x + world.width, world.origin.y,
+              world.origin.y + world.height};
   p.obstacles = world.circles;
   p.rectangles = world.rectangles;
   p.robot_radius = world.robot_radius;
   p.start = p.goal = {world.initial_pose.x, world.initial_pose.y};
+  return p;
+}
+
+Problem mapProblem(std::shared_ptr<const geometry::OccupancyGrid> map, bool allow_unknown) {
+  Problem p;
+  const geometry::Rectangle e = map->extent();
+  p.bounds = {e.min_x, e.max_x, e.min_y, e.max_y};
+  p.map = std::make_shared<const geometry::ClearanceMap>(std::move(map), allow_unknown);
   return p;
 }
 

@@ -58,6 +58,12 @@ void requirePlaceable(const char* field, const Point2& p, const Problem& problem
       throw InvalidInput(field, "inside " + entry("rectangles", i) + grown());
     }
   }
+  if (problem.map && !problem.map->discFree(p, problem.map->disc(margin))) {
+    throw InvalidInput(field, "(" + show(p.x) + ", " + show(p.y) + ") is in a wall of the map: " +
+                                  (problem.map->unknownIsFree() ? "an occupied cell"
+                                                                : "an occupied or unknown cell") +
+                                  grown());
+  }
 }
 
 // Bounds: finite, in range, not empty or inverted, not too thin.

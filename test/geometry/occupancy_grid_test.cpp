@@ -11,47 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "text_grid.h"
+
 namespace roomba_rrt::geometry {
 namespace {
 
-/// A grid from rows of text, top row first as in an image: '#' occupied, '?' unknown, '.' free.
-OccupancyGrid gridFrom(const std::vector<std::string>& rows, double resolution = 0.1,
-                       Point2 origin = {0, 0}) {
-  OccupancyGrid grid;
-  grid.width = static_cast<int>(rows[0].size());
-  grid.height = static_cast<int>(rows.size());
-  grid.resolution = resolution;
-  grid.origin = origin;
-  grid.cells.resize(static_cast<std::size_t>(grid.width) * grid.height);
-  for (int j = 0; j < grid.height; ++j) {
-    for (int i = 0; i < grid.width; ++i) {
-      const char c = rows[grid.height - 1 - j][i];
-      grid.cells[j * grid.width + i] = c == '#'   ? OccupancyGrid::kOccupied
-                                       : c == '?' ? OccupancyGrid::kUnknown
-                                                  : OccupancyGrid::kFree;
-    }
-  }
-  return grid;
-}
-
-/// Distance to the nearest blocked square by brute force: every blocked cell, and the outside
-/// of the map (a wall beyond its edge).
-double bruteDistance(const OccupancyGrid& grid, const Point2& p, bool unknown_is_free) {
-  const Rectangle e = grid.extent();
-  double best = std::numeric_limits<double>::infinity();
-  if (contains(e, p)) {
-    best = std::min({p.x - e.min_x, e.max_x - p.x, p.y - e.min_y, e.max_y - p.y});
-  } else {
-    best = 0;
-  }
-  for (int j = 0; j < grid.height; ++j) {
-    for (int i = 0; i < grid.width; ++i) {
-      if (grid.blocked(i, j, unknown_is_free))
-        best = std::min(best, distance(grid.square(i, j), p));
-    }
-  }
-  return best;
-}
+using text_grid::bruteDistance;
+using text_grid::gridFrom;
 
 TEST(OccupancyGrid, cells_are_row_major_from_the_bottom_and_squares_tile_the_extent) {
   const OccupancyGrid grid = gridFrom({"#..", "..?"}, 0.5, {-1.0, 2.0});

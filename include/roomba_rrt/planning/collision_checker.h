@@ -1,9 +1,10 @@
-// Is a point, or a straight motion, free of the obstacles (circles and rectangles, grown by the
-// robot's radius and clearance)?
+// Is a point, or a straight motion, free of the obstacles (circles, rectangles and a map's blocked
+// cells, grown by the robot's radius and clearance)?
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -18,15 +19,19 @@ namespace roomba_rrt::planning {
 /// The robot is a disc of radius `margin` (robot_radius + clearance; 0 = a point, the lab), so the
 /// checker works in the grown world: a disc's radius grows by margin, and a rectangle becomes the
 /// rounded rectangle of every point within margin of it (tested by the exact distance). The walls
-/// are the planner's business: it samples in the bounds shrunk by margin (see shrink()).
+/// are the planner's business: it samples in the bounds shrunk by margin (see shrink()). A map's
+/// cells are asked of its ClearanceMap, for a disc of radius margin, exactly.
 class CollisionChecker {
  public:
   CollisionChecker(std::vector<Circle> obstacles, CollisionCheck mode,
-                   std::vector<Rectangle> rectangles = {}, double margin = 0)
+                   std::vector<Rectangle> rectangles = {}, double margin = 0,
+                   std::shared_ptr<const geometry::ClearanceMap> map = nullptr)
       : obstacles_(std::move(obstacles)),
         rectangles_(std::move(rectangles)),
         margin_(margin),
-        mode_(mode) {
+        mode_(mode),
+        map_(std::move(map)),
+        disc_(map_ ? map_->disc(margin) : geometry::ClearanceMap::Disc{}) {
     for (Circle& c : obstacles_) c.radius += margin;  // + 0 leaves the lab's discs bit-identical
     // Each rectangle's box grown by margin, for the inline quick test of isSegmentFree().
     grown_boxes_.reserve(rectangles_.size());
@@ -51,7 +56,7 @@ class CollisionChecker {
     for (const Rectangle& box : rectangles_) {
       if (geometry::withinMargin(box, p, margin_)) return false;
     }
-    return true;
+    return !map_ || map_->discFree(p, disc_);
   }
   /// True when the whole segment a-b is outside every grown obstacle (exact segment tests).
   bool isSegmentFree(const Point2& a, const Point2& b) const {
@@ -79,18 +84,22 @@ class CollisionChecker {
       }
       if (segmentMeets({a, b}, rectangles_[i], margin_)) return false;
     }
-    return true;
+    return !map_ || map_->sweepFree(a, b, disc_);
   }
   /// The planner's check of a new edge from a (already in the tree) to b, by mode:
-  /// `points` checks only b (the lab), `segments` the whole edge.
+  /// `points` checks only b against the discs and rectangles (the lab), `segments` the whole
+  /// edge. A map is always checked along the whole edge: its walls are a cell thick, and a step
+  /// would jump them.
   bool isMotionFree(const Point2& a, const Point2& b) const {
-    return mode_ == CollisionCheck::kPoints ? isFree(b) : isSegmentFree(a, b);
+    if (mode_ == CollisionCheck::kSegments) return isSegmentFree(a, b);
+    return isFree(b) && (!map_ || map_->sweepFree(a, b, disc_));
   }
   CollisionCheck mode() const { return mode_; }
   /// The discs, already grown by margin(); the rectangles as given (grown by margin() in tests).
   const std::vector<Circle>& obstacles() const { return obstacles_; }
   const std::vector<Rectangle>& rectangles() const { return rectangles_; }
   double margin() const { return margin_; }
+  const geometry::ClearanceMap* map() const { return map_.get(); }
 
  private:
   std::vector<Circle> obstacles_;
@@ -99,11 +108,14 @@ class CollisionChecker {
   double margin_;
   std::vector<double> reach_;  ///< per disc: its radius plus its share of the quick test's slack
   CollisionCheck mode_;
+  std::shared_ptr<const geometry::ClearanceMap> map_;
+  geometry::ClearanceMap::Disc disc_;  ///< the map's thresholds for a disc of radius margin_
 };
 
-/// The checker of `problem`'s obstacles grown by its robot_radius + clearance.
+/// The checker of `problem`'s obstacles and map grown by its robot_radius + clearance.
 inline CollisionChecker collisionChecker(const Problem& problem, CollisionCheck mode) {
-  return CollisionChecker(problem.obstacles, mode, problem.rectangles, robotMargin(problem));
+  return CollisionChecker(problem.obstacles, mode, problem.rectangles, robotMargin(problem),
+                          problem.map);
 }
 
 }  // namespace roomba_rrt::planning

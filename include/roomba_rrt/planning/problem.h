@@ -2,8 +2,10 @@
 // is.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/planning/geometry.h"
 
 namespace roomba_rrt::planning {
@@ -16,6 +18,10 @@ struct Problem {
   std::vector<Rectangle> rectangles;  ///< axis-aligned obstacles (furniture)
   double robot_radius = 0;            ///< the robot's disc (m); 0 = a point (the lab)
   double clearance = 0;               ///< extra margin kept from obstacles and walls (m)
+  /// An occupancy map whose occupied (and, unless it was built to allow them, unknown) cells are
+  /// obstacles too, each cell's square exactly; nullptr: none. Built once per map and shared by
+  /// every problem planned in it (mapProblem() in scenarios.h).
+  std::shared_ptr<const geometry::ClearanceMap> map;
 };
 
 /// How far the robot's centre must stay from obstacles and walls: robot_radius + clearance.
