@@ -1,10 +1,15 @@
 # What every node shares: its private parameters read one way and the config folder it takes its
 # default files from (node_params), and the watch that stops it when the master is gone for good
-# (master_watch).
+# (master_watch), and maps to and from nav_msgs/OccupancyGrid (map_messages).
 
-add_library(roomba_node_common STATIC src/nodes/node_params.cpp src/nodes/master_watch.cpp)
+add_library(roomba_node_common STATIC src/nodes/node_params.cpp src/nodes/master_watch.cpp
+  src/nodes/map_messages.cpp)
 target_include_directories(roomba_node_common PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(roomba_node_common PUBLIC ${catkin_LIBRARIES})
+target_link_libraries(roomba_node_common PUBLIC roomba_geometry ${catkin_LIBRARIES})
 # The source tree's config/, for a node run without the package on ROS_PACKAGE_PATH.
 target_compile_definitions(roomba_node_common PRIVATE
   ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+
+if(CATKIN_ENABLE_TESTING)
+  roomba_rrt_gtest(map_messages_test test/nodes/map_messages_test.cpp LINK roomba_node_common ROS)
+endif()

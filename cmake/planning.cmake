@@ -3,6 +3,7 @@
 
 add_library(rrt_planning
   src/planning/brute_force_nearest_neighbors.cpp
+  src/planning/free_point_near.cpp
   src/planning/grid_nearest_neighbors.cpp
   src/planning/monte_carlo.cpp
   src/planning/nearest_neighbors.cpp
@@ -53,6 +54,7 @@ endif()
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
 add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
+  src/nodes/make_plan_ros.cpp
   src/nodes/plan_slots.cpp)
 target_link_libraries(rrt_planner rrt_planning roomba_node_common)
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})

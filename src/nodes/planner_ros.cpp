@@ -63,21 +63,27 @@ std::string knownScenarios(const std::map<std::string, planning::Problem>& scena
   std::string names;
   for (const auto& entry : scenarios) names += (names.empty() ? "" : ", ") + entry.first;
   if (defaults.room) names += names.empty() ? "room" : ", room";
-  return names.empty() ? "none loaded" : names;
+  names += names.empty() ? "map" : ", map";
+  return names;
 }
 
-// Scenario "room": the simulator's world, with the request's start and goal (both required).
-std::string resolveRoom(const PlanPath::Request& r, const planning::Problem& room,
-                        planning::Problem* problem) {
+// Scenarios "room" and "map": a world the node holds (the simulator's world file, the map),
+// with the request's start and goal (both required).
+std::string resolveWorld(const PlanPath::Request& r, const planning::Problem& world,
+                         planning::Problem* problem) {
   for (const auto& [field, given] :
        {std::pair<const char*, bool>{"start", !isUnset(r.start)}, {"goal", !isUnset(r.goal)}}) {
-    if (!given) return std::string(field) + ": required for scenario 'room' (where the robot is)";
+    if (!given) {
+      return std::string(field) + ": required for scenario '" + r.scenario +
+             "' (where the robot is)";
+    }
   }
   if (!r.obstacles.empty() || !r.rectangles.empty() || boundsGiven(r)) {
-    return "scenario: 'room' cannot be combined with explicit obstacles, rectangles or bounds "
-           "(the world file gives them)";
+    return "scenario: '" + r.scenario +
+           "' cannot be combined with explicit obstacles, rectangles or bounds (" +
+           (r.scenario == "map" ? "the map gives them)" : "the world file gives them)");
   }
-  *problem = room;
+  *problem = world;
   problem->start = toPoint2(r.start);
   problem->goal = toPoint2(r.goal);
   return "";
@@ -87,8 +93,17 @@ std::string resolveRoom(const PlanPath::Request& r, const planning::Problem& roo
 // node's defaults for what it leaves out. Returns "" or an error naming the field.
 std::string resolveGeometry(const PlanPath::Request& r, const NodeDefaults& defaults,
                             const std::map<std::string, planning::Problem>& scenarios,
-                            planning::Problem* problem) {
-  if (r.scenario == "room" && defaults.room) return resolveRoom(r, *defaults.room, problem);
+                            const planning::Problem* map, planning::Problem* problem) {
+  if (r.scenario == "room" && defaults.room) return resolveWorld(r, *defaults.room, problem);
+  if (r.scenario == "map") {
+    if (!map) {
+      return "scenario: 'map': no map yet (none received on ~map_topic, and ~world_file is not a "
+             "map)";
+    }
+    const std::string error = resolveWorld(r, *map, problem);
+    problem->robot_radius = mapRobotRadius(defaults);
+    return error;
+  }
   if (!r.scenario.empty()) {
     const auto found = scenarios.find(r.scenario);
     if (found == scenarios.end()) {
@@ -201,11 +216,12 @@ void addTree(const planning::Tree& tree, std::size_t max_nodes, Marker* edges, M
 }  // namespace
 
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
-                               const std::map<std::string, planning::Problem>& scenarios) {
+                               const std::map<std::string, planning::Problem>& scenarios,
+                               const planning::Problem* map) {
   ResolvedRequest resolved;
   resolved.error = nonFiniteHeight(request);
   if (resolved.error.empty()) {
-    resolved.error = resolveGeometry(request, defaults, scenarios, &resolved.problem);
+    resolved.error = resolveGeometry(request, defaults, scenarios, map, &resolved.problem);
     resolveRobot(request, defaults, &resolved.problem);
   }
   if (resolved.error.empty()) resolved.error = resolveOptions(request, defaults, &resolved.options);

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct NodeDefaults {
   int max_iterations_cap = planning::kDefaultMaxIterationsCap;  // larger requests are rejected
   int ordinary_iterations = 20000;        // requests asking no more are served first (plan_slots.h)
   std::optional<planning::Problem> room;  // scenario "room": the simulator's world (~world_file)
+  bool allow_unknown = false;  // ~allow_unknown: a map's unknown cells are free floor, not walls
+  // Scenario "map" and make_plan until a map arrives on ~map_topic: ~world_file's map, if any.
+  std::shared_ptr<const planning::Problem> world_map;
 };
 
 /// A request turned into the library's input, or the reason it cannot be.
@@ -40,12 +44,21 @@ struct ResolvedRequest {
   std::string error;  // "" when the request is valid; otherwise names the offending field
 };
 
+/// The robot a map is planned for when neither the request nor ~robot_radius says: the Roomba.
+constexpr double kMapRobotRadius = 0.17;
+/// ~robot_radius when it is set (> 0), otherwise the Roomba's radius.
+inline double mapRobotRadius(const NodeDefaults& d) {
+  return d.robot_radius > 0 ? d.robot_radius : kMapRobotRadius;
+}
+
 /// Fills every field of `request` left at zero or empty from `defaults` (a named scenario fills
-/// start, goal, obstacles and bounds; scenario "room" fills all but start and goal, which the
-/// request must give), then validates the result. Never throws on bad input: the
-/// error message names the field ("scenario: unknown 'z' ...", "step: must be in [...]", ...).
+/// start, goal, obstacles and bounds; scenarios "room" and "map" fill all but start and goal,
+/// which the request must give; "map" is `map`, nullptr when the node has none yet), then
+/// validates the result. Never throws on bad input: the error message names the field
+/// ("scenario: unknown 'z' ...", "step: must be in [...]", ...).
 ResolvedRequest resolveRequest(const PlanPath::Request& request, const NodeDefaults& defaults,
-                               const std::map<std::string, planning::Problem>& scenarios);
+                               const std::map<std::string, planning::Problem>& scenarios,
+                               const planning::Problem* map = nullptr);
 
 /// The path as a nav_msgs/Path (z = 0, identity orientations); empty when no path was found.
 nav_msgs::Path toPathMessage(const std::vector<planning::Point2>& path, const std::string& frame_id,

@@ -33,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "map_messages.h"
 #include "master_watch.h"
 #include "node_params.h"
 #include "reconfigure.h"
@@ -145,8 +146,8 @@ class RoombaSimNode {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, /*latch=*/true);
     map_metadata_pub_ = nh_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, /*latch=*/true);
     const ros::Time stamp = ros::Time::now();
-    map_pub_.publish(sim_node::toMapMessage(grid, stamp));
-    map_metadata_pub_.publish(sim_node::toMapMetaData(grid, stamp));
+    map_pub_.publish(nodes::toMapMessage(grid, stamp));
+    map_metadata_pub_.publish(nodes::toMapMetaData(grid, stamp));
     ROS_INFO("roomba_sim: map %s, %d x %d cells of %g m, on /map", sim_.world().map_file.c_str(),
              grid.width, grid.height, grid.resolution);
   }

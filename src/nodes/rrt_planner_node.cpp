@@ -1,14 +1,15 @@
 // rrt_planner: the RRT planning library as a ROS service.
 //
-// Serves ~plan_path (roomba_rrt/PlanPath), with the lab's scenarios and scenario "room" (the
-// simulator's ~world_file); after every plan publishes the tree, obstacles, start,
-// goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
-// (latched nav_msgs/Path). With ~animate the growing tree is published while planning. Requests
-// are served by several threads, so a long plan does not hold up other clients; when all
-// ~threads are taken an ordinary request preempts the oldest long plan and a long request is
-// answered "busy" at once (plan_slots.h), and every plan stops after
-// ~max_planning_time seconds (or less, if the request asks). Parameters and
-// examples: doc/nodes.md, "rrt_planner", and doc/planning.md.
+// Serves ~plan_path (roomba_rrt/PlanPath), with the lab's scenarios, scenario "room" (the
+// simulator's ~world_file) and scenario "map" (the latest map on ~map_topic, /map), and
+// ~make_plan (nav_msgs/GetPlan, move_base's) on that map; after every plan publishes the tree,
+// obstacles, start, goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the
+// path on ~path (latched nav_msgs/Path). With ~animate the growing tree is published while
+// planning. Requests are served by several threads, so a long plan does not hold up other clients;
+// when all ~threads are taken an ordinary request preempts the oldest long plan and a long request
+// is answered "busy" at once (plan_slots.h), and every plan stops after ~max_planning_time seconds
+// (or less, if the request asks). Parameters and examples: doc/nodes.md, "rrt_planner", and
+// doc/planning.md.
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -21,9 +22,13 @@
 #include <thread>
 #include <vector>
 
+#include <nav_msgs/GetPlan.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <ros/package.h>
 #include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/PlanPath.h>
@@ -31,6 +36,8 @@
 #include <roomba_rrt/planning/planner.h>
 #include <roomba_rrt/util/require.h>
 
+#include "make_plan_ros.h"
+#include "map_messages.h"
 #include "master_watch.h"
 #include "node_params.h"
 #include "plan_slots.h"
@@ -116,18 +123,22 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
   // Scenario "room": the simulator's world file (its room, furniture and robot radius).
   const std::string world_file =
       pnh.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
+  d.allow_unknown = pnh.get("allow_unknown", d.allow_unknown);
   if (!world_file.empty()) {
     const world::World world = world::loadWorld(world_file);  // throws with the reason
+    d.room = planning::roomProblem(world);
     if (world.map) {
-      ROS_WARN(
-          "rrt_planner: %s is a map: scenario room is not available (planning on maps is not "
-          "supported yet)",
-          world_file.c_str());
-    } else {
-      d.room = planning::roomProblem(world);
+      d.world_map = std::make_shared<const planning::Problem>(
+          planning::mapProblem(world.map, d.allow_unknown));
     }
   }
   return d;
+}
+
+// The heading of a quaternion (yaw about z); 0 for the all-zero quaternion of a request that
+// left the orientation unset.
+double yawOf(const geometry_msgs::Quaternion& q) {
+  return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
 }
 
 // ~threads: plans at once, in [1, kMaxThreads]; 1 is raised to 2.
@@ -161,9 +172,18 @@ class RrtPlannerNode {
     tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);
     path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
     service_ = pnh.advertiseService("plan_path", &RrtPlannerNode::planPath, this);
+    make_plan_service_ = pnh.advertiseService("make_plan", &RrtPlannerNode::makePlan, this);
+    // The map: the latest on ~map_topic (map_server's, roomba_sim's, a bag's), "" for none.
+    const std::string map_topic = params.get<std::string>("map_topic", "/map");
+    if (!map_topic.empty()) {
+      map_sub_ = ros::NodeHandle().subscribe(map_topic, 1, &RrtPlannerNode::onMap, this);
+    }
     ROS_INFO_STREAM("rrt_planner: serving "
                     << service_.getService() << " with " << scenarios_.size() << " scenarios from "
-                    << scenarios_file << (defaults_->room ? " and scenario room" : ""));
+                    << scenarios_file << (defaults_->room ? ", scenario room" : "")
+                    << ", and scenario map and " << make_plan_service_.getService()
+                    << (map_topic.empty() ? "" : " on the map from " + map_sub_.getTopic())
+                    << (defaults_->world_map ? " (until then the world file's map)" : ""));
     startReconfigure(pnh);
   }
 
@@ -177,7 +197,8 @@ class RrtPlannerNode {
     response.success = false;
     response.length = std::numeric_limits<double>::infinity();
     response.path.header.frame_id = frame_id_;
-    const ResolvedRequest resolved = resolveRequest(request, *defaults(), scenarios_);
+    const std::shared_ptr<const planning::Problem> map = currentMap();
+    const ResolvedRequest resolved = resolveRequest(request, *defaults(), scenarios_, map.get());
     if (!resolved.error.empty()) {
       response.message = resolved.error;
       ROS_WARN_STREAM("plan_path: rejected: " << resolved.error);
@@ -226,6 +247,113 @@ class RrtPlannerNode {
       response.message = std::string("planner error: ") + e.what();
       ROS_ERROR_STREAM("plan_path: " << response.message);
     }
+    return true;
+  }
+
+  // A map arrives (latched: at once after subscribing, then on every change): inflated here,
+  // then used by the requests that arrive after it. A message that is not a map is ignored.
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& message) {
+    auto grid = std::make_shared<geometry::OccupancyGrid>();
+    const std::string error = nodes::fromMapMessage(*message, grid.get());
+    if (!error.empty()) {
+      ROS_WARN_STREAM("rrt_planner: ignoring the map on " << map_sub_.getTopic() << ": " << error
+                                                          << " (plans keep the previous map)");
+      return;
+    }
+    if (!message->header.frame_id.empty() && message->header.frame_id != frame_id_) {
+      ROS_WARN_STREAM("rrt_planner: the map on "
+                      << map_sub_.getTopic() << " is in frame '" << message->header.frame_id
+                      << "'; plans are given in ~frame_id '" << frame_id_ << "'");
+    }
+    const auto started = std::chrono::steady_clock::now();
+    auto problem = std::make_shared<const planning::Problem>(
+        planning::mapProblem(std::move(grid), defaults()->allow_unknown));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    std::atomic_store(&map_, std::shared_ptr<const planning::Problem>(problem));
+    const geometry::OccupancyGrid& g = problem->map->grid();
+    ROS_INFO("rrt_planner: map %d x %d cells of %g m from %s, inflated in %.0f ms", g.width,
+             g.height, g.resolution, map_sub_.getTopic().c_str(), seconds * 1e3);
+  }
+
+  /// The map plans use: the latest from ~map_topic, else ~world_file's, else nullptr.
+  std::shared_ptr<const planning::Problem> currentMap() const {
+    std::shared_ptr<const planning::Problem> map = std::atomic_load(&map_);
+    return map ? map : defaults()->world_map;
+  }
+
+  // A pose of a request in ~frame_id (the map's): as given when its frame is ~frame_id or empty,
+  // otherwise transformed with tf2 (the newest transform, waiting up to kTransformWait).
+  std::optional<robot::Pose2D> inMapFrame(const geometry_msgs::PoseStamped& pose,
+                                          const std::string& field, std::string* why) const {
+    const auto& p = pose.pose.position;
+    const auto& q = pose.pose.orientation;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(q.x) || !std::isfinite(q.y) ||
+        !std::isfinite(q.z) || !std::isfinite(q.w)) {
+      *why = field + ".pose: must be finite";
+      return std::nullopt;
+    }
+    const std::string& frame = pose.header.frame_id;
+    if (frame.empty() || frame == frame_id_) return robot::Pose2D{p.x, p.y, yawOf(q)};
+    geometry_msgs::TransformStamped t;
+    try {
+      constexpr double kTransformWait = 0.5;  // s
+      t = tf_buffer_.lookupTransform(frame_id_, frame, ros::Time(0), ros::Duration(kTransformWait));
+    } catch (const tf2::TransformException& e) {
+      *why = field + ".header.frame_id: no transform from '" + frame + "' to '" + frame_id_ +
+             "': " + e.what();
+      return std::nullopt;
+    }
+    const double yaw = yawOf(t.transform.rotation);
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    return robot::Pose2D{t.transform.translation.x + c * p.x - s * p.y,
+                         t.transform.translation.y + s * p.x + c * p.y, yaw + yawOf(q)};
+  }
+
+  // ~make_plan (nav_msgs/GetPlan), move_base's convention: an empty plan when there is none,
+  // with the reason in the log.
+  bool makePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
+    response.plan.header.frame_id = frame_id_;
+    response.plan.header.stamp = ros::Time::now();
+    const std::shared_ptr<const planning::Problem> map = currentMap();
+    if (!map) {
+      ROS_WARN("make_plan: no map yet (none received on ~map_topic, and ~world_file is not a map)");
+      return true;
+    }
+    std::string why;
+    const std::optional<robot::Pose2D> start = inMapFrame(request.start, "start", &why);
+    const std::optional<robot::Pose2D> goal =
+        start ? inMapFrame(request.goal, "goal", &why) : std::nullopt;
+    if (!start || !goal) {
+      ROS_WARN_STREAM("make_plan: no plan: " << why);
+      return true;
+    }
+    const NodeDefaults& d = *defaults();
+    const MakePlanQuery query = resolveMakePlan(*map, *start, *goal, request.tolerance, d);
+    if (!query.error.empty()) {
+      ROS_WARN_STREAM("make_plan: no plan: " << query.error);
+      return true;
+    }
+    // An interactive request, served first like an ordinary plan_path request.
+    const PlanSlots::Lease slot = slots_.acquireOrdinary(
+        PlanSlots::Clock::now() + std::chrono::duration_cast<PlanSlots::Clock::duration>(
+                                      std::chrono::duration<double>(d.options.max_planning_time)));
+    if (!slot) {
+      ROS_WARN("make_plan: busy: every planning thread (~threads) is taken; call again");
+      return true;
+    }
+    const ResolvedRequest resolved{query.problem, query.options, ""};
+    const planning::PlanResult result = plan(resolved, slot);
+    const ros::Time stamp = ros::Time::now();
+    if (result.success) {
+      response.plan = toPlanMessage(result.path, query.goal_yaw, frame_id_, stamp);
+    } else {
+      ROS_WARN_STREAM("make_plan: no plan from (" << start->x << ", " << start->y << ") to ("
+                                                  << goal->x << ", " << goal->y
+                                                  << "): " << result.message);
+    }
+    tree_pub_.publish(markers(resolved.problem, result.tree, &result.path, stamp));
+    path_pub_.publish(response.plan);
     return true;
   }
 
@@ -315,6 +443,11 @@ class RrtPlannerNode {
   ros::Publisher tree_pub_;
   ros::Publisher path_pub_;
   ros::ServiceServer service_;
+  ros::ServiceServer make_plan_service_;
+  ros::Subscriber map_sub_;
+  std::shared_ptr<const planning::Problem> map_;  // the latest map received (atomic access)
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_{tf_buffer_};
   PlanSlots slots_;
 };
 

@@ -182,27 +182,6 @@ void extendTrail(const robot::Pose2D& pose, Marker& trail) {
   points.push_back(p);
 }
 
-nav_msgs::OccupancyGrid toMapMessage(const geometry::OccupancyGrid& grid, const ros::Time& stamp) {
-  nav_msgs::OccupancyGrid map;
-  map.header.stamp = stamp;
-  map.header.frame_id = "map";
-  map.info = toMapMetaData(grid, stamp);
-  map.data.assign(grid.cells.begin(), grid.cells.end());
-  return map;
-}
-
-nav_msgs::MapMetaData toMapMetaData(const geometry::OccupancyGrid& grid, const ros::Time& stamp) {
-  nav_msgs::MapMetaData info;
-  info.map_load_time = stamp;
-  info.resolution = static_cast<float>(grid.resolution);
-  info.width = grid.width;
-  info.height = grid.height;
-  info.origin.position.x = grid.origin.x;
-  info.origin.position.y = grid.origin.y;
-  info.origin.orientation.w = 1.0;
-  return info;
-}
-
 std::vector<Marker> worldMarkers(const world::World& w) {
   const double t = kWallThickness;
   const double x0 = w.origin.x, y0 = w.origin.y, x1 = x0 + w.width, y1 = y0 + w.height;

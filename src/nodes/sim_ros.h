@@ -54,11 +54,6 @@ geometry_msgs::TransformStamped toMapTransform(const RobotFrames& frames, const 
 /// The swept fraction of the free floor, in [0, 1].
 std_msgs::Float32 toCoverageMessage(double coverage);
 
-/// The world's map as map_server publishes it on /map (latched, frame "map"): the same cells,
-/// resolution and origin as the map file, and its /map_metadata.
-nav_msgs::OccupancyGrid toMapMessage(const geometry::OccupancyGrid& grid, const ros::Time& stamp);
-nav_msgs::MapMetaData toMapMetaData(const geometry::OccupancyGrid& grid, const ros::Time& stamp);
-
 /// The grid in frame "map", one cell per coverage cell with its origin at the room's: swept
 /// floor 0 (white in rviz's "map" colours), floor not yet swept −1 (unknown), furniture 100
 /// (black). Row-major from the room's lower-left corner, as OccupancyGrid wants.

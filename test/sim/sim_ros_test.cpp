@@ -123,27 +123,6 @@ TEST(SimRos, coverage_map_shows_swept_floor_unswept_floor_and_furniture) {
   EXPECT_EQ(map.data, expected);
 }
 
-TEST(SimRos, the_map_goes_out_as_map_server_publishes_it_cell_by_cell) {
-  geometry::OccupancyGrid grid;
-  grid.width = 3;
-  grid.height = 2;
-  grid.resolution = 0.05;
-  grid.origin = {-10.0, -7.5};
-  grid.cells = {0, 100, -1, 100, 0, 0};
-  const ros::Time stamp(12, 5);
-  const nav_msgs::OccupancyGrid map = toMapMessage(grid, stamp);
-  EXPECT_EQ(map.header.frame_id, "map");
-  EXPECT_EQ(map.header.stamp, stamp);
-  EXPECT_EQ(map.info.width, 3u);
-  EXPECT_EQ(map.info.height, 2u);
-  EXPECT_FLOAT_EQ(map.info.resolution, 0.05f);
-  EXPECT_EQ(map.info.origin.position.x, -10.0);
-  EXPECT_EQ(map.info.origin.position.y, -7.5);
-  EXPECT_EQ(map.info.origin.orientation.w, 1.0);
-  EXPECT_EQ(std::vector<std::int8_t>(map.data.begin(), map.data.end()), grid.cells);
-  EXPECT_EQ(toMapMetaData(grid, stamp), map.info);
-}
-
 TEST(SimRos, world_markers_are_four_walls_and_each_piece_of_furniture_in_map) {
   world::World world;
   world.circles = {{{1.3, 3.5}, 0.3}};
