@@ -30,6 +30,24 @@ double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reac
   return std::sqrt(best_sq);
 }
 
+double segmentDistanceToBlocked(const OccupancyGrid& grid, const Segment& segment, double reach,
+                                bool unknown_is_free) {
+  const Point2 &a = segment.a, &b = segment.b;
+  const int i0 = grid.column(std::min(a.x, b.x) - reach) - 1;
+  const int i1 = grid.column(std::max(a.x, b.x) + reach) + 1;
+  const int j0 = grid.row(std::min(a.y, b.y) - reach) - 1;
+  const int j1 = grid.row(std::max(a.y, b.y) + reach) + 1;
+  double best = reach;
+  for (int j = j0; j <= j1; ++j) {
+    for (int i = i0; i <= i1; ++i) {
+      if (grid.blocked(i, j, unknown_is_free)) {
+        best = std::min(best, distance(grid.square(i, j), segment));
+      }
+    }
+  }
+  return best;
+}
+
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,
                       bool unknown_is_free) {
   bool meets = false;

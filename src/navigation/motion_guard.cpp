@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "roomba_rrt/geometry/geometry.h"
+#include "roomba_rrt/geometry/occupancy_grid.h"
 #include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
@@ -34,6 +35,13 @@ double MotionGuard::gap(double x, double y) const {
   double nearest = std::min({x - b.x_min, b.x_max - x, y - b.y_min, b.y_max - y});
   for (const auto& c : world_.obstacles) nearest = std::min(nearest, geometry::distance(c, p));
   for (const auto& r : world_.rectangles) nearest = std::min(nearest, geometry::distance(r, p));
+  if (world_.map) {
+    // Only gaps below margin_ matter (safe() compares the others with each other only when one is
+    // below it), so the map's cells are searched that far: a few hundred at most, not the room.
+    const double reach = std::min(nearest, world_.robot_radius + margin_ + 1e-3);
+    nearest = std::min(nearest, geometry::distanceToBlocked(world_.map->grid(), p, reach,
+                                                            world_.map->unknownIsFree()));
+  }
   return nearest - world_.robot_radius;
 }
 

@@ -72,6 +72,22 @@ planning::PlannerOptions defaultNavPlannerOptions() {
   return options;
 }
 
+planning::PlannerOptions navPlannerOptions(const planning::Problem& world) {
+  constexpr double kRoomDiagonal = 20;    // m: a room or a flat; larger is a building's floor
+  constexpr double kAreaPerBatch = 100;   // m² planned with the default iterations
+  constexpr int kMaxIterations = 200000;  // about 0.2 s of RRT-Connect in a large map
+  planning::PlannerOptions options = defaultNavPlannerOptions();
+  const planning::Bounds& b = world.bounds;
+  const double width = b.x_max - b.x_min, height = b.y_max - b.y_min;
+  const double diagonal = std::hypot(width, height);
+  if (!(diagonal > kRoomDiagonal)) return options;
+  options.step = std::max(options.step, diagonal / 100);
+  const double batches = std::ceil(width * height / kAreaPerBatch);
+  options.max_iterations = static_cast<int>(
+      std::min<double>(kMaxIterations, options.max_iterations * std::max(1.0, batches)));
+  return options;
+}
+
 NavLeafConfig inProcessNavConfig(const planning::Problem& world,
                                  const planning::PlannerOptions& options,
                                  InProcessPlanner::Mode mode) {

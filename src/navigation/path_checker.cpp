@@ -9,8 +9,7 @@ using planning::Point2;
 
 PathChecker::PathChecker(planning::Problem world)
     : world_(std::move(world)),
-      checker_(world_.obstacles, planning::CollisionCheck::kSegments, world_.rectangles,
-               planning::robotMargin(world_)),
+      checker_(planning::collisionChecker(world_, planning::CollisionCheck::kSegments)),
       shrunk_(planning::shrink(world_.bounds, planning::robotMargin(world_))) {}
 
 bool PathChecker::fits() const {

@@ -23,11 +23,12 @@ InProcessPlanner::InProcessPlanner(planning::Problem world, const planning::Plan
 void InProcessPlanner::validate(const planning::Problem& world,
                                 const planning::PlannerOptions& options) {
   // The world is checked by the library as a problem whose start and goal are the room's centre
-  // (furniture left out: the centre may be inside it): bounds, options and the robot's size
-  // (finite, in range, fitting in the room) with the library's own messages.
+  // (furniture and map left out: the centre may be inside them): bounds, options and the robot's
+  // size (finite, in range, fitting in the room) with the library's own messages.
   planning::Problem probe = world;
   probe.obstacles.clear();
   probe.rectangles.clear();
+  probe.map = nullptr;
   probe.start = probe.goal = {0.5 * (probe.bounds.x_min + probe.bounds.x_max),
                               0.5 * (probe.bounds.y_min + probe.bounds.y_max)};
   try {

@@ -41,14 +41,14 @@ struct Settings {
 /// after a failed call (rrt_planner restarted). Runs on the planner's worker thread.
 class PlanPathClient {
  public:
-  PlanPathClient(std::string service, double clearance)
-      : service_(std::move(service)), clearance_(clearance) {}
+  PlanPathClient(std::string service, double clearance, planning::PlannerOptions options)
+      : service_(std::move(service)), clearance_(clearance), options_(std::move(options)) {}
 
   navigation::PlanReply operator()(const planning::Point2& start, const planning::Point2& goal,
                                    std::uint32_t seed) {
     if (!client_.isValid()) client_ = ros::NodeHandle().serviceClient<PlanPath>(service_, true);
     PlanPath srv;
-    srv.request = planRequest(start, goal, seed, clearance_);
+    srv.request = planRequest(start, goal, seed, clearance_, options_);
     if (!client_.call(srv)) {
       client_.shutdown();
       navigation::PlanReply reply;
@@ -62,6 +62,7 @@ class PlanPathClient {
  private:
   std::string service_;
   double clearance_;
+  planning::PlannerOptions options_;  ///< step, iterations, tolerance of every request
   ros::ServiceClient client_;
 };
 
@@ -308,7 +309,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
 
   planning::Problem world = planning::roomProblem(s.world);
   world.clearance = s.clearance;
-  planning::PlannerOptions options = navigation::defaultNavPlannerOptions();
+  planning::PlannerOptions options = navigation::navPlannerOptions(world);
   options.seed = seed;
   if (planner == "in_process") {
     s.config = navigation::inProcessNavConfig(world, options);
@@ -316,7 +317,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
     const double clearance = s.clearance;
     s.config.planners = [world, options, service, clearance] {
       return std::make_unique<InProcessPlanner>(world, options, InProcessPlanner::Mode::kThread,
-                                                PlanPathClient(service, clearance));
+                                                PlanPathClient(service, clearance, options));
     };
     InProcessPlanner::validate(world, options);
     s.config.known_world = std::make_shared<navigation::PathChecker>(world);

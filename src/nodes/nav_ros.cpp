@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "message_parts.h"
+#include "roomba_rrt/geometry/occupancy_grid.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 
 namespace roomba_rrt::nav_node {
@@ -55,9 +56,11 @@ geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::s
 
 std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y) {
   const double margin = world.robot_radius + clearance;
-  if (x < 0 || x > world.width || y < 0 || y > world.height) {
-    return format("goal (%.2f, %.2f) is outside the room [0, %g] x [0, %g]", x, y, world.width,
-                  world.height);
+  const double x0 = world.origin.x, y0 = world.origin.y;
+  const double x1 = x0 + world.width, y1 = y0 + world.height;
+  if (x < x0 || x > x1 || y < y0 || y > y1) {
+    return format("goal (%.2f, %.2f) is outside the room [%g, %g] x ", x, y, x0, x1) +
+           format("[%g, %g]", y0, y1);
   }
   for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
     const auto& r = world.rectangles[i];
@@ -77,16 +80,21 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
              format(" of radius %g, grown by %.2f m for the robot)", c.radius, margin);
     }
   }
-  if (x < margin || x > world.width - margin || y < margin || y > world.height - margin) {
+  if (x < x0 + margin || x > x1 - margin || y < y0 + margin || y > y1 - margin) {
     return format("goal (%.2f, %.2f) is too close to a wall (the robot needs %.2f m)", x, y,
                   margin);
+  }
+  if (world.map && geometry::distanceToBlocked(*world.map, {x, y}, margin) < margin) {
+    return format("goal (%.2f, %.2f) is in or too close to a wall of the map (an occupied or ", x,
+                  y) +
+           format("unknown cell; the robot needs %.2f m)", margin, 0);
   }
   return "";
 }
 
 PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
-                              std::uint32_t seed, double clearance) {
-  const planning::PlannerOptions options = navigation::defaultNavPlannerOptions();
+                              std::uint32_t seed, double clearance,
+                              const planning::PlannerOptions& options) {
   PlanPath::Request request;
   request.scenario = "room";
   request.start.x = start.x;

@@ -11,6 +11,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <roomba_rrt/PlanPath.h>
 
+#include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/navigation/path_planner.h"
 #include "roomba_rrt/robot/robot_state.h"
 #include "roomba_rrt/world/world.h"
@@ -35,9 +36,12 @@ geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::s
 std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y);
 
 /// The ~plan_path request for a navigation plan in the service's room scenario: RRT-Connect,
-/// exact segment checks, smoothed (navigation::defaultNavPlannerOptions()), the world's robot.
-PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
-                              std::uint32_t seed, double clearance);
+/// exact segment checks, smoothed, with the step, iterations and tolerance of `options`
+/// (navigation::navPlannerOptions() of the world), the world's robot.
+PlanPath::Request planRequest(
+    const planning::Point2& start, const planning::Point2& goal, std::uint32_t seed,
+    double clearance,
+    const planning::PlannerOptions& options = navigation::defaultNavPlannerOptions());
 
 /// The service's answer as the navigation core's plan reply.
 navigation::PlanReply toPlanReply(const PlanPath::Response& response);

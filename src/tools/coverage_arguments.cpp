@@ -11,7 +11,7 @@ namespace {
 
 const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt [--duration 600] [--seed 1] [--seeds N]\n"
-    "                       [--world FILE] [--config FILE] [--tree FILE]\n"
+    "                       [--world FILE] [--pose X,Y[,THETA]] [--config FILE] [--tree FILE]\n"
     "                       [--csv traj.csv] [--png map.png]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "  --behavior  fsm (state machine) or bt (behavior tree)\n"
@@ -19,6 +19,7 @@ const char* const kUsage =
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
     "              world or map_server YAML\n"
+    "  --pose      where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree)\n"
     "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
@@ -87,6 +88,8 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
       o.seeds = static_cast<int>(seeds);
     } else if (flag == "--world") {
       o.world = worldFile(value);
+    } else if (flag == "--pose") {
+      o.pose = value;
     } else if (flag == "--config") {
       o.config = value;
     } else if (flag == "--tree") {

@@ -13,6 +13,7 @@ struct CoverageOptions {
   unsigned seed = 1;
   int seeds = 1;
   std::string world = ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml";
+  std::string pose;  ///< --pose X,Y[,THETA]; "" = the world's initial pose
   std::string config = ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml";
   std::string tree;
   std::string csv;

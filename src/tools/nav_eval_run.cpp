@@ -15,9 +15,11 @@ namespace {
 
 using planning::Point2;
 
-/// Whether the disc of radius `margin` around p is inside the room and clear of the furniture.
+/// Whether the disc of radius `margin` around p is inside the room (the map's extent) and clear
+/// of the furniture and the map's blocked cells.
 bool discFree(const world::World& w, const Point2& p, double margin) {
-  if (p.x < margin || p.x > w.width - margin || p.y < margin || p.y > w.height - margin) {
+  if (p.x < w.origin.x + margin || p.x > w.origin.x + w.width - margin ||
+      p.y < w.origin.y + margin || p.y > w.origin.y + w.height - margin) {
     return false;
   }
   for (const geometry::Circle& c : w.circles) {
@@ -26,7 +28,7 @@ bool discFree(const world::World& w, const Point2& p, double margin) {
   for (const geometry::Rectangle& r : w.rectangles) {
     if (geometry::distance(r, p) < margin) return false;
   }
-  return true;
+  return !w.map || geometry::distanceToBlocked(*w.map, p, margin) >= margin;
 }
 
 /// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).
@@ -41,7 +43,7 @@ bool sweepFree(const world::World& w, const Point2& a, const Point2& b, double m
   for (const geometry::Rectangle& r : w.rectangles) {
     if (geometry::distance(r, sweep) < margin) return false;
   }
-  return true;
+  return !w.map || geometry::segmentDistanceToBlocked(*w.map, sweep, margin) >= margin;
 }
 
 /// Records every finished plan's time.
@@ -80,7 +82,10 @@ double shortestDiscPathLength(const world::World& world, const robot::Pose2D& st
   if (sweepFree(world, s, g, r)) return std::hypot(g.x - s.x, g.y - s.y);
   const int nx = static_cast<int>(std::ceil(world.width / cell));
   const int ny = static_cast<int>(std::ceil(world.height / cell));
-  const auto centre = [&](int i, int j) { return Point2{(i + 0.5) * cell, (j + 0.5) * cell}; };
+  const Point2 o = world.origin;
+  const auto centre = [&](int i, int j) {
+    return Point2{o.x + (i + 0.5) * cell, o.y + (j + 0.5) * cell};
+  };
   std::vector<char> free(static_cast<std::size_t>(nx) * ny);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) free[j * nx + i] = discFree(world, centre(i, j), r);
@@ -89,7 +94,7 @@ double shortestDiscPathLength(const world::World& world, const robot::Pose2D& st
   const auto anchor = [&](const Point2& p) {
     int best = -1;
     double best_d = inf;
-    const int ci = static_cast<int>(p.x / cell), cj = static_cast<int>(p.y / cell);
+    const int ci = static_cast<int>((p.x - o.x) / cell), cj = static_cast<int>((p.y - o.y) / cell);
     for (int j = std::max(0, cj - 3); j <= std::min(ny - 1, cj + 3); ++j) {
       for (int i = std::max(0, ci - 3); i <= std::min(nx - 1, ci + 3); ++i) {
         const double d = std::hypot(centre(i, j).x - p.x, centre(i, j).y - p.y);
@@ -160,7 +165,7 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
   NavEvalReport report;
   planning::Problem nav_world = planning::roomProblem(world);
   nav_world.clearance = options.clearance;
-  planning::PlannerOptions planner_options = navigation::defaultNavPlannerOptions();
+  planning::PlannerOptions planner_options = navigation::navPlannerOptions(nav_world);
   planner_options.seed = options.seed;
   const auto mode = options.threaded_planner ? navigation::InProcessPlanner::Mode::kThread
                                              : navigation::InProcessPlanner::Mode::kInline;
@@ -177,7 +182,8 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
   navigation::NavBt nav(config, options.seed, tree_file);
   sim::Simulator simulator(world);
   std::mt19937 rng(options.seed);
-  std::uniform_real_distribution<double> ux(0, world.width), uy(0, world.height), ut(-M_PI, M_PI);
+  std::uniform_real_distribution<double> ux(world.origin.x, world.origin.x + world.width),
+      uy(world.origin.y, world.origin.y + world.height), ut(-M_PI, M_PI);
   const double margin = world.robot_radius + options.clearance;
   const long max_ticks = std::lround(options.timeout_s / world.step);
 

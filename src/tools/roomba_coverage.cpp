@@ -28,6 +28,7 @@
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/statistics.h"
 #include "roomba_rrt/world/world.h"
+#include "tool_arguments.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -173,7 +174,7 @@ int run(int argc, char** argv) {
     std::fputs(coverageUsage(), stdout);
     return 0;
   }
-  const world::World world = world::loadWorld(o.world);
+  const world::World world = loadToolWorld(o.world, o.pose);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
   if (!o.robots.empty() || !world.robots.empty()) return runFleets(o, world, params);

@@ -24,11 +24,14 @@
 namespace {
 
 const char* const kUsage =
-    "usage: roomba_nav_eval [--goals 20] [--seed 1] [--world FILE] [--tree FILE] [--json]\n"
+    "usage: roomba_nav_eval [--goals 20] [--seed 1] [--world FILE] [--pose X,Y[,THETA]]\n"
+    "                       [--tree FILE] [--json]\n"
     "                       [--csv FILE] [--png FILE] [--timeout 120]\n"
     "  --goals    random reachable goals, one after another (default 20)\n"
     "  --seed     seed of the goals and the planner (default 1)\n"
-    "  --world    furnished (the default), empty (the lab's room) or a world YAML\n"
+    "  --world    furnished (the default), empty (the lab's room), apartment (a map), or a\n"
+    "             world or map_server YAML\n"
+    "  --pose     where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
     "  --tree     navigation tree (default config/roomba_nav_tree.xml)\n"
     "  --json     print one JSON object: goals, reached_pct, bumps, mean_time_s,\n"
     "             mean_length_ratio, planning_ms_p50\n"
@@ -93,6 +96,7 @@ int main(int argc, char** argv) {
   using namespace roomba_rrt::tools;
   NavEvalOptions options;
   std::string world_file = ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
+  std::string pose;
   std::string tree_file = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
   std::string csv, png;
   bool json = false;
@@ -110,6 +114,8 @@ int main(int argc, char** argv) {
       options.timeout_s = static_cast<double>(integer(flag, value(), 1, 86400));
     } else if (flag == "--world") {
       world_file = roomba_rrt::tools::worldFile(value());
+    } else if (flag == "--pose") {
+      pose = value();
     } else if (flag == "--tree") {
       tree_file = value();
     } else if (flag == "--csv") {
@@ -126,7 +132,7 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    const roomba_rrt::world::World world = roomba_rrt::world::loadWorld(world_file);
+    const roomba_rrt::world::World world = roomba_rrt::tools::loadToolWorld(world_file, pose);
     const bool bar = isatty(STDERR_FILENO);
     const NavEvalReport report =
         evaluateNavigation(world, tree_file, options, [bar](int done, int total) {

@@ -4,6 +4,10 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -29,6 +33,30 @@ std::string worldFile(const std::string& value) {
   if (value == "furnished") return ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml";
   if (value == "apartment") return ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml";
   return value;
+}
+
+world::World loadToolWorld(const std::string& file, const std::string& pose) {
+  world::World world = world::readWorldFile(file);
+  if (!pose.empty()) {
+    std::vector<double> xyt;
+    std::size_t begin = 0;
+    while (begin <= pose.size()) {
+      const std::size_t comma = std::min(pose.find(',', begin), pose.size());
+      xyt.push_back(parseDoubleFlag("--pose", pose.substr(begin, comma - begin)));
+      begin = comma + 1;
+    }
+    if (xyt.size() < 2 || xyt.size() > 3)
+      bad("--pose", "expected X,Y or X,Y,THETA, got '" + pose + "'");
+    world.initial_pose = {xyt[0], xyt[1], xyt.size() == 3 ? xyt[2] : 0.0};
+  }
+  try {
+    world::validate(world);
+  } catch (const util::InvalidInput& invalid) {
+    if (invalid.field() != "initial_pose") throw invalid.in(file);
+    throw util::InvalidInput("initial_pose", invalid.problem() + " (pass --pose X,Y[,THETA])",
+                             file);
+  }
+  return world;
 }
 
 int parseIntFlag(const std::string& flag, const std::string& value) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "roomba_rrt/planning/planner_options.h"
+#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::tools {
 
@@ -18,6 +19,11 @@ std::string defaultScenarioFile();
 /// `furnished` (config/roomba_world_furnished.yaml), `apartment` (config/maps/apartment.yaml, a
 /// map), or a world file's path (unchanged).
 std::string worldFile(const std::string& value);
+
+/// The world of a tool's --world file with --pose "X,Y" or "X,Y,THETA" (m, rad; "" keeps the
+/// file's initial pose: a map's (0, 0)) as the robot's initial pose, validated. Throws
+/// util::InvalidInput naming the file and the field; a pose in a wall says to pass --pose.
+world::World loadToolWorld(const std::string& file, const std::string& pose);
 
 /// What the tools' common flags set.
 struct ToolArguments {

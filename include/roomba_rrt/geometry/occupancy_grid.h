@@ -61,6 +61,14 @@ double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reac
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,
                       bool unknown_is_free = false);
 
+/// Distance from the segment to the nearest blocked cell's square (0 when it crosses one), searched
+/// within `reach` of the segment: `reach` itself when no blocked square is nearer. Exact (the
+/// segment-rectangle distance of each square), cells outside the grid count as blocked. Cost: the
+/// cells of the segment's bounding box grown by reach — a plain check for tests and tools; the
+/// planner's fast one is ClearanceMap::sweepFree.
+double segmentDistanceToBlocked(const OccupancyGrid& grid, const Segment& segment, double reach,
+                                bool unknown_is_free = false);
+
 /// The blocked cells' squares that come within `radius` of `p`, for contact: the point of each
 /// square closest to p (the direction of the push-back and of the bumper switch). Appends to
 /// `out` (cleared first).

@@ -70,6 +70,11 @@ class NavBt {
 /// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.
 planning::PlannerOptions defaultNavPlannerOptions();
 
+/// defaultNavPlannerOptions() for planning in `world`: exactly those in a room (bounds' diagonal
+/// up to kRoomDiagonal); in a larger map steps of diagonal / 100 and 20 000 iterations per
+/// 100 m² (at most 200 000), so a 50 m floor plans about as often as a room does.
+planning::PlannerOptions navPlannerOptions(const planning::Problem& world);
+
 /// Leaf configuration with the planning library in-process on `world` (a planning::Problem whose
 /// start and goal are ignored): one InProcessPlanner in `mode` per ComputePath, and `world` as
 /// the known world (util::InvalidInput naming the field when the planner refuses it).
