@@ -53,9 +53,15 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/nav_action.test DEPENDENCIES nav_rostest)
   # Two named robots, each with its own navigation roomba_bt, one shared rrt_planner.
   add_rostest(test/navigation/nav_two_robots.test DEPENDENCIES nav_rostest)
+  # A map world: make_plan between rooms and a goal through a doorway, in the package's apartment
+  # and (make_plan only) in willow_full, a real building's floor, when ../shared/maps is there.
+  add_rostest(test/navigation/nav_map.test DEPENDENCIES nav_rostest)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
+    add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
+  endif()
   if(TARGET nav_rostest)
     target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(nav_rostest ${catkin_LIBRARIES})
+    target_link_libraries(nav_rostest roomba_geometry ${catkin_LIBRARIES})
     add_dependencies(nav_rostest roomba_bt roomba_sim rrt_planner
       ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()

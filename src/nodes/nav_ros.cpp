@@ -95,12 +95,17 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
 PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
                               std::uint32_t seed, double clearance,
                               const planning::PlannerOptions& options) {
+  // PlanPath reads exactly (0, 0) as "not given" (its zero-means-default rule), and a map's
+  // robot starts there: such a point is sent a nanometre away.
+  const auto given = [](const planning::Point2& p) {
+    return p.x == 0 && p.y == 0 ? planning::Point2{1e-9, 0} : p;
+  };
   PlanPath::Request request;
   request.scenario = "room";
-  request.start.x = start.x;
-  request.start.y = start.y;
-  request.goal.x = goal.x;
-  request.goal.y = goal.y;
+  request.start.x = given(start).x;
+  request.start.y = given(start).y;
+  request.goal.x = given(goal).x;
+  request.goal.y = given(goal).y;
   request.step = options.step;
   request.max_iterations = options.max_iterations;
   request.goal_tolerance = options.goal_tolerance;

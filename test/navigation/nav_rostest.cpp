@@ -15,10 +15,16 @@
 // own roomba_bt under its namespace (as `scripts/run --robots 2 nav` starts them), one shared
 // rrt_planner: a goal to each robot's /<name>/move_base at the same time, and each robot reaches
 // its own goal.
+//
+// NavMap (nav_map.test): a map world, roomba_sim publishing /map and rrt_planner planning on it:
+// ~make_plan between rooms (every edge checked against the map file here, not by the planner's
+// checker), a goal in a wall relaxed only by the request's tolerance, and a goal in another room
+// reached through the doorway without a bump.
 #include <actionlib/client/simple_action_client.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
 #include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/GetPlan.h>
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
@@ -32,6 +38,9 @@
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/geometry/occupancy_grid.h"
 
 namespace {
 
@@ -292,6 +301,83 @@ TEST(NavTwoRobots, each_robot_reaches_its_own_goal) {
     std::printf("%s: at (%.3f, %.3f), its goal (%.1f, %.1f)\n", tasks[i].name.c_str(), s.x, s.y,
                 tasks[i].x, tasks[i].y);
   }
+}
+
+/// A map world (nav_map.test): the map file (to check plans against, independently of the
+/// planner) and a goal in another room, from the test's private parameters.
+class NavMap : public Nav {
+ protected:
+  void SetUp() override {
+    Nav::SetUp();
+    ros::NodeHandle pnh("~");
+    ASSERT_TRUE(pnh.getParam("map_file", map_file_));
+    ASSERT_TRUE(pnh.getParam("goal_x", goal_x_));
+    ASSERT_TRUE(pnh.getParam("goal_y", goal_y_));
+    grid_ = roomba_rrt::geometry::loadMap(map_file_).grid;
+    ASSERT_TRUE(ros::service::waitForService("/rrt_planner/make_plan", ros::Duration(30)));
+  }
+  nav_msgs::GetPlan::Response makePlan(double x, double y, double tolerance,
+                                       const std::string& start_frame = "map") {
+    nav_msgs::GetPlan srv;
+    const Robot::Sample s = robot_.latest();
+    srv.request.start.header.frame_id = start_frame;
+    srv.request.start.pose.position.x = s.x;
+    srv.request.start.pose.position.y = s.y;
+    srv.request.goal = goalAt(x, y).target_pose;
+    srv.request.tolerance = static_cast<float>(tolerance);
+    EXPECT_TRUE(ros::service::call("/rrt_planner/make_plan", srv));
+    return srv.response;
+  }
+  /// Every edge of the plan keeps the Roomba's radius from every blocked cell's square.
+  void expectClear(const nav_msgs::Path& plan) {
+    ASSERT_FALSE(plan.poses.empty());
+    EXPECT_EQ(plan.header.frame_id, "map");
+    for (std::size_t i = 1; i < plan.poses.size(); ++i) {
+      const auto& a = plan.poses[i - 1].pose.position;
+      const auto& b = plan.poses[i].pose.position;
+      const roomba_rrt::geometry::Segment edge{{a.x, a.y}, {b.x, b.y}};
+      EXPECT_GT(roomba_rrt::geometry::segmentDistanceToBlocked(grid_, edge, 2 * kRoombaRadius),
+                kRoombaRadius)
+          << "edge " << i << " (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ")";
+    }
+  }
+
+  static constexpr double kRoombaRadius = 0.17;
+  std::string map_file_;
+  double goal_x_ = 0, goal_y_ = 0;
+  roomba_rrt::geometry::OccupancyGrid grid_;
+};
+
+TEST_F(NavMap, make_plan_between_rooms_keeps_the_radius_from_every_cell) {
+  const nav_msgs::GetPlan::Response answer = makePlan(goal_x_, goal_y_, 0.0);
+  expectClear(answer.plan);
+  ASSERT_FALSE(answer.plan.poses.empty());
+  const auto& last = answer.plan.poses.back().pose.position;
+  EXPECT_LT(std::hypot(last.x - goal_x_, last.y - goal_y_), 1e-3);
+  // The same from a start given in odom (the simulator's map -> odom, through tf2).
+  expectClear(makePlan(goal_x_, goal_y_, 0.0, "odom").plan);
+}
+
+TEST_F(NavMap, make_plan_relaxes_a_goal_in_a_wall_by_its_tolerance_and_only_then) {
+  // The first blocked cell right of the goal: its centre is in a wall.
+  int i = grid_.column(goal_x_);
+  const int j = grid_.row(goal_y_);
+  while (!grid_.blocked(i, j)) ++i;
+  const double wall_x = grid_.origin.x + (i + 0.5) * grid_.resolution;
+  EXPECT_TRUE(makePlan(wall_x, goal_y_, 0.0).plan.poses.empty());
+  const nav_msgs::Path relaxed = makePlan(wall_x, goal_y_, 1.0).plan;
+  expectClear(relaxed);
+  ASSERT_FALSE(relaxed.poses.empty());
+  const auto& last = relaxed.poses.back().pose.position;
+  EXPECT_LE(std::abs(last.x - wall_x), 1.0 + 1e-9);  // navfn's square of tolerance
+  EXPECT_LE(std::abs(last.y - goal_y_), 1.0 + 1e-9);
+}
+
+TEST_F(NavMap, a_goal_in_another_room_is_reached_through_the_doorway_without_a_bump) {
+  EXPECT_EQ(run(*client_, goalAt(goal_x_, goal_y_)), SimpleClientGoalState::SUCCEEDED)
+      << client_->getState().getText();
+  EXPECT_LT(distanceTo(robot_, goal_x_, goal_y_), kXyTolerance + 0.01);
+  EXPECT_FALSE(robot_.everPressed());
 }
 
 }  // namespace
