@@ -37,9 +37,13 @@ struct Job {
 
 void printUsage() {
   std::cerr << "usage: rrt_monte_carlo --scenario a|b|c|d|all [--runs 200] [--seed 42] [--json]\n"
+            << "       rrt_monte_carlo --map FILE --start X,Y --goal X,Y [--runs 200] ...\n"
             << tools::commonFlagsHelp()
             << "  --runs N                 runs per scenario (default 200)\n"
             << "  --threads N              worker threads (default: all cores)\n"
+            << "  --world FILE, --map FILE one query in a world file's room or on a map_server\n"
+            << "                           map (the Roomba's radius), from --start X,Y to\n"
+            << "                           --goal X,Y, instead of the lab's scenarios\n"
             << "  --json                   print a JSON array instead of a table\n";
 }
 
@@ -101,15 +105,22 @@ int main(int argc, char** argv) {
         return 0;
       }
     }
-    args = tools::parseToolArguments(argc, argv, {"--runs", "--threads"}, {"--json"});
+    args = tools::parseToolArguments(
+        argc, argv, {"--runs", "--threads", "--world", "--map", "--start", "--goal"}, {"--json"});
     if (args.tool.count("--runs")) runs = tools::parseIntFlag("--runs", args.tool["--runs"]);
     if (runs < 1) throw std::invalid_argument("--runs: must be >= 1");
     if (args.tool.count("--threads")) {
       threads = std::max(1, tools::parseIntFlag("--threads", args.tool["--threads"]));
     }
-    const auto scenarios = rp::loadScenarios(args.scenario_file);
-    for (const auto& [name, problem] : scenarios) {
-      if (args.scenario == "all" || args.scenario == name) jobs.push_back({name, problem, {}});
+    if (args.tool.count("--world") || args.tool.count("--map")) {
+      std::string name;
+      rp::Problem problem = tools::worldProblem(args.tool, &name);
+      jobs.push_back({name, std::move(problem), {}});
+    } else {
+      const auto scenarios = rp::loadScenarios(args.scenario_file);
+      for (const auto& [name, problem] : scenarios) {
+        if (args.scenario == "all" || args.scenario == name) jobs.push_back({name, problem, {}});
+      }
     }
     if (jobs.empty())
       throw std::invalid_argument("--scenario: unknown scenario '" + args.scenario + "'");

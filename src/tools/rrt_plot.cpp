@@ -90,6 +90,19 @@ void outlinedDisc(cairo_t* cr, double x, double y, double radius, const Rgb& fil
 
 void drawWorld(cairo_t* cr, const View& v, const rp::Problem& problem,
                const rp::PlanResult& result) {
+  // A map's occupied (and unknown) cells, through the tools' room canvas placed on this view.
+  if (problem.map) {
+    const roomba_rrt::geometry::OccupancyGrid& g = problem.map->grid();
+    tools::RoomCanvas canvas;
+    canvas.height = v.bounds.y_max - v.bounds.y_min;
+    canvas.scale = v.scale;
+    canvas.origin = {v.bounds.x_min, v.bounds.y_min};
+    canvas.margin = v.left;
+    canvas.header = v.top - v.left;
+    setColour(cr, kObstacleColor);
+    tools::fillCells(cr, canvas, g.origin, g.resolution, g.width, g.height,
+                     [&](int i, int j) { return g.blocked(i, j, problem.map->unknownIsFree()); });
+  }
   // Obstacles.
   for (const rp::Circle& c : problem.obstacles) {
     outlinedDisc(cr, v.x(c.center.x), v.y(c.center.y), c.radius * v.scale, kObstacleColor,
@@ -190,17 +203,6 @@ std::string title(const std::string& scenario, const rp::PlannerOptions& o,
          " nodes";
 }
 
-// "X,Y" of a flag (required with --world).
-rp::Point2 pointFlag(const std::string& flag, const std::string& value) {
-  std::istringstream in(value);
-  rp::Point2 p;
-  char comma = 0;
-  if (!(in >> p.x >> comma >> p.y) || comma != ',' || !in.eof()) {
-    throw std::invalid_argument(flag + ": expected X,Y (got '" + value + "')");
-  }
-  return p;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -219,22 +221,22 @@ int main(int argc, char** argv) {
                   << "  --width PX               image width (default 900)\n"
                   << "  --world FILE             plan in the simulator's room (scenario room:\n"
                      "                           its furniture and robot radius), from --start\n"
-                     "                           X,Y to --goal X,Y; empty and furnished name\n"
-                     "                           the package's two rooms\n";
+                     "                           X,Y to --goal X,Y; empty, furnished and\n"
+                     "                           apartment (a map) name the package's worlds\n"
+                     "  --map FILE               plan on a map_server map (its occupied and\n"
+                     "                           unknown cells; the Roomba's 0.17 m radius) from\n"
+                     "                           --start X,Y to --goal X,Y\n";
         return 0;
       }
     }
     args = tools::parseToolArguments(
-        argc, argv, {"-o", "--output", "--width", "--world", "--start", "--goal"}, {});
+        argc, argv, {"-o", "--output", "--width", "--world", "--map", "--start", "--goal"}, {});
     output = args.tool.count("-o") ? args.tool["-o"] : args.tool["--output"];
     if (output.empty()) throw std::invalid_argument("-o: an output file is required");
     if (args.tool.count("--width")) width = tools::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
-    if (args.tool.count("--world")) {
-      problem = rp::loadRoom(tools::worldFile(args.tool["--world"]));
-      problem.start = pointFlag("--start", args.tool["--start"]);
-      problem.goal = pointFlag("--goal", args.tool["--goal"]);
-      args.scenario = "room";
+    if (args.tool.count("--world") || args.tool.count("--map")) {
+      problem = tools::worldProblem(args.tool, &args.scenario);
     } else {
       const auto scenarios = rp::loadScenarios(args.scenario_file);
       const auto found = scenarios.find(args.scenario);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::tools {
@@ -57,6 +59,30 @@ world::World loadToolWorld(const std::string& file, const std::string& pose) {
                              file);
   }
   return world;
+}
+
+planning::Point2 parsePointFlag(const std::string& flag, const std::string& value) {
+  const std::size_t comma = value.find(',');
+  if (comma == std::string::npos) bad(flag, "expected X,Y, got '" + value + "'");
+  return {parseDoubleFlag(flag, value.substr(0, comma)),
+          parseDoubleFlag(flag, value.substr(comma + 1))};
+}
+
+planning::Problem worldProblem(std::map<std::string, std::string>& tool, std::string* name) {
+  const bool map = tool.count("--map") > 0;
+  if (map && tool.count("--world")) bad("--map", "give --world or --map, not both");
+  const std::string flag = map ? "--map" : "--world";
+  const std::string file = map ? tool["--map"] : worldFile(tool["--world"]);
+  if (map && !geometry::isMapYaml(file)) bad("--map", "'" + file + "' is not a map_server YAML");
+  for (const char* required : {"--start", "--goal"}) {
+    if (!tool.count(required)) bad(required, "required with " + flag + " (X,Y)");
+  }
+  // The world's own initial pose does not matter here (a map's (0, 0) may be in a wall).
+  planning::Problem problem = planning::roomProblem(world::readWorldFile(file));
+  problem.start = parsePointFlag("--start", tool["--start"]);
+  problem.goal = parsePointFlag("--goal", tool["--goal"]);
+  *name = problem.map ? "map" : "room";
+  return problem;
 }
 
 int parseIntFlag(const std::string& flag, const std::string& value) {

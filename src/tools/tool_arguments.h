@@ -8,6 +8,7 @@
 #include <string>
 
 #include "roomba_rrt/planning/planner_options.h"
+#include "roomba_rrt/planning/problem.h"
 #include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::tools {
@@ -24,6 +25,17 @@ std::string worldFile(const std::string& value);
 /// file's initial pose: a map's (0, 0)) as the robot's initial pose, validated. Throws
 /// util::InvalidInput naming the file and the field; a pose in a wall says to pass --pose.
 world::World loadToolWorld(const std::string& file, const std::string& pose);
+
+/// "X,Y" of a flag: throws std::invalid_argument naming the flag otherwise.
+planning::Point2 parsePointFlag(const std::string& flag, const std::string& value);
+
+/// The tools' flags of a planning problem in a world: --world FILE (a world file or a
+/// map_server YAML; empty, furnished and apartment name the package's) or --map FILE (a
+/// map_server YAML), from --start X,Y to --goal X,Y (both required): the room's walls and
+/// furniture or the map's occupied and unknown cells, and the world's robot (a map's: the
+/// Roomba's 0.17 m). `name` is set to "room" or "map". Throws std::invalid_argument or
+/// util::InvalidInput naming the flag or the file's field.
+planning::Problem worldProblem(std::map<std::string, std::string>& tool, std::string* name);
 
 /// What the tools' common flags set.
 struct ToolArguments {
