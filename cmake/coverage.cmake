@@ -1,0 +1,6 @@
+# Coverage planning: the ROS-free library that plans rows and transits sweeping all the floor a
+# robot can reach (boustrophedon decomposition of the disc's free space), its tests and benchmark.
+
+add_library(roomba_coverage_planning src/coverage/free_space.cpp)
+target_include_directories(roomba_coverage_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_link_libraries(roomba_coverage_planning PUBLIC roomba_world)
