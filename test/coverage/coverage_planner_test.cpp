@@ -352,6 +352,15 @@ TEST(CoveragePlanner, resume_skips_a_row_it_cannot_reach) {
   EXPECT_TRUE(planner.resume(plan, 0, {-1.0, -1.0}).legs.empty());
 }
 
+TEST(CoveragePlanner, start_inside_furniture_plans_nothing_and_reaches_nothing) {
+  World world = emptyRoom();
+  world.circles.push_back(Circle{{3.2, 2.4}, 0.5});
+  const CoveragePlan plan = CoveragePlanner(world).plan({3.2, 2.4});
+  EXPECT_TRUE(plan.legs.empty());
+  EXPECT_EQ(plan.reachable_area, 0);
+  EXPECT_EQ(plan.unreachable_area, plan.floor_area);
+}
+
 TEST(CoveragePlanner, refuses_a_swath_wider_than_the_robot) {
   CoverageOptions options;
   options.swath = 0.35;

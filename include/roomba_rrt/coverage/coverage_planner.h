@@ -11,12 +11,19 @@
 //      obstacle, or two parts of the free space join, or one splits) opens a new cell. Each
 //      cell is thus a stack of intervals, one per lattice row, without holes: it can be swept
 //      by horizontal back-and-forth rows without leaving it.
-//   3. Cover each cell with rows along x, evenly spaced by at most the swath, its lowest and
-//      highest lattice rows included, so the disc brushes the walls above and below the cell.
-//   4. Order the cells greedily: from where the robot is, the cell whose nearest first row (of
-//      four ways to sweep it: up or down, starting left or right) is closest, until none is left.
-//   5. Join consecutive rows with transits: the straight segment when it is free, else the
-//      shortest lattice path, string-pulled (FreeSpace::shortestPath).
+//   3. Cover each cell with rows along x, at most a swath apart, along its lowest and highest
+//      lattice rows too, so the disc brushes what bounds the cell below and above. The lattice
+//      stops up to a step short of the walls: the outer rows and every row's ends are moved out
+//      as far as they stay free (exactly).
+//   4. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
+//      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Rows
+//      that would sweep less than a small area no other row sweeps are dropped, the others
+//      shortened to the stretch that sweeps floor of their own.
+//   5. Order the cells: greedily, from where the robot is, the cell whose first row (of four
+//      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
+//      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
+//   6. Join consecutive rows with transits: the straight segment when it is free, else the
+//      shortest lattice path, shortcut (FreeSpace::shortestPath).
 // Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
 // where the free space's connectivity changes, not at every vertex), so there are few long rows
 // and few transits; it needs no polygonal model (the lattice handles circles, rectangles and
@@ -30,8 +37,10 @@
 //
 // Areas are measured on the lattice (each point stands for an h × h square of floor): the floor
 // (not inside a wall or obstacle), the reachable floor (within the robot's radius of a centre it
-// can reach from the start), the part the rows sweep, and the unreachable floor (floor minus
-// reachable floor: corners the disc cannot enter, gaps narrower than the disc, closed rooms).
+// can reach from the start, with its own radius: a gap the disc fits through only without the
+// clearance is reachable, but not planned), the part the rows sweep, and the unreachable floor
+// (floor minus reachable floor: corners the disc cannot enter, gaps narrower than the disc, closed
+// rooms).
 #pragma once
 
 #include <cstddef>
@@ -84,13 +93,15 @@ struct CoveragePlan {
 /// give the same plan.
 class CoveragePlanner {
  public:
-  /// util::InvalidInput naming the option when swath is not in (0, 2·robot radius] or
-  /// resolution, clearance are out of range.
+  /// util::InvalidInput naming the option when swath is not in [2·resolution, 2·robot radius],
+  /// resolution not in [0.001, robot radius] m (or too fine for the world: more than 2·10^7
+  /// lattice points) or clearance not in [0, robot radius] m.
   explicit CoveragePlanner(const world::World& world, const CoverageOptions& options = {});
 
   /// The plan from `start` (where the robot is). The first leg is the transit from `start` to the
-  /// first row. A start from which no free lattice point can be driven to gives no legs (and
-  /// no reachable area).
+  /// first row (none when the row starts there). A start the disc cannot be at (inside furniture)
+  /// gives no legs and no reachable floor; one from which the robot cannot drive to a point that
+  /// has the clearance gives the reachable floor but no legs.
   CoveragePlan plan(const Point2& start) const;
 
   /// What is left of `plan` for a robot that stopped at `at` during leg `leg` (after a bump and a
