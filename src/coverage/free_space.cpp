@@ -18,8 +18,9 @@ constexpr double kPointRadius = 1e-6;
 /// or within the clearance of furniture, is at most a few centimetres from the kFree lattice.
 constexpr double kConnectReach = 0.25;
 
-/// Safety factor on δ = h²/(4R), for the rounding of the lattice coordinates.
-constexpr double kLatticeSlackFactor = 1.05;
+/// Added to the lattice slack δ (m), far above world::kPenetrationTolerance and the rounding of
+/// coordinates, so that the slack's bound holds with strict inequalities.
+constexpr double kSlackTolerance = 1e-7;
 
 /// The t-interval of a + t (b − a), t ∈ [0, 1], whose x lies in [lo, hi]; empty when lo > hi.
 std::pair<double, double> clipToBand(double ax, double bx, double lo, double hi) {
@@ -60,7 +61,8 @@ FreeSpace::FreeSpace(const world::World& world, double clearance, double resolut
       origin_(world.origin) {
   width_ = std::max(1, static_cast<int>(std::ceil(world.width / h_ - 1e-9)));
   height_ = std::max(1, static_cast<int>(std::ceil(world.height / h_ - 1e-9)));
-  const double slack = kLatticeSlackFactor * h_ * h_ / (4 * radius_);
+  const double half_diagonal_sq = h_ * h_ / 2;
+  const double slack = half_diagonal_sq / radius_ + kSlackTolerance;  // δ (see the header)
   classes_.assign(size(), kBlocked);
   floor_.assign(size(), 0);
   for (int k = 0; k < size(); ++k) {

@@ -8,13 +8,14 @@
 //   kBlocked  the disc of the robot's radius r penetrates a wall or obstacle (world::penetrates);
 //   kTight    the robot fits, but not with the planning clearance c;
 //   kFree     the disc of radius R + δ is clear, with R = r + c the planning radius and
-//             δ = h²/(4R) (kLatticeSlack): the most by which the straight edge between two
-//             8-neighbours can dip towards a circle's centre or a corner it passes
-//             (sagitta of a chord of length h√2 on a circle of radius ≥ R). With it, EVERY
-//             edge between two kFree 8-neighbours keeps R from everything, exactly: obstacles are
-//             convex, their grown shapes' only curved parts are arcs of radius ≥ R, and along a
-//             flat part the distance is linear. So a lattice path of kFree points is a
-//             collision-free polyline, and the shortest paths below need no edge tests.
+//             δ = s²/R + 10⁻⁷ m, s = h/√2 half the diagonal of a lattice square. Along a chord
+//             of length 2s whose ends are at least D ≥ R from a point (a circle's centre, a
+//             rectangle's or map cell's corner), the distance to that point dips by at most
+//             s²/(D + √(D² − s²)) ≤ s²/R; along a flat side of an obstacle it is linear. So EVERY
+//             edge between two kFree 8-neighbours keeps R from everything, exactly (obstacles
+//             are convex and grown by R their only curved parts are such arcs): a lattice path
+//             of kFree points is a collision-free polyline, and the shortest paths below need
+//             no edge tests.
 //
 // segmentFree() is the exact test for any other segment: the segment against each circle and
 // rectangle grown by the radius (geometry::segmentMeets), the room's walls (a convex box: both ends
