@@ -25,8 +25,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The lab's empty 6.4 m × 4.8 m room with the 0.17 m Roomba.
-World emptyRoom() { return World{}; }
+/// The lab's empty 6.4 m × 4.8 m room with the 0.17 m Roomba (config/roomba_world.yaml).
+World emptyRoom() {
+  return roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
+}
 
 /// The floor a disc of radius r cannot reach in a concave 90° corner.
 double cornerLoss(double r) { return r * r * (1 - kPi / 4); }
