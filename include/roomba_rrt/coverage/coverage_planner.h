@@ -108,7 +108,9 @@ class CoveragePlanner {
   /// back-up): a transit from `at` to where the work resumes — the closest point of that row
   /// when `leg` is a row, else the next row's start — then the rest of that row and every later
   /// leg unchanged. Never starts over. A row that cannot be reached from `at` is skipped (the
-  /// next one is tried). The areas are those of `plan`.
+  /// next one is tried); no legs means nothing is left that can be reached from `at`. To give up
+  /// on the row the robot was in (it bumped there too often), resume from `leg + 1`. The areas
+  /// are those of `plan`.
   CoveragePlan resume(const CoveragePlan& plan, std::size_t leg, const Point2& at) const;
 
   const FreeSpace& freeSpace() const { return space_; }
