@@ -1,0 +1,44 @@
+// Time to plan coverage (Google Benchmark); the target is ≤ 10 ms for the furnished room.
+//   devel/lib/roomba_rrt/coverage_bench   (after scripts/bench or any Release build)
+// BM_CoveragePlanFurnished is what a behaviour pays when it starts cleaning: sampling the world
+// (CoveragePlanner's constructor) and planning from the robot's pose. The counters report what
+// the plan achieves: the rows' share of the reachable floor and the plan's length against the
+// ideal (the reachable floor swept once by the robot's diameter).
+#include <benchmark/benchmark.h>
+
+#include "roomba_rrt/coverage/coverage_planner.h"
+#include "roomba_rrt/world/world.h"
+
+namespace {
+
+using namespace roomba_rrt;
+
+void planAndReport(benchmark::State& state, const world::World& world) {
+  const coverage::Point2 start{world.initial_pose.x, world.initial_pose.y};
+  coverage::CoveragePlan plan;
+  for (auto _ : state) {
+    const coverage::CoveragePlanner planner(world);
+    plan = planner.plan(start);
+    benchmark::DoNotOptimize(plan.legs.data());
+  }
+  const double ideal = plan.reachable_area / (2 * world.robot_radius);
+  state.counters["coverage_pct"] = 100 * plan.swept_area / plan.reachable_area;
+  state.counters["plan_m"] = plan.length();
+  state.counters["ideal_m"] = ideal;
+  state.counters["legs"] = static_cast<double>(plan.legs.size());
+  state.counters["cells"] = plan.cells;
+}
+
+void BM_CoveragePlanFurnished(benchmark::State& state) {
+  planAndReport(state, world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
+}
+BENCHMARK(BM_CoveragePlanFurnished)->Unit(benchmark::kMillisecond);
+
+void BM_CoveragePlanApartmentMap(benchmark::State& state) {
+  planAndReport(state, world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml"));
+}
+BENCHMARK(BM_CoveragePlanApartmentMap)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

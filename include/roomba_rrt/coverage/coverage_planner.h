@@ -1,0 +1,129 @@
+// Coverage planning: a path that sweeps the robot's disc over all the floor it can reach, as a
+// list of straight cleaning rows joined by collision-free transits. ROS-free.
+//
+// Algorithm: boustrophedon cellular decomposition (Choset & Pignon, 1997) of the free space of
+// the disc's CENTRE, computed on a lattice (FreeSpace):
+//   1. Sample the configuration space on a lattice and keep the part connected to the start
+//      (the rest is floor the robot cannot reach: reported, never planned).
+//   2. Sweep a line up the lattice, row by row. In each lattice row the free points form
+//      intervals. An interval that overlaps exactly one interval of the row below, which
+//      overlaps only it, continues that interval's cell; any other (the sweep line meets an
+//      obstacle, or two parts of the free space join, or one splits) opens a new cell. Each
+//      cell is thus a stack of intervals, one per lattice row, without holes: it can be swept
+//      by horizontal back-and-forth rows without leaving it.
+//   3. Cover each cell with rows along x, at most a swath apart, along its lowest and highest
+//      lattice rows too, so the disc brushes what bounds the cell below and above. The lattice
+//      stops up to a step short of the walls: the outer rows and every row's ends are moved out
+//      as far as they stay free (exactly).
+//   4. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
+//      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Rows
+//      that would sweep less than a small area no other row sweeps are dropped, the others
+//      shortened to the stretch that sweeps floor of their own.
+//   5. Order the cells: greedily, from where the robot is, the cell whose first row (of four
+//      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
+//      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
+//   6. Join consecutive rows with transits: the straight segment when it is free, else the
+//      shortest lattice path, shortcut (FreeSpace::shortestPath).
+// Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
+// where the free space's connectivity changes, not at every vertex), so there are few long rows
+// and few transits; it needs no polygonal model (the lattice handles circles, rectangles and
+// occupancy maps alike); and it is the decomposition ROS users know (ipa_room_exploration).
+// Spanning-tree coverage (Spiral-STC) needs a grid of cells of the robot's diameter and loses
+// the floor of every partly blocked cell; a lattice-based BCD keeps the rows tight to the walls.
+//
+// Every row and transit segment keeps the planning radius (robot radius + clearance) from every
+// wall, piece of furniture and blocked map cell, exactly (FreeSpace: the lattice's free points
+// are joined by provably free edges; other segments pass FreeSpace::segmentFree).
+//
+// Areas are measured on the lattice (each point stands for an h × h square of floor): the floor
+// (not inside a wall or obstacle), the reachable floor (within the robot's radius of a centre it
+// can reach from the start, with its own radius: a gap the disc fits through only without the
+// clearance is reachable, but not planned), the part the rows sweep, and the unreachable floor
+// (floor minus reachable floor: corners the disc cannot enter, gaps narrower than the disc, closed
+// rooms).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "roomba_rrt/coverage/free_space.h"
+#include "roomba_rrt/world/world.h"
+
+namespace roomba_rrt::coverage {
+
+/// How the floor is covered.
+struct CoverageOptions {
+  /// Distance between neighbouring rows (m): at most the robot's diameter, so the swept strips
+  /// overlap (0.30 m for the 0.34 m Roomba: 4 cm overlap absorbs the follower's tracking error).
+  double swath = 0.30;
+  /// Edge of the lattice the free space is sampled on (m): the coverage grid's cell size. Finer
+  /// brings rows closer to curved furniture; cost grows with its inverse square.
+  double resolution = 0.025;
+  /// Kept between the robot's disc and everything, on top of its radius (m): rows run this far
+  /// from the walls, so a follower's small tracking errors do not bump.
+  double clearance = 0.01;
+};
+
+/// One leg of a plan.
+struct Leg {
+  enum class Kind { kRow, kTransit };
+  Kind kind = Kind::kRow;
+  /// A row: its two ends (the disc cleans along it). A transit: a polyline of two or more
+  /// points from the previous leg's end to the next row's start.
+  Polyline points;
+};
+
+/// A coverage path and what it achieves. Areas in m².
+struct CoveragePlan {
+  std::vector<Leg> legs;
+  double floor_area = 0;        ///< the room's floor: not inside a wall, obstacle or blocked cell
+  double reachable_area = 0;    ///< floor the robot's disc can reach from the start
+  double swept_area = 0;        ///< floor the disc sweeps along the rows
+  double unreachable_area = 0;  ///< floor_area − reachable_area
+  int cells = 0;                ///< cells of the decomposition
+
+  /// Length of all legs (m) and of the rows alone.
+  double length() const;
+  double rowLength() const;
+};
+
+/// Plans coverage in one world. Sampling the world is done once, in the constructor; plan() and
+/// resume() can then be called for any start. Deterministic: the same world, options and start
+/// give the same plan.
+class CoveragePlanner {
+ public:
+  /// util::InvalidInput naming the option when swath is not in [2·resolution, 2·robot radius],
+  /// resolution not in [0.001, robot radius] m (or too fine for the world: more than 2·10^7
+  /// lattice points) or clearance not in [0, robot radius] m.
+  explicit CoveragePlanner(const world::World& world, const CoverageOptions& options = {});
+
+  /// The plan from `start` (where the robot is). The first leg is the transit from `start` to the
+  /// first row (none when the row starts there). A start the disc cannot be at (inside furniture)
+  /// gives no legs and no reachable floor; one from which the robot cannot drive to a point that
+  /// has the clearance gives the reachable floor but no legs.
+  CoveragePlan plan(const Point2& start) const;
+
+  /// What is left of `plan` for a robot that stopped at `at` during leg `leg` (after a bump and a
+  /// back-up): a transit from `at` to where the work resumes — the closest point of that row
+  /// when `leg` is a row, else the next row's start — then the rest of that row and every later
+  /// leg unchanged. Never starts over. A row that cannot be reached from `at` is skipped (the
+  /// next one is tried); no legs means nothing is left that can be reached from `at`. To give up
+  /// on the row the robot was in (it bumped there too often), resume from `leg + 1`. The areas
+  /// are those of `plan`.
+  CoveragePlan resume(const CoveragePlan& plan, std::size_t leg, const Point2& at) const;
+
+  const FreeSpace& freeSpace() const { return space_; }
+  const CoverageOptions& options() const { return options_; }
+
+ private:
+  /// A collision-free polyline from `from` (where the robot stands) to `to` (a point of a row):
+  /// the straight segment when it is free, else via the nearest lattice points and the shortest
+  /// lattice path between them. nullopt when `to` cannot be reached.
+  std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
+
+  CoverageOptions options_;
+  FreeSpace space_;
+};
+
+}  // namespace roomba_rrt::coverage

@@ -1,0 +1,172 @@
+#include "roomba_rrt/coverage/free_space.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace roomba_rrt::coverage {
+namespace {
+
+/// The radius of the "disc" whose penetration means a point is inside a wall or obstacle (not
+/// floor): small enough to be a point, large enough to stay above world::kPenetrationTolerance.
+constexpr double kPointRadius = 1e-6;
+
+/// How far connect() looks for a lattice point to drive to (m): a robot backed off after a bump,
+/// or within the clearance of furniture, is at most a few centimetres from the kFree lattice.
+constexpr double kConnectReach = 0.25;
+
+/// Added to the lattice slack δ (m), far above world::kPenetrationTolerance and the rounding of
+/// coordinates, so that the slack's bound holds with strict inequalities.
+constexpr double kSlackTolerance = 1e-7;
+
+/// The t-interval of a + t (b − a), t ∈ [0, 1], whose x lies in [lo, hi]; empty when lo > hi.
+std::pair<double, double> clipToBand(double ax, double bx, double lo, double hi) {
+  const double dx = bx - ax;
+  if (dx == 0) return (ax >= lo && ax <= hi) ? std::pair{0.0, 1.0} : std::pair{1.0, 0.0};
+  double t0 = (lo - ax) / dx, t1 = (hi - ax) / dx;
+  if (t0 > t1) std::swap(t0, t1);
+  return {std::max(t0, 0.0), std::min(t1, 1.0)};
+}
+
+/// True when the segment comes within `margin` of a blocked cell's square. Visits, column by
+/// column, only the cells whose squares grown by the margin can meet the segment.
+bool segmentMeetsBlocked(const geometry::OccupancyGrid& grid, const geometry::Segment& s,
+                         double margin) {
+  const int i0 = grid.column(std::min(s.a.x, s.b.x) - margin) - 1;
+  const int i1 = grid.column(std::max(s.a.x, s.b.x) + margin) + 1;
+  for (int i = i0; i <= i1; ++i) {
+    const double left = grid.origin.x + i * grid.resolution;
+    const auto [t0, t1] = clipToBand(s.a.x, s.b.x, left - margin, left + grid.resolution + margin);
+    if (t0 > t1) continue;
+    const double ya = s.a.y + t0 * (s.b.y - s.a.y), yb = s.a.y + t1 * (s.b.y - s.a.y);
+    const int j0 = grid.row(std::min(ya, yb) - margin) - 1;
+    const int j1 = grid.row(std::max(ya, yb) + margin) + 1;
+    for (int j = j0; j <= j1; ++j) {
+      if (grid.blocked(i, j) && geometry::segmentMeets(s, grid.square(i, j), margin)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+FreeSpace::FreeSpace(const world::World& world, double clearance, double resolution)
+    : world_(world),
+      robot_radius_(world.robot_radius),
+      radius_(world.robot_radius + clearance),
+      h_(resolution),
+      origin_(world.origin) {
+  width_ = std::max(1, static_cast<int>(std::ceil(world.width / h_ - 1e-9)));
+  height_ = std::max(1, static_cast<int>(std::ceil(world.height / h_ - 1e-9)));
+  const double half_diagonal_sq = h_ * h_ / 2;
+  const double slack = half_diagonal_sq / radius_ + kSlackTolerance;  // δ (see the header)
+  classes_.assign(size(), kBlocked);
+  floor_.assign(size(), 0);
+  for (int k = 0; k < size(); ++k) {
+    const Point2 p = point(k);
+    if (!world::penetrates(world_, radius_ + slack, p.x, p.y)) {
+      classes_[k] = kFree;
+    } else if (!world::penetrates(world_, robot_radius_, p.x, p.y)) {
+      classes_[k] = kTight;
+    }
+    floor_[k] = classes_[k] != kBlocked || !world::penetrates(world_, kPointRadius, p.x, p.y);
+  }
+}
+
+bool FreeSpace::segmentFree(const Point2& a, const Point2& b, double radius) const {
+  const double r = radius - world::kPenetrationTolerance;
+  // The walls bound a convex box of centres: the segment is inside when both ends are.
+  const double x0 = world_.origin.x, y0 = world_.origin.y;
+  for (const Point2& p : {a, b}) {
+    if (p.x < x0 + r || p.y < y0 + r || p.x > x0 + world_.width - r ||
+        p.y > y0 + world_.height - r) {
+      return false;
+    }
+  }
+  const geometry::Segment s{a, b};
+  for (const world::Circle& c : world_.circles) {
+    if (geometry::segmentMeets(s, c, r)) return false;
+  }
+  for (const world::Rectangle& box : world_.rectangles) {
+    if (geometry::segmentMeets(s, box, r)) return false;
+  }
+  return !(world_.map && segmentMeetsBlocked(*world_.map, s, r));
+}
+
+std::optional<int> FreeSpace::connect(const Point2& p, Class least) const {
+  const int ci = static_cast<int>(std::floor((p.x - origin_.x) / h_));
+  const int cj = static_cast<int>(std::floor((p.y - origin_.y) / h_));
+  const int reach = static_cast<int>(std::ceil(kConnectReach / h_));
+  std::vector<std::pair<double, int>> candidates;  // (squared distance, index): nearest first
+  for (int j = cj - reach; j <= cj + reach; ++j) {
+    for (int i = ci - reach; i <= ci + reach; ++i) {
+      if (!inside(i, j) || at(index(i, j)) < least) continue;
+      const double d = geometry::squaredDistance(p, point(i, j));
+      if (d <= kConnectReach * kConnectReach) candidates.emplace_back(d, index(i, j));
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [d, k] : candidates) {
+    if (segmentFree(p, point(k), robot_radius_)) return k;
+  }
+  return std::nullopt;
+}
+
+std::optional<Polyline> FreeSpace::shortestPath(int from, int to) const {
+  if (at(from) != kFree || at(to) != kFree) return std::nullopt;
+  const double diagonal = h_ * std::sqrt(2.0);
+  const int ti = column(to), tj = row(to);
+  auto heuristic = [&](int k) {  // octile distance: exact on an empty 8-connected lattice
+    const int di = std::abs(column(k) - ti), dj = std::abs(row(k) - tj);
+    return h_ * std::max(di, dj) + (diagonal - h_) * std::min(di, dj);
+  };
+  std::vector<double> cost(size(), std::numeric_limits<double>::infinity());
+  std::vector<int> parent(size(), -1);
+  using Entry = std::pair<double, int>;  // (cost + heuristic, index): ties go to the lower index
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  cost[from] = 0;
+  open.emplace(heuristic(from), from);
+  while (!open.empty()) {
+    const auto [f, k] = open.top();
+    open.pop();
+    if (k == to) break;
+    if (f > cost[k] + heuristic(k)) continue;  // a stale entry: k was reached cheaper since
+    const int i = column(k), j = row(k);
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        if ((di == 0 && dj == 0) || !inside(i + di, j + dj)) continue;
+        const int n = index(i + di, j + dj);
+        if (at(n) != kFree) continue;
+        const double c = cost[k] + (di != 0 && dj != 0 ? diagonal : h_);
+        if (c < cost[n]) {
+          cost[n] = c;
+          parent[n] = k;
+          open.emplace(c + heuristic(n), n);
+        }
+      }
+    }
+  }
+  if (from != to && parent[to] < 0) return std::nullopt;
+  Polyline path;
+  for (int k = to; k != -1; k = parent[k]) path.push_back(point(k));
+  std::reverse(path.begin(), path.end());
+  return shortcut(path);
+}
+
+Polyline FreeSpace::shortcut(const Polyline& path) const {
+  if (path.empty()) return path;
+  Polyline out{path.front()};
+  std::size_t anchor = 0;
+  while (anchor + 1 < path.size()) {
+    std::size_t next = anchor + 1;
+    while (next + 1 < path.size() && segmentFree(path[anchor], path[next + 1])) ++next;
+    out.push_back(path[next]);
+    anchor = next;
+  }
+  return out;
+}
+
+}  // namespace roomba_rrt::coverage
