@@ -1,5 +1,7 @@
 #include "roomba_rrt/coverage/free_space.h"
 
+#include "roomba_rrt/geometry/occupancy_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -21,35 +23,6 @@ constexpr double kConnectReach = 0.25;
 /// Added to the lattice slack δ (m), far above world::kPenetrationTolerance and the rounding of
 /// coordinates, so that the slack's bound holds with strict inequalities.
 constexpr double kSlackTolerance = 1e-7;
-
-/// The t-interval of a + t (b − a), t ∈ [0, 1], whose x lies in [lo, hi]; empty when lo > hi.
-std::pair<double, double> clipToBand(double ax, double bx, double lo, double hi) {
-  const double dx = bx - ax;
-  if (dx == 0) return (ax >= lo && ax <= hi) ? std::pair{0.0, 1.0} : std::pair{1.0, 0.0};
-  double t0 = (lo - ax) / dx, t1 = (hi - ax) / dx;
-  if (t0 > t1) std::swap(t0, t1);
-  return {std::max(t0, 0.0), std::min(t1, 1.0)};
-}
-
-/// True when the segment comes within `margin` of a blocked cell's square. Visits, column by
-/// column, only the cells whose squares grown by the margin can meet the segment.
-bool segmentMeetsBlocked(const geometry::OccupancyGrid& grid, const geometry::Segment& s,
-                         double margin) {
-  const int i0 = grid.column(std::min(s.a.x, s.b.x) - margin) - 1;
-  const int i1 = grid.column(std::max(s.a.x, s.b.x) + margin) + 1;
-  for (int i = i0; i <= i1; ++i) {
-    const double left = grid.origin.x + i * grid.resolution;
-    const auto [t0, t1] = clipToBand(s.a.x, s.b.x, left - margin, left + grid.resolution + margin);
-    if (t0 > t1) continue;
-    const double ya = s.a.y + t0 * (s.b.y - s.a.y), yb = s.a.y + t1 * (s.b.y - s.a.y);
-    const int j0 = grid.row(std::min(ya, yb) - margin) - 1;
-    const int j1 = grid.row(std::max(ya, yb) + margin) + 1;
-    for (int j = j0; j <= j1; ++j) {
-      if (grid.blocked(i, j) && geometry::segmentMeets(s, grid.square(i, j), margin)) return true;
-    }
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -93,7 +66,7 @@ bool FreeSpace::segmentFree(const Point2& a, const Point2& b, double radius) con
   for (const world::Rectangle& box : world_.rectangles) {
     if (geometry::segmentMeets(s, box, r)) return false;
   }
-  return !(world_.map && segmentMeetsBlocked(*world_.map, s, r));
+  return !(world_.map && geometry::segmentMeetsBlocked(*world_.map, s, r));
 }
 
 std::optional<int> FreeSpace::connect(const Point2& p, Class least) const {

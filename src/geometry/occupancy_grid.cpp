@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace roomba_rrt::geometry {
 namespace {
@@ -17,6 +18,15 @@ void forCellsNear(const OccupancyGrid& grid, const Point2& p, double reach, Visi
   }
 }
 
+/// The t-interval of a + t (b − a), t ∈ [0, 1], whose x lies in [lo, hi]; empty when lo > hi.
+std::pair<double, double> clipToBand(double ax, double bx, double lo, double hi) {
+  const double dx = bx - ax;
+  if (dx == 0) return (ax >= lo && ax <= hi) ? std::pair{0.0, 1.0} : std::pair{1.0, 0.0};
+  double t0 = (lo - ax) / dx, t1 = (hi - ax) / dx;
+  if (t0 > t1) std::swap(t0, t1);
+  return {std::max(t0, 0.0), std::min(t1, 1.0)};
+}
+
 }  // namespace
 
 double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reach,
@@ -30,22 +40,26 @@ double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reac
   return std::sqrt(best_sq);
 }
 
-double segmentDistanceToBlocked(const OccupancyGrid& grid, const Segment& segment, double reach,
-                                bool unknown_is_free) {
+bool segmentMeetsBlocked(const OccupancyGrid& grid, const Segment& segment, double margin,
+                         bool unknown_is_free) {
   const Point2 &a = segment.a, &b = segment.b;
-  const int i0 = grid.column(std::min(a.x, b.x) - reach) - 1;
-  const int i1 = grid.column(std::max(a.x, b.x) + reach) + 1;
-  const int j0 = grid.row(std::min(a.y, b.y) - reach) - 1;
-  const int j1 = grid.row(std::max(a.y, b.y) + reach) + 1;
-  double best = reach;
-  for (int j = j0; j <= j1; ++j) {
-    for (int i = i0; i <= i1; ++i) {
-      if (grid.blocked(i, j, unknown_is_free)) {
-        best = std::min(best, distance(grid.square(i, j), segment));
+  const int i0 = grid.column(std::min(a.x, b.x) - margin) - 1;
+  const int i1 = grid.column(std::max(a.x, b.x) + margin) + 1;
+  for (int i = i0; i <= i1; ++i) {
+    // The part of the segment over column i's band grown by the margin, and its rows.
+    const double left = grid.origin.x + i * grid.resolution;
+    const auto [t0, t1] = clipToBand(a.x, b.x, left - margin, left + grid.resolution + margin);
+    if (t0 > t1) continue;
+    const double ya = a.y + t0 * (b.y - a.y), yb = a.y + t1 * (b.y - a.y);
+    const int j0 = grid.row(std::min(ya, yb) - margin) - 1;
+    const int j1 = grid.row(std::max(ya, yb) + margin) + 1;
+    for (int j = j0; j <= j1; ++j) {
+      if (grid.blocked(i, j, unknown_is_free) && segmentMeets(segment, grid.square(i, j), margin)) {
+        return true;
       }
     }
   }
-  return best;
+  return false;
 }
 
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,

@@ -43,7 +43,7 @@ bool sweepFree(const world::World& w, const Point2& a, const Point2& b, double m
   for (const geometry::Rectangle& r : w.rectangles) {
     if (geometry::distance(r, sweep) < margin) return false;
   }
-  return !w.map || geometry::segmentDistanceToBlocked(*w.map, sweep, margin) >= margin;
+  return !w.map || !geometry::segmentMeetsBlocked(*w.map, sweep, margin);
 }
 
 /// Records every finished plan's time.

@@ -148,6 +148,10 @@ TEST(ClearanceMap, sweep_queries_agree_with_brute_force) {
         ASSERT_EQ(map.sweepFree(a, b, disc), expected)
             << "trial " << trial << " radius " << radius << " from " << a.x << "," << a.y << " to "
             << b.x << "," << b.y;
+        // The plain check of tools and tests, away from the map's edge (beyond it: blocked).
+        if (insideBy(*grid, a, radius) && insideBy(*grid, b, radius)) {
+          ASSERT_EQ(segmentMeetsBlocked(*grid, s, radius, unknown_is_free), d <= radius);
+        }
         (expected ? free : blocked)++;
       }
     }

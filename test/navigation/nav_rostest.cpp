@@ -336,8 +336,7 @@ class NavMap : public Nav {
       const auto& a = plan.poses[i - 1].pose.position;
       const auto& b = plan.poses[i].pose.position;
       const roomba_rrt::geometry::Segment edge{{a.x, a.y}, {b.x, b.y}};
-      EXPECT_GT(roomba_rrt::geometry::segmentDistanceToBlocked(grid_, edge, 2 * kRoombaRadius),
-                kRoombaRadius)
+      EXPECT_FALSE(roomba_rrt::geometry::segmentMeetsBlocked(grid_, edge, kRoombaRadius))
           << "edge " << i << " (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ")";
     }
   }

@@ -112,7 +112,7 @@ TEST(MapPlanning, every_edge_of_1000_seeded_plans_keeps_the_radius_from_every_bl
       EXPECT_EQ(result.path.front().x, problem.start.x);
       for (std::size_t k = 1; k < result.path.size(); ++k) {
         const Segment edge{result.path[k - 1], result.path[k]};
-        ASSERT_GT(geometry::segmentDistanceToBlocked(*grid, edge, 2 * kRoomba), kRoomba)
+        ASSERT_FALSE(geometry::segmentMeetsBlocked(*grid, edge, kRoomba))
             << m.name << " plan " << n << " edge " << k << " (" << edge.a.x << ", " << edge.a.y
             << ") - (" << edge.b.x << ", " << edge.b.y << ")";
       }

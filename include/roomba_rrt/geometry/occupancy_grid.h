@@ -61,13 +61,13 @@ double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reac
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,
                       bool unknown_is_free = false);
 
-/// Distance from the segment to the nearest blocked cell's square (0 when it crosses one), searched
-/// within `reach` of the segment: `reach` itself when no blocked square is nearer. Exact (the
-/// segment-rectangle distance of each square), cells outside the grid count as blocked. Cost: the
-/// cells of the segment's bounding box grown by reach — a plain check for tests and tools; the
-/// planner's fast one is ClearanceMap::sweepFree.
-double segmentDistanceToBlocked(const OccupancyGrid& grid, const Segment& segment, double reach,
-                                bool unknown_is_free = false);
+/// Whether the segment comes within `margin` of a blocked cell's square (touching counts): exact
+/// (the segment-rectangle distance of each square), cells outside the grid count as blocked.
+/// Cost: the cells of the segment's column bands grown by the margin, column by column — a plain
+/// check for tools, the coverage planner and tests; the planner's fast one is
+/// ClearanceMap::sweepFree.
+bool segmentMeetsBlocked(const OccupancyGrid& grid, const Segment& segment, double margin,
+                         bool unknown_is_free = false);
 
 /// The blocked cells' squares that come within `radius` of `p`, for contact: the point of each
 /// square closest to p (the direction of the push-back and of the bumper switch). Appends to
