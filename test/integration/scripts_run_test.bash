@@ -49,4 +49,19 @@ check "... saying which nodes run already" grep -q "already runs /roomba_sim /ro
 check "... and the first one still runs" kill -0 "$first"
 kill -TERM "$first"
 wait "$first" 2>/dev/null || true
+for _ in $(seq 100); do rosnode list 2>/dev/null | grep -q roomba_fsm || break; sleep 0.1; done
+
+# Several robots in a map: placed on its free floor, each with its own state machine, and the
+# simulator serves the map.
+"$run" --world apartment --robots 2 fsm >"$work/map" 2>&1 &
+map_run=$!
+started+=("$map_run")
+for _ in $(seq 300); do grep -q "ready:" "$work/map" && break; sleep 0.1; done
+check "scripts/run --world apartment --robots 2 fsm is ready" grep -q "ready:" "$work/map"
+check "... with robot1 and robot2 driving" bash -c \
+  "rosnode list | grep -q /robot1/roomba_fsm && rosnode list | grep -q /robot2/roomba_fsm"
+check "... and the apartment on /map" bash -c \
+  "timeout 10 rostopic echo -n 1 /map/info/width | grep -q 210"
+kill -TERM "$map_run"
+wait "$map_run" 2>/dev/null || true
 [ "$failures" = 0 ]
