@@ -41,7 +41,7 @@ if(ROOMBA_RRT_SANITIZE)
   target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_world yaml-cpp)
 
   # The node's own request conversion (src/nodes/planner_ros.cpp) in front of the library.
-  roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp)
+  roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp src/nodes/make_plan_ros.cpp)
   target_include_directories(plan_path_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
   target_link_libraries(plan_path_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
   target_compile_definitions(plan_path_fuzzer PRIVATE
@@ -53,7 +53,8 @@ if(ROOMBA_RRT_SANITIZE)
     get_target_property(RR_PLANNING_TESTS planning_core_test SOURCES)
     add_executable(planning_core_test_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
     target_link_libraries(planning_core_test_sanitized rrt_planning_sanitized gtest gtest_main)
+    get_target_property(RR_PLANNING_TEST_DEFINITIONS planning_core_test COMPILE_DEFINITIONS)
     target_compile_definitions(planning_core_test_sanitized PRIVATE
-      ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+      ${RR_PLANNING_TEST_DEFINITIONS})
   endif()
 endif()

@@ -5,6 +5,9 @@
 // and the fuzzer mutates their numbers; any other input drives a FuzzedDataProvider. Iterations are
 // capped at kMaxIterations inside the harness (libFuzzer's -timeout catches a plan that ignores
 // them). Checks what a client relies on: a refusal names a field, an answer holds finite points.
+// Scenario "map" plans on the package's apartment map; with `make_plan: true` (or a drawn bool)
+// the same start and goal go through make_plan's conversion (resolveMakePlan, goal_tolerance as
+// its tolerance) instead, as ~make_plan does.
 #include <fuzzer/FuzzedDataProvider.h>
 #include <yaml-cpp/yaml.h>
 
@@ -17,7 +20,10 @@
 #include <map>
 #include <string>
 
+#include "../../src/nodes/make_plan_ros.h"
 #include "../../src/nodes/planner_ros.h"
+#include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/planning/scenarios.h"
 
 namespace {
 
@@ -63,7 +69,7 @@ std::string pickName(FuzzedDataProvider& in, std::initializer_list<const char*> 
 
 PlanPath::Request makeRequest(FuzzedDataProvider& in) {
   PlanPath::Request r;
-  r.scenario = pickName(in, {"", "", "a", "b", "c", "d"});
+  r.scenario = pickName(in, {"", "", "a", "b", "c", "d", "map"});
   r.start.x = pickDouble(in);
   r.start.y = pickDouble(in);
   r.goal.x = pickDouble(in);
@@ -98,14 +104,16 @@ void readPoint(const YAML::Node& node, geometry_msgs::Point& point) {
   if (node["y"]) point.y = node["y"].as<double>();
 }
 
-/// The request in YAML (the fields of PlanPath.srv); throws YAML::Exception on anything else.
-PlanPath::Request parseRequest(const std::string& text) {
+/// The request in YAML (the fields of PlanPath.srv, and `make_plan: true`); throws
+/// YAML::Exception on anything else.
+PlanPath::Request parseRequest(const std::string& text, bool* make_plan) {
   const YAML::Node root = YAML::Load(text);
   PlanPath::Request r;
   if (!root.IsMap()) return r;
   for (const auto& entry : root) {
     const std::string key = entry.first.as<std::string>();
     const YAML::Node& v = entry.second;
+    if (key == "make_plan") *make_plan = v.as<bool>();
     if (key == "scenario") r.scenario = v.as<std::string>();
     if (key == "start") readPoint(v, r.start);
     if (key == "goal") readPoint(v, r.goal);
@@ -145,25 +153,54 @@ void require(bool ok, const char* what) {
 
 }  // namespace
 
+/// make_plan's conversion of the request's start, goal and goal_tolerance (as its tolerance),
+/// then the plan and the nav_msgs/Path it answers.
+int makePlan(const PlanPath::Request& r, const planning::Problem& map,
+             const roomba_rrt::planner_node::NodeDefaults& defaults) {
+  namespace node = roomba_rrt::planner_node;
+  const node::MakePlanQuery query =
+      node::resolveMakePlan(map, {r.start.x, r.start.y, r.goal_bias}, {r.goal.x, r.goal.y, r.step},
+                            r.goal_tolerance, defaults);
+  if (!query.error.empty()) return 0;  // no plan, the reason logged
+  planning::PlannerOptions options = query.options;
+  options.max_iterations = std::min(options.max_iterations, kMaxIterations);
+  const planning::PlanResult result = planning::plan(query.problem, options);
+  const nav_msgs::Path plan = node::toPlanMessage(result.path, query.goal_yaw, "map", ros::Time(1));
+  for (const auto& pose : plan.poses) {
+    const auto& p = pose.pose.position;
+    const auto& q = pose.pose.orientation;
+    require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(q.z) && std::isfinite(q.w),
+            "a non-finite pose in make_plan's plan");
+  }
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::map<std::string, planning::Problem> scenarios =
       planning::loadScenarios(ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml");
+  static const planning::Problem map =
+      planning::mapProblem(std::make_shared<const roomba_rrt::geometry::OccupancyGrid>(
+          roomba_rrt::geometry::loadMap(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml").grid));
   PlanPath::Request request;
+  bool make_plan = false;
   if (size > 0 && data[0] == '{') {
     try {
-      request = parseRequest(std::string(reinterpret_cast<const char*>(data), size));
+      request = parseRequest(std::string(reinterpret_cast<const char*>(data), size), &make_plan);
     } catch (const YAML::Exception&) {
       return 0;
     }
   } else {
     FuzzedDataProvider in(data, size);
     request = makeRequest(in);
+    make_plan = in.ConsumeBool();
   }
   // The harness's cap: a plan of at most kMaxIterations (the node's cap is 5,000,000).
   if (request.max_iterations > kMaxIterations) request.max_iterations = kMaxIterations;
   roomba_rrt::planner_node::NodeDefaults defaults;
   defaults.max_iterations_cap = kMaxIterations;
-  const auto resolved = roomba_rrt::planner_node::resolveRequest(request, defaults, scenarios);
+  if (make_plan && request.scenario == "map") return makePlan(request, map, defaults);
+  const auto resolved =
+      roomba_rrt::planner_node::resolveRequest(request, defaults, scenarios, &map);
   if (!resolved.error.empty()) return 0;  // refused, naming the field
   const planning::PlanResult result = planning::plan(resolved.problem, resolved.options);
   PlanPath::Response response;
