@@ -41,6 +41,16 @@ if(OMPL_FOUND AND TARGET rrt_planning)
   add_dependencies(benchmarks ompl_comparison)
 endif()
 
+# --- loading and inflating a large map (issue 17): needs neither OMPL nor Google Benchmark ------
+if(TARGET roomba_geometry)
+  add_executable(map_load_bench EXCLUDE_FROM_ALL bench/map_load_bench.cpp)
+  target_include_directories(map_load_bench PRIVATE include)
+  target_link_libraries(map_load_bench PRIVATE roomba_geometry)
+  target_compile_definitions(map_load_bench PRIVATE
+    ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+  add_dependencies(benchmarks map_load_bench)
+endif()
+
 # --- the other parts' benchmarks (declared in their own fragments) ----------------------------
 # `benchmarks` builds them too, plus the tools scripts/bench runs (the nodes it measures).
 foreach(target IN ITEMS planning_bench behavior_bench sim_bench sim_rtf_probe plan_path_bench
