@@ -235,15 +235,6 @@ std::vector<RoomRow> runRoom(const Config& cfg) {
 // ---------------------------------------------------------------------------------------------
 // Output.
 
-std::string num(double v, int precision) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
-
 void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<GrowthRow>& growth,
                const std::vector<RoomRow>& room, const Config& cfg) {
   auto side = [](const Summary& s) {
@@ -334,12 +325,7 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
 }
 
 unsigned parseCount(const std::string& flag, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(text, &used);
-    if (used == text.size() && v >= 0) return static_cast<unsigned>(v);
-  } catch (const std::exception&) {
-  }
+  if (const auto v = nonNegativeInteger(text)) return static_cast<unsigned>(*v);
   usage(flag + ": expected a non-negative integer, got '" + text + "'");
 }
 

@@ -1,7 +1,7 @@
 // What the OMPL comparisons share (bench/ompl_comparison.cpp: the lab's scenarios and the
 // furnished room; bench/map_comparison.cpp: the shared maps): CPU-time measurement, OMPL set up
-// with the planning library's own CollisionChecker, our plan() timed the same way, and the
-// statistics.
+// with the planning library's own CollisionChecker, our plan() timed the same way, the
+// statistics and the output's numbers.
 #pragma once
 
 #include <ompl/base/Goal.h>
@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -122,6 +124,7 @@ struct Solve {
   bool solved = false;
   double length = 0;   // path length when solved
   double seconds = 0;  // CPU time of the solve call only
+  long work = 0;       // OMPL: motion checks made; ours: iterations (what is shared is the checker)
 };
 
 /// An OMPL planner (RRT by default; RRTConnect, RRTstar for the room rows) set up once for one
@@ -192,10 +195,13 @@ class OmplLab {
   Solve solveUntil(const MakeStop& make_stop) {
     planner_->clear();
     pdef_->clearSolutionPaths();
+    const ob::MotionValidatorPtr& motions = si_->getMotionValidator();
+    motions->resetMotionCounter();
     const double t0 = threadCpuSeconds();
     const ob::PlannerStatus status = planner_->solve(make_stop(t0));
     Solve out;
     out.seconds = cpuSecondsSince(t0);
+    out.work = static_cast<long>(motions->getValidMotionCount() + motions->getInvalidMotionCount());
     out.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
     if (out.solved) out.length = pdef_->getSolutionPath()->length();
     return out;
@@ -221,6 +227,7 @@ inline Solve solveOurs(const rp::Problem& problem, rp::PlannerOptions options, u
   Solve out;
   out.seconds = cpuSecondsSince(t0);
   out.solved = result.success;
+  out.work = result.iterations;
   if (out.solved) out.length = result.length;
   return out;
 }
@@ -261,6 +268,27 @@ inline Summary measure(int warmup, int runs, const std::function<Solve(int)>& so
   if (solved > 0) out.mean_length = length_sum / solved;
   out.median_seconds = median(seconds);
   return out;
+}
+
+/// A number for the JSON and Markdown output: fixed `precision` decimals, "null" if not finite.
+inline std::string num(double v, int precision) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+/// A command-line count: a non-negative integer and nothing else, or nothing.
+inline std::optional<long> nonNegativeInteger(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const long v = std::stol(text, &used);
+    if (used == text.size() && v >= 0) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
 }
 
 /// The most iterations of our planner (`options`, RRT* in practice) on `query` whose solve stays
