@@ -17,7 +17,10 @@
 // corner's arc (radius r, turning angle θ): with n vertices on it, at most 2nr·tan(θ/2n) − rθ,
 // below 1 mm for r = 0.17 m, θ = 90° and n = 8, and any vertex left off the optimum by the
 // bisection's tolerance. A narrow passage that the disc fits through but no free lattice point
-// lies in (a gap within a cell of 2r) is missed: the reference then goes around, longer.
+// lies in (a gap within a cell of 2r) is missed: the reference then goes around, longer. And A*
+// picks the way around an obstacle that is shortest on the lattice: where two ways differ by
+// less than the lattice's 2.8 %, the other may be shorter once pulled straight (seen: 0.3 % on
+// one of depot's pairs).
 #pragma once
 
 #include <cstdint>

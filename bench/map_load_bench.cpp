@@ -6,7 +6,7 @@
 //            cells and the marking of cells inside walls;
 // each timed in CPU time of this thread (median of --reps), in ns per cell, and the memory per
 // cell: what the planner keeps (the grid's byte + ClearanceMap::kBytesPerCell) and the process's
-// peak resident set (getrusage) above what it held before the first load.
+// peak resident set (getrusage) after the first load and inflation, above what it held before.
 //
 // The FNV-1a checksum of every cell's distance value is printed too (not timed): an optimised
 // transform must give the same number.
@@ -160,6 +160,7 @@ int run(const Config& cfg, const fs::path& folder) {
   const double rss_before = peakRssBytes();  // the small original and the writer's buffers
   std::vector<double> load_s, inflate_s;
   int width = 0, height = 0;
+  double peak = 0;
   std::uint64_t checksum = 1469598103934665603u;  // FNV-1a of every cell's distance (untimed)
   for (int rep = 0; rep < cfg.reps; ++rep) {
     double t0 = threadCpuSeconds();
@@ -170,6 +171,7 @@ int run(const Config& cfg, const fs::path& folder) {
     inflate_s.push_back(threadCpuSeconds() - t0);
     width = grid->width, height = grid->height;
     if (rep == 0) {
+      peak = peakRssBytes();  // one map, loaded and inflated: what a planner holds at most
       for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
           checksum = (checksum ^ static_cast<std::uint32_t>(map.squaredCellDistance(i, j))) *
@@ -181,7 +183,6 @@ int run(const Config& cfg, const fs::path& folder) {
   const double cells = static_cast<double>(width) * height;
   const double load_ns = median(load_s) * 1e9 / cells, inflate_ns = median(inflate_s) * 1e9 / cells;
   const double kept = 1 + geometry::ClearanceMap::kBytesPerCell;
-  const double peak = peakRssBytes();
   const double peak_per_cell = (peak - rss_before) / cells;
   if (cfg.json) {
     std::cout << "{\"map\": \"" << fs::path(cfg.map).stem().string()

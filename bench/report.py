@@ -234,7 +234,10 @@ def map_rows(t, results):
             ratio_text = "—" if s["mean_length_over_shortest"] is None else \
                 f"{s['mean_length_over_shortest']:.3f}"
             length = "—" if s["mean_length"] is None else f"{s['mean_length']:.1f} m"
-            return f"{ratio_text} × shortest ({length}) · {s['solved']}/{s['runs']} solved"
+            least = "" if s["min_length_over_shortest"] is None else \
+                f" (least {s['min_length_over_shortest']:.3f})"
+            return (f"{ratio_text} × shortest{least}, {length} · "
+                    f"{s['solved']}/{s['runs']} solved")
 
         t.add(f"map_{m['map']}_rrt_star",
               f"rrt_star vs OMPL RRTstar, map {where}: mean path length / the disc's shortest "
