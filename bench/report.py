@@ -12,6 +12,8 @@ RESULTS_DIR holds, per benchmark, NAME.json (its output) or NAME.error (one line
 figures). A missing or failed piece becomes "n/a" with the reason; the other rows still print.
 
     ompl.json      bench/ompl_comparison --json
+    maps.json      map_comparison --json (the shared maps: RRT family vs OMPL, RRT* vs shortest)
+    map_load.json  map_load_bench --json (willow_full × 8: load + inflate per cell, memory)
     behavior.json  behavior_bench --benchmark_out (Google Benchmark JSON)
     sim.json       sim_bench --benchmark_out (Google Benchmark JSON; one robot and 1/10/100 robots)
     planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
@@ -195,6 +197,74 @@ def room_rows(t, results):
                   "20 pairs)",
                   lo, lp, ratio, "≤ 1 (length)", ratio is not None and ratio <= 1,
                   cell(ours), cell(ompl))
+
+
+def map_rows(t, results):
+    """The shared maps (issue 17): RRT, RRT-Connect and RRT* against OMPL with the same exact
+    checker, 20 far-apart pairs per map (bench/map_comparison.cpp)."""
+    try:
+        data = load(results, "maps")
+    except Missing as e:
+        t.missing("maps", "RRT family vs OMPL on the shared maps", str(e), "≤ 0.1")
+        return
+    peers = {"rrt": "RRT", "rrt_connect": "RRTConnect"}
+    for m in data["maps"]:
+        where = (f"{m['map']} ({m['width']} × {m['height']} @ {m['resolution']:g} m), radius "
+                 f"{data['robot_radius']:g} m, segments, range {m['step']:g} m")
+        solves = f"{data['pairs']} pairs × {data['runs_per_pair']}"
+        for key, peer in peers.items():
+            ours, ompl = m[key]["ours"], m[key]["ompl"]
+            ratio = ours["median_us"] / ompl["median_us"] if ompl["median_us"] else None
+
+            def cell(s, work):
+                return (f"{fmt(s['median_us'])} µs · {s['solved']}/{s['runs']} solved · "
+                        f"{s['median_work']:.0f} {work}")
+
+            t.add(f"map_{m['map']}_{key}",
+                  f"{key} vs OMPL {peer}, map {where}: median CPU time per solve · solved · "
+                  f"median work ({solves}; one exact sweep costs {fmt(m['sweep_ns'])} ns)",
+                  ours["median_us"], ompl["median_us"], ratio, "≤ 0.1",
+                  ratio is not None and ratio <= 0.1, cell(ours, "iterations"),
+                  cell(ompl, "motion checks"))
+        ours, ompl = m["rrt_star"]["ours"], m["rrt_star"]["ompl"]
+        lo, lp = ours["mean_length_over_shortest"], ompl["mean_length_over_shortest"]
+        ratio = lo / lp if lo is not None and lp else None
+
+        def star(s):
+            ratio_text = "—" if s["mean_length_over_shortest"] is None else \
+                f"{s['mean_length_over_shortest']:.3f}"
+            length = "—" if s["mean_length"] is None else f"{s['mean_length']:.1f} m"
+            least = "" if s["min_length_over_shortest"] is None else \
+                f" (least {s['min_length_over_shortest']:.3f})"
+            return (f"{ratio_text} × shortest{least}, {length} · "
+                    f"{s['solved']}/{s['runs']} solved")
+
+        t.add(f"map_{m['map']}_rrt_star",
+              f"rrt_star vs OMPL RRTstar, map {where}: mean path length / the disc's shortest "
+              f"path ({m['shortest_mean_length']:.1f} m on average) after "
+              f"{data['budget_ms']:g} ms of CPU time ({data['pairs']} pairs)",
+              lo, lp, ratio, "≤ OMPL and ≤ 1.1× shortest",
+              lo is not None and lp is not None and lo <= lp and lo <= 1.1 and
+              ours["solved"] >= ompl["solved"], star(ours), star(ompl))
+
+
+def map_load_rows(t, results):
+    what = "Load + inflate a 20 M-cell map"
+    try:
+        d = load(results, "map_load")
+    except Missing as e:
+        t.missing("map_load", what, str(e), "≤ 15 ns/cell")
+        return
+    cells = d["width"] * d["height"]
+    t.add("map_load",
+          f"{d['map']} × {d['factor']} ({d['width']} × {d['height']} = {cells / 1e6:.1f} M cells): "
+          "geometry::loadMap (PGM + trinary) + ClearanceMap (exact distance transform), CPU ns "
+          f"per cell (median of {d['reps']}); memory per cell",
+          d["total_ns_per_cell"], target="≤ 15 ns/cell", met=d["total_ns_per_cell"] <= 15,
+          ours_text=f"{fmt(d['total_ns_per_cell'])} ns (load {fmt(d['load_ns_per_cell'])} + "
+                    f"inflate {fmt(d['inflate_ns_per_cell'])}; {fmt(d['total_ms'])} ms); "
+                    f"{d['kept_bytes_per_cell']:g} B/cell kept, peak RSS "
+                    f"{d['peak_rss_mb']:.0f} MB ({d['peak_bytes_per_cell']:.1f} B/cell)")
 
 
 def planning_rows(t, results):
@@ -454,8 +524,8 @@ def main(argv):
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, room_rows, planning_rows, behavior_rows, sim_rows, sim_robot_rows,
-                 rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
+    for rows in (rrt_rows, room_rows, map_rows, map_load_rows, planning_rows, behavior_rows,
+                 sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

@@ -3,7 +3,8 @@
 # Each benchmark is built only when what it needs is installed (Google Benchmark:
 # libbenchmark-dev; OMPL 1.5: libompl-dev, a benchmark-only dependency). planning_bench, sim_bench
 # and the probes plan_path_bench, sim_rtf_probe and nav_latency_probe are part of the default
-# build; behavior_bench and ompl_comparison are built only on request. This builds them all:
+# build; behavior_bench, ompl_comparison, map_comparison and map_load_bench are built only on
+# request. This builds them all:
 #   cmake --build <build-dir> --target benchmarks
 # The executables land in lib/roomba_rrt/ of the devel space, like the nodes.
 
@@ -32,13 +33,33 @@ endif()
 
 # --- RRT against OMPL's RRT -------------------------------------------------------------------
 if(OMPL_FOUND AND TARGET rrt_planning)
-  add_executable(ompl_comparison EXCLUDE_FROM_ALL bench/ompl_comparison.cpp)
-  target_include_directories(ompl_comparison PRIVATE include)
-  target_include_directories(ompl_comparison SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
-  target_link_libraries(ompl_comparison PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
+  # rr_ompl_benchmark(TARGET SOURCES...): a comparison with OMPL in one process (bench/ompl_lab.h).
+  function(rr_ompl_benchmark target)
+    add_executable(${target} EXCLUDE_FROM_ALL ${ARGN})
+    target_include_directories(${target} PRIVATE include)
+    target_include_directories(${target} SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
+    target_link_libraries(${target} PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
+    add_dependencies(benchmarks ${target})
+  endfunction()
+
+  # The lab's scenarios, the growth rows and the furnished room.
+  rr_ompl_benchmark(ompl_comparison bench/ompl_comparison.cpp)
   target_compile_definitions(ompl_comparison PRIVATE
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
-  add_dependencies(benchmarks ompl_comparison)
+  # The same on the shared real maps (issue 17), against the disc's shortest path.
+  rr_ompl_benchmark(map_comparison bench/map_comparison.cpp bench/disc_lattice.cpp)
+  target_compile_definitions(map_comparison PRIVATE
+    ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+endif()
+
+# --- loading and inflating a large map (issue 17): needs neither OMPL nor Google Benchmark ------
+if(TARGET roomba_geometry)
+  add_executable(map_load_bench EXCLUDE_FROM_ALL bench/map_load_bench.cpp)
+  target_include_directories(map_load_bench PRIVATE include)
+  target_link_libraries(map_load_bench PRIVATE roomba_geometry)
+  target_compile_definitions(map_load_bench PRIVATE
+    ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+  add_dependencies(benchmarks map_load_bench)
 endif()
 
 # --- the other parts' benchmarks (declared in their own fragments) ----------------------------

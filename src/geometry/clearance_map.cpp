@@ -21,18 +21,17 @@ ClearanceMap::ClearanceMap(std::shared_ptr<const OccupancyGrid> grid, bool unkno
       distance_(squaredDistanceTransform(*grid_, unknown_is_free)) {
   // A blocked cell whose four neighbours in the grid are blocked too is inside a wall: its square
   // is never the nearest blocked point to a free point (that lies on the walls' boundary, the
-  // square of a blocked cell beside a free one). Mark it −1 so the exact tests skip it.
+  // square of a blocked cell beside a free one). Mark it −1 so the exact tests skip it. Outside
+  // the grid counts as blocked; marked in place, as 0 and −1 both read as blocked (≤ 0).
   const int w = grid_->width, h = grid_->height;
-  auto blocked = [&](int i, int j) {
-    return i < 0 || j < 0 || i >= w || j >= h ||
-           distance_[static_cast<std::size_t>(j) * w + i] <= 0;
-  };
   for (int j = 0; j < h; ++j) {
+    std::int32_t* row = &distance_[static_cast<std::size_t>(j) * w];
+    const std::int32_t* below = j > 0 ? row - w : nullptr;
+    const std::int32_t* above = j + 1 < h ? row + w : nullptr;
     for (int i = 0; i < w; ++i) {
-      std::int32_t& d = distance_[static_cast<std::size_t>(j) * w + i];
-      if (d == 0 && blocked(i - 1, j) && blocked(i + 1, j) && blocked(i, j - 1) &&
-          blocked(i, j + 1)) {
-        d = -1;  // its neighbours read as blocked either way: 0 and −1 are both ≤ 0
+      if (row[i] == 0 && (i == 0 || row[i - 1] <= 0) && (i + 1 == w || row[i + 1] <= 0) &&
+          (!below || below[i] <= 0) && (!above || above[i] <= 0)) {
+        row[i] = -1;
       }
     }
   }

@@ -1,0 +1,376 @@
+// Our RRT family against OMPL 1.5's on real occupancy maps (issue 17, item 6), in the same
+// process with the same exact validity checker, and RRT* against the disc's shortest path.
+//
+//   map_comparison [--maps DIR]          every DIR/*.yaml (default: ../shared/maps), Markdown
+//   map_comparison --maps DIR --json     the same figures as JSON (read by scripts/bench)
+//   map_comparison --maps DIR --map willow_full --runs 3 --warmup 5 --budget-ms 100
+//
+// Per map: the robot is a disc of radius 0.17 m; occupied and unknown cells block. The pairs: 20
+// lattice points (cell centres where the disc is free) of the largest region the disc can reach
+// (bench/disc_lattice.h), drawn from std::mt19937 seeded 2024, each pair at least half the
+// region's extent (its bounding box's diagonal) apart. Both sides get the planning library's
+// CollisionChecker in `segments` mode: isFree for states, isSegmentFree (exact disc sweep against
+// every blocked cell's square) for motions, OMPL through a MotionValidator that calls it
+// (ompl_lab.h); the same range (20 cells), goal bias 0.05, goal tolerance 1e-3 and iteration cap.
+//   RRT, RRT-Connect   median CPU time per solve over pairs × runs, solved counts;
+//   RRT*               path length after 100 ms of CPU time (OMPL: a termination condition on
+//                      the thread's CPU clock; ours: the iterations that fit in 100 ms on that
+//                      pair, measured first), each divided by the pair's shortest path
+//                      (DiscLattice).
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "disc_lattice.h"
+#include "ompl_lab.h"
+#include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/planning/scenarios.h"
+
+namespace {
+
+using namespace roomba_rrt::bench;  // NOLINT: the measurement shared with ompl_comparison
+namespace geometry = roomba_rrt::geometry;
+
+constexpr double kRobotRadius = 0.17;  // m, the Roomba
+constexpr double kStepCells = 20;      // the range, in cells of the map
+constexpr double kGoalBias = 0.05;
+
+struct Config {
+  std::string maps_dir = ROOMBA_RRT_SHARED_MAPS;
+  std::string only_map;  // --map NAME: that map alone
+  int pairs = 20;
+  int runs = 3;    // solves per pair and side, RRT and RRT-Connect
+  int warmup = 5;  // untimed solves per side before them
+  int star_runs = 1;
+  double budget_s = 0.1;
+  unsigned iterations = 200000;  // both sides' cap for RRT and RRT-Connect
+  bool json = false;
+};
+
+/// One side of a row: solved count, median CPU time, mean length and mean length / shortest.
+struct Side {
+  int solved = 0, runs = 0;
+  double median_us = 0, mean_length = std::nan(""), mean_ratio = std::nan("");
+  double min_ratio = std::nan("");  // the shortest found / the reference: ≥ 1 if both are right
+  double median_work = 0;           // Solve::work: OMPL's motion checks, our iterations
+};
+
+struct Row {
+  Side ours, ompl;
+};
+
+struct MapRows {
+  std::string name;
+  int width = 0, height = 0;
+  double resolution = 0, step = 0;
+  int region_cells = 0;
+  double shortest_mean = 0, shortest_seconds = 0;
+  double sweep_ns = 0;  // CPU time of one isSegmentFree of a step from a free point
+  Row rrt, rrt_connect, rrt_star;
+  unsigned star_iterations = 0;  // our RRT*'s iterations in the budget, median over the pairs
+};
+
+/// Runs solve(i) for i < warmup untimed, then `runs` times; lengths are divided by the shortest
+/// path of pair i % shortest.size().
+Side measureSide(int warmup, int runs, const std::vector<double>& shortest,
+                 const std::function<Solve(int)>& solve) {
+  for (int i = 0; i < warmup; ++i) solve(i);
+  Side side;
+  side.runs = runs;
+  std::vector<double> seconds, work;
+  double length_sum = 0, ratio_sum = 0;
+  for (int i = 0; i < runs; ++i) {
+    const Solve s = solve(warmup + i);
+    seconds.push_back(s.seconds);
+    work.push_back(static_cast<double>(s.work));
+    if (!s.solved) continue;
+    ++side.solved;
+    length_sum += s.length;
+    const double ratio = s.length / shortest[(warmup + i) % shortest.size()];
+    ratio_sum += ratio;
+    side.min_ratio = side.solved == 1 ? ratio : std::min(side.min_ratio, ratio);
+  }
+  side.median_us = median(seconds) * 1e6;
+  side.median_work = median(work);
+  if (side.solved > 0) {
+    side.mean_length = length_sum / side.solved;
+    side.mean_ratio = ratio_sum / side.solved;
+  }
+  return side;
+}
+
+/// The pairs (far apart in the largest region) and each one's shortest path length.
+void drawPairs(const rp::Problem& base, const Config& cfg, std::vector<rp::Problem>& pairs,
+               std::vector<double>& shortest, MapRows& rows) {
+  const DiscLattice lattice(*base.map, kRobotRadius);
+  const std::vector<int> region = lattice.largestComponent();
+  rows.region_cells = static_cast<int>(region.size());
+  if (region.size() < 2) throw std::runtime_error("no region the disc can move in");
+  geometry::Point2 lo = lattice.centre(region.front()), hi = lo;
+  for (int cell : region) {
+    const geometry::Point2 c = lattice.centre(cell);
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+  }
+  const double far_apart = 0.5 * geometry::distance(lo, hi);
+  std::mt19937 random(2024);
+  std::uniform_int_distribution<std::size_t> pick(0, region.size() - 1);
+  const double t0 = threadCpuSeconds();
+  while (static_cast<int>(pairs.size()) < cfg.pairs) {
+    const int a = region[pick(random)], b = region[pick(random)];
+    if (geometry::distance(lattice.centre(a), lattice.centre(b)) < far_apart) continue;
+    rp::Problem p = base;
+    p.start = lattice.centre(a);
+    p.goal = lattice.centre(b);
+    pairs.push_back(p);
+    shortest.push_back(geometry::pathLength(lattice.shortestPath(a, b)));
+  }
+  rows.shortest_seconds = cpuSecondsSince(t0) / cfg.pairs;
+  for (double l : shortest) rows.shortest_mean += l / cfg.pairs;
+}
+
+/// The checker's cost as both sides pay it: CPU ns per isSegmentFree of one step, from a free
+/// point (drawn as our sampler draws) in a random direction, averaged over 100 000 segments.
+double sweepNanoseconds(const rp::Problem& base, double step) {
+  const rp::CollisionChecker checker = rp::collisionChecker(base, rp::CollisionCheck::kSegments);
+  const geometry::Rectangle e = base.map->grid().extent();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> x(e.min_x, e.max_x), y(e.min_y, e.max_y), turn(0, 6.283);
+  std::vector<std::pair<geometry::Point2, geometry::Point2>> segments;
+  while (segments.size() < 100000) {
+    const geometry::Point2 a{x(random), y(random)};
+    if (!checker.isFree(a)) continue;
+    const double angle = turn(random);
+    segments.push_back({a, {a.x + step * std::cos(angle), a.y + step * std::sin(angle)}});
+  }
+  int free = 0;
+  const double t0 = threadCpuSeconds();
+  for (const auto& [a, b] : segments) free += checker.isSegmentFree(a, b);
+  const double seconds = cpuSecondsSince(t0);
+  std::cerr << "  sweeps of " << step << " m: " << 100.0 * free / segments.size() << " % free\n";
+  return seconds * 1e9 / segments.size();
+}
+
+template <typename OmplPlanner>
+Row timeRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& shortest,
+            rp::PlannerOptions options, const Config& cfg) {
+  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl;
+  for (const rp::Problem& q : pairs)
+    ompl.push_back(std::make_unique<OmplLab<OmplPlanner>>(q, options));
+  const int n = static_cast<int>(pairs.size());
+  const int runs = n * cfg.runs;
+  Row row;
+  row.ompl = measureSide(cfg.warmup, runs, shortest,
+                         [&](int i) { return ompl[i % n]->solve(cfg.iterations); });
+  row.ours = measureSide(cfg.warmup, runs, shortest, [&](int i) {
+    return solveOurs(pairs[i % n], options, cfg.iterations, 42u + static_cast<std::uint32_t>(i));
+  });
+  return row;
+}
+
+/// RRT*: OMPL's runs for the CPU-time budget; ours for the iterations that fit in it on each pair
+/// (measured first: our planner stops by iterations). `median_iterations`: over the pairs.
+Row starRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& shortest,
+            const rp::PlannerOptions& options, const Config& cfg, unsigned& median_iterations) {
+  std::vector<std::unique_ptr<OmplLab<og::RRTstar>>> ompl;
+  std::vector<unsigned> iterations;
+  for (const rp::Problem& q : pairs) {
+    ompl.push_back(std::make_unique<OmplLab<og::RRTstar>>(q, options));
+    iterations.push_back(iterationsWithin(q, options, cfg.budget_s));
+  }
+  median_iterations =
+      static_cast<unsigned>(median(std::vector<double>(iterations.begin(), iterations.end())));
+  const int n = static_cast<int>(pairs.size());
+  const int runs = n * cfg.star_runs;
+  Row row;
+  row.ompl =
+      measureSide(0, runs, shortest, [&](int i) { return ompl[i % n]->solveFor(cfg.budget_s); });
+  row.ours = measureSide(0, runs, shortest, [&](int i) {
+    return solveOurs(pairs[i % n], options, iterations[i % n], 42u + static_cast<std::uint32_t>(i));
+  });
+  return row;
+}
+
+MapRows runMap(const std::string& yaml, const Config& cfg) {
+  MapRows rows;
+  rows.name = std::filesystem::path(yaml).stem().string();
+  auto grid = std::make_shared<const geometry::OccupancyGrid>(geometry::loadMap(yaml).grid);
+  rows.width = grid->width;
+  rows.height = grid->height;
+  rows.resolution = grid->resolution;
+  rp::Problem base = rp::mapProblem(grid);
+  base.robot_radius = kRobotRadius;
+
+  std::vector<rp::Problem> pairs;
+  std::vector<double> shortest;
+  drawPairs(base, cfg, pairs, shortest, rows);
+  std::cerr << rows.name << ": " << pairs.size() << " pairs, shortest paths " << rows.shortest_mean
+            << " m on average (" << rows.shortest_seconds * 1e3 << " ms each)\n";
+
+  rp::PlannerOptions options;
+  options.collision = rp::CollisionCheck::kSegments;
+  options.step = kStepCells * grid->resolution;
+  options.goal_bias = kGoalBias;
+  rows.step = options.step;
+  rows.sweep_ns = sweepNanoseconds(base, options.step);
+  options.algorithm = rp::Algorithm::kRrt;
+  rows.rrt = timeRow<og::RRT>(pairs, shortest, options, cfg);
+  options.algorithm = rp::Algorithm::kRrtConnect;
+  rows.rrt_connect = timeRow<og::RRTConnect>(pairs, shortest, options, cfg);
+  options.algorithm = rp::Algorithm::kRrtStar;
+  rows.rrt_star = starRow(pairs, shortest, options, cfg, rows.star_iterations);
+  std::cerr << rows.name << ": RRT " << rows.rrt.ours.median_us << " / " << rows.rrt.ompl.median_us
+            << " us, RRT-Connect " << rows.rrt_connect.ours.median_us << " / "
+            << rows.rrt_connect.ompl.median_us << " us, RRT* length / shortest "
+            << rows.rrt_star.ours.mean_ratio << " / " << rows.rrt_star.ompl.mean_ratio << "\n";
+  return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output.
+
+std::string sideJson(const Side& s) {
+  return "{\"solved\": " + std::to_string(s.solved) + ", \"runs\": " + std::to_string(s.runs) +
+         ", \"median_us\": " + num(s.median_us, 2) + ", \"mean_length\": " + num(s.mean_length, 4) +
+         ", \"mean_length_over_shortest\": " + num(s.mean_ratio, 4) +
+         ", \"min_length_over_shortest\": " + num(s.min_ratio, 4) +
+         ", \"median_work\": " + num(s.median_work, 0) + "}";
+}
+
+std::string rowJson(const Row& r) {
+  return "{\"ours\": " + sideJson(r.ours) + ", \"ompl\": " + sideJson(r.ompl) + "}";
+}
+
+void printJson(const std::vector<MapRows>& maps, const Config& cfg) {
+  std::cout << "{\"ompl_version\": \"" << kOmplVersion << "\", \"robot_radius\": " << kRobotRadius
+            << ", \"pairs\": " << cfg.pairs << ", \"runs_per_pair\": " << cfg.runs
+            << ", \"budget_ms\": " << num(cfg.budget_s * 1e3, 1) << ",\n \"maps\": [\n";
+  for (std::size_t k = 0; k < maps.size(); ++k) {
+    const MapRows& m = maps[k];
+    std::cout << "  {\"map\": \"" << m.name << "\", \"width\": " << m.width
+              << ", \"height\": " << m.height << ", \"resolution\": " << m.resolution
+              << ", \"step\": " << num(m.step, 3) << ", \"region_cells\": " << m.region_cells
+              << ", \"shortest_mean_length\": " << num(m.shortest_mean, 3)
+              << ", \"shortest_ms\": " << num(m.shortest_seconds * 1e3, 1)
+              << ", \"star_iterations\": " << m.star_iterations
+              << ", \"sweep_ns\": " << num(m.sweep_ns, 1) << ",\n   \"rrt\": " << rowJson(m.rrt)
+              << ",\n   \"rrt_connect\": " << rowJson(m.rrt_connect)
+              << ",\n   \"rrt_star\": " << rowJson(m.rrt_star) << "}"
+              << (k + 1 < maps.size() ? "," : "") << "\n";
+  }
+  std::cout << " ]}\n";
+}
+
+void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
+  std::cout << "Maps, disc radius " << kRobotRadius << " m, segments, range 20 cells, goal bias "
+            << kGoalBias << ", " << cfg.pairs << " pairs x " << cfg.runs
+            << " (RRT, RRT-Connect: median CPU time; RRT*: length / shortest after "
+            << cfg.budget_s * 1e3 << " ms)\n\n"
+            << "| map | shortest m | RRT µs ours | OMPL | ours/OMPL | solved | RRT-Connect µs ours "
+               "| OMPL | ours/OMPL | solved | RRT* L/shortest ours | OMPL | solved |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  auto solved = [](const Row& r) {
+    return std::to_string(r.ours.solved) + "/" + std::to_string(r.ompl.solved) + " of " +
+           std::to_string(r.ours.runs);
+  };
+  for (const MapRows& m : maps) {
+    std::cout << "| " << m.name << " | " << num(m.shortest_mean, 1) << " | "
+              << num(m.rrt.ours.median_us, 0) << " | " << num(m.rrt.ompl.median_us, 0) << " | "
+              << num(m.rrt.ours.median_us / m.rrt.ompl.median_us, 3) << " | " << solved(m.rrt)
+              << " | " << num(m.rrt_connect.ours.median_us, 0) << " | "
+              << num(m.rrt_connect.ompl.median_us, 0) << " | "
+              << num(m.rrt_connect.ours.median_us / m.rrt_connect.ompl.median_us, 3) << " | "
+              << solved(m.rrt_connect) << " | " << num(m.rrt_star.ours.mean_ratio, 3) << " | "
+              << num(m.rrt_star.ompl.mean_ratio, 3) << " | " << solved(m.rrt_star) << " |\n";
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line.
+
+[[noreturn]] void usage(const std::string& error) {
+  std::cerr << "map_comparison: " << error
+            << "\nusage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
+               " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n";
+  std::exit(2);
+}
+
+int parseCount(const std::string& flag, const std::string& text) {
+  const auto v = nonNegativeInteger(text);
+  if (v && *v <= 1000000000) return static_cast<int>(*v);
+  usage(flag + ": expected an integer from 0 to 10^9, got '" + text + "'");
+}
+
+Config parseArgs(int argc, char** argv) {
+  Config cfg;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(arg + ": missing value");
+      return argv[++i];
+    };
+    if (arg == "--json") {
+      cfg.json = true;
+    } else if (arg == "--maps") {
+      cfg.maps_dir = value();
+    } else if (arg == "--map") {
+      cfg.only_map = value();
+    } else if (arg == "--pairs") {
+      cfg.pairs = std::max(1, parseCount(arg, value()));
+    } else if (arg == "--runs") {
+      cfg.runs = std::max(1, parseCount(arg, value()));
+    } else if (arg == "--warmup") {
+      cfg.warmup = parseCount(arg, value());
+    } else if (arg == "--star-runs") {
+      cfg.star_runs = std::max(1, parseCount(arg, value()));
+    } else if (arg == "--budget-ms") {
+      cfg.budget_s = std::max(1, parseCount(arg, value())) * 1e-3;
+    } else if (arg == "--iterations") {
+      cfg.iterations = static_cast<unsigned>(std::max(1, parseCount(arg, value())));
+    } else {
+      usage("unknown argument '" + arg + "'");
+    }
+  }
+  return cfg;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Config cfg = parseArgs(argc, argv);
+  ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+  ompl::RNG::setSeed(42);  // before any planner exists: OMPL seeds every RNG from this one
+  g_clock_overhead = clockOverhead();
+
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(cfg.maps_dir)) {
+    const auto& p = entry.path();
+    if (p.extension() == ".yaml" && (cfg.only_map.empty() || p.stem() == cfg.only_map)) {
+      files.push_back(p.string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) usage("no map YAML in " + cfg.maps_dir);
+  std::vector<MapRows> maps;
+  for (const std::string& file : files) {
+    try {
+      maps.push_back(runMap(file, cfg));
+    } catch (const std::exception& e) {
+      std::cerr << "map_comparison: " << file << ": " << e.what() << "\n";
+      return 1;
+    }
+  }
+  cfg.json ? printJson(maps, cfg) : printMarkdown(maps, cfg);
+  return 0;
+}
