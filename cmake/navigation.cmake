@@ -5,6 +5,7 @@
 find_package(Threads REQUIRED)
 add_library(roomba_nav_core
   src/navigation/path_follower.cpp
+  src/navigation/guarded_follower.cpp
   src/navigation/motion_guard.cpp
   src/navigation/path_checker.cpp
   src/navigation/path_planner.cpp

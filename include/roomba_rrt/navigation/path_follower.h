@@ -53,6 +53,7 @@ enum class FollowStatus : std::uint8_t {
   kArrived,    ///< within xy_tolerance and yaw_tolerance, stopped: the command is zero
   kStrayed,    ///< farther than max_deviation from the path: the command is zero, replan
   kNoPath,     ///< start() was given fewer than one point
+  kBlocked,    ///< GuardedFollower only: held still by its guard, the command is zero, replan
 };
 
 const char* toString(FollowStatus status);

@@ -1,0 +1,48 @@
+#include "roomba_rrt/navigation/guarded_follower.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "roomba_rrt/sim/unicycle.h"
+
+namespace roomba_rrt::navigation {
+
+GuardedFollower::GuardedFollower(const FollowerParams& params,
+                                 std::shared_ptr<const MotionGuard> guard)
+    : follower_(params), guard_(std::move(guard)) {}
+
+FollowStatus GuardedFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd) {
+  robot::Velocity wanted;
+  const FollowStatus status = follower_.step(pose, wanted);
+  if (status != FollowStatus::kFollowing) {
+    cmd = wanted;
+    return status;
+  }
+  bool held = false;
+  cmd = guard_ ? guarded(pose, wanted, held) : wanted;
+  held_ticks_ = held ? held_ticks_ + 1 : 0;
+  if (held_ticks_ > kMaxHeldTicks) {
+    held_ticks_ = 0;
+    cmd = {};
+    return FollowStatus::kBlocked;
+  }
+  return FollowStatus::kFollowing;
+}
+
+robot::Velocity GuardedFollower::guarded(const robot::Pose2D& pose, const robot::Velocity& cmd,
+                                         bool& held) const {
+  const robot::Velocity safe = guard_->filter(pose, cmd);
+  if (cmd.v == 0 || safe.v != 0) return safe;
+  const FollowerParams& p = follower_.params();
+  const planning::Point2 near = follower_.pointAhead(kCloseLookahead);
+  const double error = sim::wrapAngle(std::atan2(near.y - pose.y, near.x - pose.x) - pose.theta);
+  const double w = std::clamp(p.heading_gain * error, -p.max_angular_speed, p.max_angular_speed);
+  if (std::fabs(error) > kAligned) return {0, w};  // turning to the path: not held
+  const robot::Velocity creep = guard_->filter(pose, {std::copysign(kCreepSpeed, cmd.v), w});
+  // Facing the path and still not let through: held, however small the turn that remains (it
+  // shrinks with the heading error and would never end).
+  held = creep.v == 0;
+  return creep;
+}
+
+}  // namespace roomba_rrt::navigation
