@@ -11,13 +11,14 @@ namespace roomba_rrt::navigation {
 
 /// PathFollower behind a MotionGuard:
 ///
-/// - the follower's command goes out when the guard lets it pass;
-/// - otherwise pure pursuit is cutting a corner too close to something: the robot aims at the
-///   path just ahead instead (following it closely, as the path keeps its clearance), turning in
-///   place first, then creeping if the guard agrees;
-/// - held by the guard for half a second (standing, or facing the path and refused even the
-///   creep), the path cannot be followed from here without touching something: step() returns
-///   kBlocked (zero command), so that the caller replans.
+/// - the follower's command goes out when the guard lets it pass (perhaps slowed down);
+/// - when the guard stops a forward command, pure pursuit is cutting a corner too close to
+///   something: the robot follows the path closely instead (it keeps its clearance), aiming at
+///   the path just ahead, turning in place first, then creeping if the guard agrees, until the
+///   follower's own forward command passes the guard unchanged;
+/// - held by the guard for half a second (facing the path and refused even the creep), the path
+///   cannot be followed from here without touching something: step() returns kBlocked (zero
+///   command), so that the caller replans.
 ///
 /// Without a guard (null) the follower's commands go out unchecked.
 class GuardedFollower {
@@ -30,8 +31,12 @@ class GuardedFollower {
   void start(const Path& path, const robot::Pose2D& goal, const robot::Velocity& current) {
     follower_.start(path, goal, current);
   }
-  /// Forgets how long the guard has held the robot (a new run of the leaf).
-  void resetHold() { held_ticks_ = 0; }
+  /// Forgets how long the guard has held the robot and ends close following (a new run of the
+  /// leaf).
+  void resetHold() {
+    held_ticks_ = 0;
+    close_ = false;
+  }
 
   /// One tick: PathFollower::step's status (and kBlocked), the command to send in `cmd`.
   FollowStatus step(const robot::Pose2D& pose, robot::Velocity& cmd);
@@ -40,9 +45,9 @@ class GuardedFollower {
   const FollowerParams& params() const { return follower_.params(); }
 
  private:
-  /// The command to send instead of `cmd`; `held`: the guard keeps the robot from advancing
-  /// (it stands, or only finishes facing a path it may not drive along).
-  robot::Velocity guarded(const robot::Pose2D& pose, const robot::Velocity& cmd, bool& held) const;
+  /// Close following's command; `held`: the guard keeps the robot from advancing (it stands, or
+  /// only finishes facing a path it may not drive along).
+  robot::Velocity closely(const robot::Pose2D& pose, bool& held) const;
 
   static constexpr double kCloseLookahead = 0.05;  ///< m: the path just ahead, when guarded
   static constexpr double kAligned = 0.15;         ///< rad: facing it closely enough to drive
@@ -52,6 +57,7 @@ class GuardedFollower {
   PathFollower follower_;
   std::shared_ptr<const MotionGuard> guard_;  ///< null: commands unchecked
   int held_ticks_ = 0;                        ///< consecutive ticks the guard stopped the robot
+  bool close_ = false;                        ///< following the path closely
 };
 
 }  // namespace roomba_rrt::navigation
