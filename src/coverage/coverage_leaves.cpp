@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -173,7 +172,8 @@ class FollowCoverage final : public bt::LeafNode {
     while (!progress.done()) {
       if (following_ != progress.leg) startLeg(progress);
       robot::Velocity cmd;
-      switch (follower_.step(*pose, cmd)) {
+      const FollowStatus status = follower_.step(*pose, cmd);
+      switch (status) {
         case FollowStatus::kFollowing:
           context_.cmd = cmd;
           context_.state = behavior::RoombaState::kMoveForward;  // cleaning on the move
@@ -185,15 +185,9 @@ class FollowCoverage final : public bt::LeafNode {
           ++progress.leg;
           continue;
         case FollowStatus::kBlocked:
-          error_.set("blocked: following the leg would touch a known obstacle");
+        case FollowStatus::kStrayed:
+          error_.set(follower_.failure(status, "leg"));
           return Status::kFailure;
-        case FollowStatus::kStrayed: {
-          std::ostringstream text;
-          text.precision(2);
-          text << "strayed " << follower_.deviation() << " m from the leg";
-          error_.set(text.str());
-          return Status::kFailure;
-        }
       }
     }
     return Status::kSuccess;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "roomba_rrt/sim/unicycle.h"
 
@@ -40,6 +41,25 @@ FollowStatus GuardedFollower::step(const robot::Pose2D& pose, robot::Velocity& c
     return FollowStatus::kBlocked;
   }
   return FollowStatus::kFollowing;
+}
+
+std::string GuardedFollower::failure(FollowStatus status, const std::string& what) const {
+  switch (status) {
+    case FollowStatus::kBlocked:
+      return "blocked: following the " + what + " would touch a known obstacle";
+    case FollowStatus::kStrayed: {
+      std::ostringstream text;
+      text.precision(2);
+      text << "strayed " << follower_.deviation() << " m from the " << what;
+      return text.str();
+    }
+    case FollowStatus::kNoPath:
+      return "the " + what + " is empty";
+    case FollowStatus::kFollowing:
+    case FollowStatus::kArrived:
+      break;
+  }
+  return "";
 }
 
 robot::Velocity GuardedFollower::closely(const robot::Pose2D& pose, bool& held) const {

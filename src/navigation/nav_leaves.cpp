@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "roomba_rrt/behavior/motion_leaf.h"
 #include "roomba_rrt/geometry/geometry.h"
@@ -198,27 +197,18 @@ class FollowPath final : public NavLeaf {
       follower_.start(*path, *goal, context_.previous_cmd);
     }
     robot::Velocity cmd;
-    switch (follower_.step(*pose, cmd)) {
+    const FollowStatus status = follower_.step(*pose, cmd);
+    switch (status) {
       case FollowStatus::kFollowing:
         context_.cmd = cmd;
         report();
         return Status::kRunning;
       case FollowStatus::kArrived:
         return Status::kSuccess;
-      case FollowStatus::kBlocked:
-        // This path cannot be followed from here without touching something: fail so that the
-        // recovery replans from where the robot is.
-        error_.set("blocked: following the path would touch a known obstacle");
-        return Status::kFailure;
-      case FollowStatus::kStrayed: {
-        std::ostringstream text;
-        text.precision(2);
-        text << "strayed " << follower_.deviation() << " m from the path";
-        error_.set(text.str());
-        return Status::kFailure;
-      }
+      case FollowStatus::kBlocked:  // the recovery replans from where the robot is
+      case FollowStatus::kStrayed:
       case FollowStatus::kNoPath:
-        error_.set("the path is empty");
+        error_.set(follower_.failure(status, "path"));
         return Status::kFailure;
     }
     return Status::kFailure;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "roomba_rrt/navigation/motion_guard.h"
 #include "roomba_rrt/navigation/path_follower.h"
@@ -40,6 +41,11 @@ class GuardedFollower {
 
   /// One tick: PathFollower::step's status (and kBlocked), the command to send in `cmd`.
   FollowStatus step(const robot::Pose2D& pose, robot::Velocity& cmd);
+
+  /// Why following `what` ("path", "leg") failed with `status` (kBlocked, kStrayed, kNoPath):
+  /// "blocked: following the path would touch a known obstacle", "strayed 0.42 m from the path",
+  /// "the path is empty".
+  std::string failure(FollowStatus status, const std::string& what) const;
 
   double deviation() const { return follower_.deviation(); }
   const FollowerParams& params() const { return follower_.params(); }
