@@ -184,7 +184,9 @@ TEST(CoveragePlanner, empty_room_is_one_cell_whose_rows_cover_95_percent_of_the_
     if (leg.kind == Leg::Kind::kRow) ys.push_back(leg.points.front().y);
   }
   std::sort(ys.begin(), ys.end());
-  for (std::size_t k = 1; k < ys.size(); ++k) EXPECT_LE(ys[k] - ys[k - 1], 0.30 + 1e-9);
+  for (std::size_t k = 1; k < ys.size(); ++k) {
+    EXPECT_LE(ys[k] - ys[k - 1], CoverageOptions().swath + 1e-9);
+  }
   EXPECT_LT(ys.front(), 0.17 + 0.05);
   EXPECT_GT(ys.back(), 4.8 - 0.17 - 0.05);
 }
