@@ -71,6 +71,13 @@ struct Driving {
   static constexpr double kTurnGain = 8.0;          ///< 1/s: turning in place towards a leg
   static constexpr double kEndTolerance = 0.01;     ///< m: rows end 1 cm from their end (the walls)
   static constexpr double kHeadingTolerance = 0.1;  ///< rad (legs end without a heading)
+  /// A transit this short (m; the step between two rows) is driven with the row after it as one
+  /// path, turning into the row without stopping; with a lookahead this short (m), so that the
+  /// corner cut at the row's start costs little floor. By 1.5x the ideal time: furnished room
+  /// 89.4 -> 92.3 %, dining room 84.8 -> 88.8 %, office 81.5 -> 86.7 %; by 2x about half a point
+  /// less (the cut corners).
+  static constexpr double kJoinedTransit = 0.5;
+  static constexpr double kJoinedLookahead = 0.15;
 
   static navigation::FollowerParams apply(navigation::FollowerParams p) {
     p.max_linear_accel = kAccel;
@@ -173,6 +180,11 @@ class FollowCoverage final : public bt::LeafNode {
       if (following_ != progress.leg) startLeg(progress);
       robot::Velocity cmd;
       const FollowStatus status = follower_.step(*pose, cmd);
+      if (joined_ > 0 && follower_.progress() >= joined_ && status == FollowStatus::kFollowing) {
+        ++progress.leg;  // past the joined transit: in its row, on the same path
+        following_ = progress.leg;
+        joined_ = 0;
+      }
       switch (status) {
         case FollowStatus::kFollowing:
           context_.cmd = cmd;
@@ -194,13 +206,23 @@ class FollowCoverage final : public bt::LeafNode {
   }
 
   /// Starts the follower on the current leg: rows at the cleaning speed, transits at
-  /// transit_speed. A leg ends where it ends, in any heading: the next one turns towards its
-  /// start and sets off once nearly facing it (the follower's rotate_threshold), quicker than
-  /// stopping on the next leg's heading first (dining room: 96.6 % instead of 88.8 % by 2× the
-  /// ideal time).
+  /// transit_speed; a short transit and the row after it as one path (Driving::kJoinedTransit),
+  /// the leg advancing to the row once the robot's progress passes the transit. A leg ends where
+  /// it ends, in any heading: the next one turns towards its start and sets off once nearly
+  /// facing it (the follower's rotate_threshold), quicker than stopping on the next leg's heading
+  /// first (dining room: 96.6 % instead of 88.8 % by 2× the ideal time).
   void startLeg(const CoverageProgress& progress) {
     const Leg& leg = progress.plan.legs[progress.leg];
     path_ = leg.points;
+    joined_ = 0;
+    const std::size_t next = progress.leg + 1;
+    if (leg.kind == Leg::Kind::kTransit && next < progress.plan.legs.size() &&
+        progress.plan.legs[next].kind == Leg::Kind::kRow &&
+        geometry::pathLength(leg.points) <= Driving::kJoinedTransit) {
+      joined_ = geometry::pathLength(leg.points);
+      const Polyline& row = progress.plan.legs[next].points;
+      path_.insert(path_.end(), row.begin() + 1, row.end());
+    }
     robot::Pose2D goal{0, 0, std::nan("")};  // no heading to end with
     if (!path_.empty()) {
       goal.x = path_.back().x;
@@ -208,7 +230,9 @@ class FollowCoverage final : public bt::LeafNode {
     }
     navigation::FollowerParams params = Driving::apply(
         context_.follower_version != 0 ? context_.follower : built_with_);  // retuned: NavBt
-    params.max_linear_speed = leg.kind == Leg::Kind::kRow ? rowSpeed() : transit_speed_;
+    params.max_linear_speed =
+        leg.kind == Leg::Kind::kRow || joined_ > 0 ? rowSpeed() : transit_speed_;
+    if (joined_ > 0) params.lookahead = Driving::kJoinedLookahead;
     follower_.setParams(params);
     follower_.start(path_, goal, context_.previous_cmd);
     following_ = progress.leg;
@@ -228,6 +252,7 @@ class FollowCoverage final : public bt::LeafNode {
   navigation::GuardedFollower follower_;
   Polyline path_;                  ///< the leg being followed (the follower points into it)
   std::size_t following_ = kNone;  ///< the leg the follower was started on
+  double joined_ = 0;              ///< > 0: the path is a transit this long and the row after it
 };
 
 class ResumeCoverage final : public bt::LeafNode {

@@ -190,6 +190,30 @@ TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_f
   EXPECT_EQ(progress().bumps, 0);
 }
 
+TEST_F(LeafTest, the_step_between_two_rows_is_driven_into_the_next_row_without_stopping) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  int into_rows_on_the_move = 0, steps_between_rows = 0;
+  const std::vector<Leg>& legs = progress().plan.legs;
+  for (std::size_t k = 1; k + 1 < legs.size(); ++k) {
+    steps_between_rows += legs[k].kind == Leg::Kind::kTransit &&
+                          legs[k - 1].kind == Leg::Kind::kRow &&
+                          geometry::pathLength(legs[k].points) < 0.5;
+  }
+  ASSERT_GT(steps_between_rows, 0);
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
+    const std::size_t leg = progress().leg;
+    const bool in_step = progress().plan.legs[leg].kind == Leg::Kind::kTransit;
+    status = step(follow);
+    into_rows_on_the_move += in_step && !progress().done() && progress().leg == leg + 1 &&
+                             progress().plan.legs[leg + 1].kind == Leg::Kind::kRow &&
+                             context.cmd.v > 0;
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_EQ(into_rows_on_the_move, steps_between_rows);
+}
+
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
   plan();
   bt::Tree follow = build(kFollow);

@@ -48,6 +48,7 @@ class GuardedFollower {
   std::string failure(FollowStatus status, const std::string& what) const;
 
   double deviation() const { return follower_.deviation(); }
+  double progress() const { return follower_.progress(); }
   const FollowerParams& params() const { return follower_.params(); }
 
  private:
