@@ -55,7 +55,7 @@ target_link_libraries(roomba_fsm roomba_behavior_node)
 # arguments, runs, statistics and pictures in src/tools/coverage_*).
 add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_arguments.cpp
   src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp)
-target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core)
+target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core roomba_coverage_core)
 
 if(CATKIN_ENABLE_TESTING)
   # The engines: the finite state machine, and the behavior tree's nodes, factory and files.

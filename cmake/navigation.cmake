@@ -5,6 +5,7 @@
 find_package(Threads REQUIRED)
 add_library(roomba_nav_core
   src/navigation/path_follower.cpp
+  src/navigation/guarded_follower.cpp
   src/navigation/motion_guard.cpp
   src/navigation/path_checker.cpp
   src/navigation/path_planner.cpp
@@ -20,7 +21,7 @@ target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning r
 # unit-tested without a master (nav_ros_test).
 add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/nodes/nav_behavior.cpp
   src/nodes/nav_ros.cpp src/nodes/planner_ros.cpp)
-target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core)
+target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core roomba_coverage_core)
 add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
 # Goal message to first non-zero /cmd_vel over ROS, in wall time (scripts/bench).

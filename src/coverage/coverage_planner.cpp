@@ -25,6 +25,11 @@ constexpr double kMinLegLength = 1e-6;
 /// reach a spot still has a direction for the follower to drive in.
 constexpr double kMinRowLength = 0.05;
 
+/// A cell that widens or narrows by this much (m) from one lattice row to the next gets a row
+/// beside the step (cellRows): the strip a swath wide beside a narrower step is not worth the
+/// U-turn and the transit to it.
+constexpr double kMinStepWidth = 1.0;
+
 /// A row that would sweep less floor than this (m²) that no other row sweeps is not planned: a
 /// spot of a few square centimetres is not worth a transit and two turns.
 constexpr double kMinRowGain = 0.01;
@@ -176,8 +181,13 @@ double farthestFree(double max, Free free) {
 
 /// The rows of `cell`, bottom to top: along its lowest and its highest slice (so the disc brushes
 /// what bounds the cell below and above) and evenly between them, as few as keep neighbours at
-/// most `swath` apart. The lattice stops up to a step short of the walls; each row's ends, and
-/// the lowest and highest row, are then moved out as far as they stay free (exactly).
+/// most `swath` apart. Where the cell widens going up by kMinStepWidth or more (it passes
+/// the top of something beside it: a sideboard against the wall) or narrows going up (it reaches
+/// the bottom of something), also along the wider slice next to the step: the even rows may pass
+/// it by up to a swath, and leave the floor beside the step's narrow side; pruneRows() keeps of
+/// such a row only the stretch that sweeps floor of its own. The lattice stops up to a step short
+/// of the walls; each row's ends, and the lowest and highest row, are then moved out as far as
+/// they stay free (exactly).
 std::vector<Row> cellRows(const FreeSpace& space, const Cell& cell, double swath) {
   const int rows = static_cast<int>(cell.size()) - 1;  // lattice rows spanned
   const double h = space.resolution();
@@ -188,12 +198,31 @@ std::vector<Row> cellRows(const FreeSpace& space, const Cell& cell, double swath
     return Row{{row.left.x, row.left.y + dy}, {row.right.x, row.right.y + dy}};
   };
   auto free = [&](const Row& row) { return space.segmentFree(row.left, row.right); };
-  std::vector<Row> out;
+  // The slices the rows run along: evenly spaced, and beside the steps.
+  std::vector<std::pair<long, bool>> along;  // (slice index, an outer row)
   for (int k = 0; k < count; ++k) {
-    const Slice& s = cell[count == 1 ? 0 : std::lround(double(k) * rows / (count - 1))];
+    along.emplace_back(count == 1 ? 0 : std::lround(double(k) * rows / (count - 1)),
+                       count > 1 && (k == 0 || k == count - 1));
+  }
+  const int step = std::max(1, static_cast<int>(std::lround(kMinStepWidth / h)));
+  for (int j = 1; j <= rows; ++j) {
+    const Slice& lower = cell[j - 1];
+    const Slice& upper = cell[j];
+    if (upper.a + step <= lower.a || upper.b >= lower.b + step) along.emplace_back(j, false);
+    if (lower.a + step <= upper.a || lower.b >= upper.b + step) along.emplace_back(j - 1, false);
+  }
+  std::sort(along.begin(), along.end(), [](const auto& x, const auto& y) {
+    return x.first != y.first ? x.first < y.first : x.second > y.second;  // outer first
+  });
+  along.erase(std::unique(along.begin(), along.end(),
+                          [](const auto& x, const auto& y) { return x.first == y.first; }),
+              along.end());
+  std::vector<Row> out;
+  for (const auto& [index, outer] : along) {
+    const Slice& s = cell[index];
     Row row{space.point(s.a, s.j), space.point(s.b, s.j)};
-    if (count > 1 && (k == 0 || k == count - 1)) {
-      const double out_dir = k == 0 ? -1 : 1;
+    if (outer) {
+      const double out_dir = index == 0 ? -1 : 1;
       row = shifted(row, out_dir * farthestFree(h, [&](double t) {
                            return free(shifted(row, out_dir * t));
                          }));
@@ -433,7 +462,11 @@ CoveragePlan CoveragePlanner::plan(const Point2& start) const {
   Point2 at = start;
   for (const Visit& visit : orderCells(rows, start)) {
     for (std::size_t k = 0; k < rows[visit.cell].size(); ++k) {
-      const auto [row_start, row_end] = rowOf(rows[visit.cell], visit.way, k);
+      auto [row_start, row_end] = rowOf(rows[visit.cell], visit.way, k);
+      // A row shortened to one side (pruneRows) may start nearer its other end.
+      if (geometry::distance(at, row_end) < geometry::distance(at, row_start)) {
+        std::swap(row_start, row_end);
+      }
       const std::optional<Polyline> path = transit(at, row_start);
       if (!path) continue;  // cannot happen in one connected region; never assumed
       if (geometry::pathLength(*path) > kMinLegLength) {

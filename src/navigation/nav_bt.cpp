@@ -34,8 +34,9 @@ bt::Tree buildTree(const NavLeafConfig& config, NavContext& context, const std::
 /// Factories that only describe leaves (their builders are never called): one with the lab's
 /// leaves, one with the lab's and the navigation leaves.
 struct LeafCatalogue {
-  LeafCatalogue() : context(0) {
+  explicit LeafCatalogue(const std::vector<LeafRegistrar>& more) : context(0) {
     config.planners = [] { return std::unique_ptr<PathPlanner>(); };  // never called
+    config.more_leaves = more;
     behavior::registerRoombaLeaves(lab, config.params, context);
     behavior::registerRoombaLeaves(all, config.params, context);
     registerNavLeaves(all, config, context);
@@ -47,10 +48,12 @@ struct LeafCatalogue {
 
 }  // namespace
 
-std::string treeNodesModel() { return LeafCatalogue().all.treeNodesModel(); }
+std::string treeNodesModel(const std::vector<LeafRegistrar>& more) {
+  return LeafCatalogue(more).all.treeNodesModel();
+}
 
-bool usesNavigationLeaves(const std::string& tree_file) {
-  const LeafCatalogue catalogue;
+bool usesNavigationLeaves(const std::string& tree_file, const std::vector<LeafRegistrar>& more) {
+  const LeafCatalogue catalogue(more);
   const std::vector<std::string> lab = catalogue.lab.registeredTypes();
   for (const std::string& type : catalogue.all.typesUsedIn(tree_file)) {
     if (!std::binary_search(lab.begin(), lab.end(), type)) {

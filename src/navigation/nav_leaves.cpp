@@ -1,12 +1,10 @@
 #include "roomba_rrt/navigation/nav_leaves.h"
 
-#include "roomba_rrt/navigation/motion_guard.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/navigation/guarded_follower.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "roomba_rrt/behavior/motion_leaf.h"
 #include "roomba_rrt/geometry/geometry.h"
@@ -167,17 +165,16 @@ class FollowPath final : public NavLeaf {
   FollowPath(const NodeSpec& spec, NavContext& context, const FollowerParams& params,
              std::shared_ptr<const MotionGuard> guard)
       : NavLeaf(spec.name, context),
-        guard_(std::move(guard)),
         path_(spec.input<Path>("path")),
         goal_(spec.input<robot::Pose2D>("goal")),
         pose_(spec.input<robot::Pose2D>("pose")),
         error_(spec.output<std::string>("error")),
-        follower_(params) {}
+        follower_(params, std::move(guard)) {}
 
  private:
   void onEnter() override {
     path_writes_ = 0;
-    held_ticks_ = 0;
+    follower_.resetHold();
   }
   Status onTick() override {
     const Path* path = path_.get();
@@ -200,61 +197,27 @@ class FollowPath final : public NavLeaf {
       follower_.start(*path, *goal, context_.previous_cmd);
     }
     robot::Velocity cmd;
-    switch (follower_.step(*pose, cmd)) {
+    const FollowStatus status = follower_.step(*pose, cmd);
+    switch (status) {
       case FollowStatus::kFollowing:
-        context_.cmd = guard_ ? guarded(*pose, cmd) : cmd;
-        // Held still by the guard for half a second: this path cannot be followed from here
-        // without touching something; fail so that the recovery replans from where the robot is.
-        held_ticks_ =
-            (cmd.v != 0 && context_.cmd.v == 0 && context_.cmd.w == 0) ? held_ticks_ + 1 : 0;
-        if (held_ticks_ > kMaxHeldTicks) {
-          held_ticks_ = 0;
-          context_.cmd = {};
-          error_.set("blocked: following the path would touch a known obstacle");
-          return Status::kFailure;
-        }
+        context_.cmd = cmd;
         report();
         return Status::kRunning;
       case FollowStatus::kArrived:
         return Status::kSuccess;
-      case FollowStatus::kStrayed: {
-        std::ostringstream text;
-        text.precision(2);
-        text << "strayed " << follower_.deviation() << " m from the path";
-        error_.set(text.str());
-        return Status::kFailure;
-      }
+      case FollowStatus::kBlocked:  // the recovery replans from where the robot is
+      case FollowStatus::kStrayed:
       case FollowStatus::kNoPath:
-        error_.set("the path is empty");
+        error_.set(follower_.failure(status, "path"));
         return Status::kFailure;
     }
     return Status::kFailure;
   }
 
-  /// The follower's command if the guard lets it pass. Otherwise pure pursuit is cutting a
-  /// corner too close to something: aim at the path just ahead instead (following it closely,
-  /// as it keeps its clearance), turning in place first, then driving slowly if the guard agrees.
-  robot::Velocity guarded(const robot::Pose2D& pose, const robot::Velocity& cmd) const {
-    const robot::Velocity safe = guard_->filter(pose, cmd);
-    if (cmd.v == 0 || safe.v != 0) return safe;
-    const FollowerParams& p = follower_.params();
-    const planning::Point2 near = follower_.pointAhead(kCloseLookahead);
-    const double error = sim::wrapAngle(std::atan2(near.y - pose.y, near.x - pose.x) - pose.theta);
-    const double w = std::clamp(p.heading_gain * error, -p.max_angular_speed, p.max_angular_speed);
-    if (std::fabs(error) > kAligned) return {0, w};
-    return guard_->filter(pose, {std::copysign(kCreepSpeed, cmd.v), w});
-  }
-
-  static constexpr double kCloseLookahead = 0.05;  ///< m: the path just ahead, when guarded
-  static constexpr double kAligned = 0.15;         ///< rad: facing it closely enough to drive
-  static constexpr double kCreepSpeed = 0.1;       ///< m/s: how fast, then
-  static constexpr int kMaxHeldTicks = 30;         ///< ticks held still by the guard before failing
-  std::shared_ptr<const MotionGuard> guard_;       ///< null: commands unchecked
-  int held_ticks_ = 0;  ///< consecutive ticks the guard stopped the robot
   InputPort<Path> path_;
   InputPort<robot::Pose2D> goal_, pose_;
   OutputPort<std::string> error_;
-  PathFollower follower_;
+  GuardedFollower follower_;
   std::uint64_t path_writes_ = 0;
   std::uint64_t follower_version_ = 0;  ///< the context's follower_version in force
 };
@@ -382,6 +345,12 @@ bt::TreeFactory::Builder make(Args... args) {
 
 }  // namespace
 
+std::shared_ptr<const MotionGuard> knownWorldGuard(const NavLeafConfig& config, double margin) {
+  if (!config.known_world) return nullptr;
+  return std::make_shared<MotionGuard>(config.known_world->world(), config.follower.rate,
+                                       config.follower.max_linear_accel, margin);
+}
+
 void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, NavContext& context) {
   validate(config.params);
   validate(config.follower);
@@ -394,11 +363,7 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
         return std::make_unique<ComputePath>(spec, *ctx, planners(), known_world);
       });
   const FollowerParams follower = config.follower;
-  std::shared_ptr<const MotionGuard> guard;
-  if (known_world) {
-    guard = std::make_shared<MotionGuard>(known_world->world(), config.follower.rate,
-                                          config.follower.max_linear_accel);
-  }
+  const std::shared_ptr<const MotionGuard> guard = knownWorldGuard(config);
   factory.registerNodeType<FollowPath>("FollowPath", [follower, ctx, guard](const NodeSpec& spec) {
     return std::make_unique<FollowPath>(spec, *ctx, follower, guard);
   });
@@ -441,6 +406,7 @@ void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, Na
   factory.registerNodeType<GoalAborted>("GoalAborted", [ctx](const NodeSpec& spec) {
     return std::make_unique<GoalAborted>(spec, *ctx);
   });
+  for (const LeafRegistrar& more : config.more_leaves) more(factory, config, context);
 }
 
 }  // namespace roomba_rrt::navigation

@@ -62,6 +62,8 @@ const char* toString(FollowStatus status) {
       return "strayed";
     case FollowStatus::kNoPath:
       return "no path";
+    case FollowStatus::kBlocked:
+      return "blocked";
   }
   return "?";
 }

@@ -16,6 +16,7 @@
 #include "nav_ros.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
+#include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/util/require.h"
@@ -326,6 +327,8 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
                                 "'");
   }
   s.config.params = params;
+  // The cleaning leaves plan in the same world (their planner is built only if the tree uses them).
+  s.config.more_leaves.push_back(coverage::coverageLeaves(s.world));
   navigation::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
   using L =

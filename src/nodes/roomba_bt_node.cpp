@@ -1,6 +1,7 @@
 // roomba_bt: a behavior tree read from ~tree_file (default config/roomba_tree.xml, the lab's
-// Roomba). A tree with navigation leaves (config/roomba_nav_tree.xml) runs as navigation behind
-// move_base's interface (nav_behavior.h); see behavior_node.h for the rest.
+// Roomba). A tree with navigation or cleaning leaves (config/roomba_nav_tree.xml,
+// config/roomba_coverage_tree.xml) runs as navigation behind move_base's interface
+// (nav_behavior.h); see behavior_node.h for the rest.
 //
 // `roomba_bt --tree-nodes-model` prints the BehaviorTree.CPP v4 <TreeNodesModel> of every node
 // our trees can use (for Groot2) and exits, without a master.
@@ -10,12 +11,14 @@
 #include "behavior_node.h"
 #include "nav_behavior.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
+#include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--tree-nodes-model") == 0) {
-      std::cout << roomba_rrt::navigation::treeNodesModel();
+      std::cout << roomba_rrt::navigation::treeNodesModel(
+          {roomba_rrt::coverage::coverageLeaves(nullptr)});
       return 0;
     }
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
@@ -36,7 +39,8 @@ int main(int argc, char** argv) {
         const std::string tree_file = node_params.get<std::string>(
             "tree_file", roomba_rrt::nodes::packageConfigFile("roomba_tree.xml"));
         ROS_INFO("roomba_bt: tree from %s", tree_file.c_str());
-        if (roomba_rrt::navigation::usesNavigationLeaves(tree_file)) {
+        if (roomba_rrt::navigation::usesNavigationLeaves(
+                tree_file, {roomba_rrt::coverage::coverageLeaves(nullptr)})) {
           return roomba_rrt::nav_node::makeNavBehavior(node_params, params, seed, tree_file,
                                                        output);
         }

@@ -10,18 +10,24 @@ namespace roomba_rrt::tools {
 namespace {
 
 const char* const kUsage =
-    "usage: roomba_coverage --behavior fsm|bt [--duration 600] [--seed 1] [--seeds N]\n"
+    "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
     "                       [--world FILE] [--pose X,Y[,THETA]] [--config FILE] [--tree FILE]\n"
     "                       [--csv traj.csv] [--png map.png]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
-    "  --behavior  fsm (state machine) or bt (behavior tree)\n"
+    "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
+    "                       [--plot coverage.png]\n"
+    "  --behavior  fsm (state machine), bt (behavior tree) or coverage (the cleaning tree,\n"
+    "              config/roomba_coverage_tree.xml: planned rows; reports the coverage of the\n"
+    "              reachable floor, the time to 90 / 95 / 99 % of it and the bumps)\n"
+    "  --compare   fsm, bt and coverage side by side, on the reachable floor; --plot draws them\n"
     "  --duration  simulated seconds per run (default 600)\n"
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
     "              world or map_server YAML\n"
     "  --pose      where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
-    "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree)\n"
+    "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree) or coverage\n"
+    "              (default: config/roomba_coverage_tree.xml)\n"
     "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
     "  --png       picture of a typical run: with --seeds N, the seed whose final coverage is\n"
     "              closest to the mean of the N (its title says which)\n"
@@ -30,7 +36,8 @@ const char* const kUsage =
     "              their union's. A list (1,2,4) runs each count. A world that names robots runs\n"
     "              those without --robots. --csv and --png need one unnamed robot.\n"
     "  --plot      union coverage over time, mean ± std over the seeds, one curve per count\n"
-    "              (needs --robots: with one robot, --png and --csv draw the run)\n"
+    "              (needs --robots: with one robot, --png and --csv draw the run); with\n"
+    "              coverage or --compare, the reachable floor's coverage, one curve per behaviour\n"
     "A progress bar counts the runs on stderr when it is a terminal.\n";
 
 std::vector<int> parseCounts(const std::string& flag, const std::string& text) {
@@ -67,6 +74,10 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
     if (flag == "-h" || flag == "--help") {
       o.help = true;
       return o;
+    }
+    if (flag == "--compare") {
+      o.compare = true;
+      continue;
     }
     if (i + 1 >= argc) throw std::invalid_argument(flag + " needs a value");
     const std::string value = argv[++i];
@@ -106,12 +117,21 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
       throw std::invalid_argument("unknown option " + flag);
     }
   }
-  if (o.behavior != "fsm" && o.behavior != "bt") {
-    throw std::invalid_argument("--behavior must be fsm or bt, got '" + o.behavior + "'");
+  if (o.compare) {
+    if (!o.behavior.empty() || !o.tree.empty() || !o.csv.empty() || !o.png.empty() ||
+        !o.robots.empty()) {
+      throw std::invalid_argument(
+          "--compare runs fsm, bt and coverage: no --behavior, --tree, --csv, --png or --robots");
+    }
+  } else if (o.behavior != "fsm" && o.behavior != "bt" && o.behavior != "coverage") {
+    throw std::invalid_argument("--behavior must be fsm, bt or coverage, got '" + o.behavior + "'");
   }
   if (!(o.duration > 0)) throw std::invalid_argument("--duration must be > 0");
-  if (!o.tree.empty() && o.behavior != "bt") {
-    throw std::invalid_argument("--tree needs --behavior bt");
+  if (!o.tree.empty() && o.behavior != "bt" && o.behavior != "coverage") {
+    throw std::invalid_argument("--tree needs --behavior bt or coverage");
+  }
+  if (o.behavior == "coverage" && !o.robots.empty()) {
+    throw std::invalid_argument("--robots runs the lab's behaviours: fsm or bt");
   }
   if (!o.robots.empty() && (!o.csv.empty() || !o.png.empty())) {
     throw std::invalid_argument("--csv and --png draw one robot; with --robots use --plot");

@@ -8,7 +8,7 @@
 namespace roomba_rrt::tools {
 
 struct CoverageOptions {
-  std::string behavior;  ///< "fsm" or "bt"
+  std::string behavior;  ///< "fsm", "bt" or "coverage" (the cleaning tree); "" with --compare
   double duration = 600;
   unsigned seed = 1;
   int seeds = 1;
@@ -20,15 +20,16 @@ struct CoverageOptions {
   std::string png;
   std::vector<int> robots;  ///< robot counts (--robots); empty: the world's robots
   std::string plot;
-  bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
+  bool compare = false;  ///< --compare: fsm, bt and coverage side by side
+  bool help = false;     ///< -h or --help: print coverageUsage() and nothing else
 };
 
 /// The usage message, one line per flag.
 const char* coverageUsage();
 
 /// Parses `--flag value` pairs. Throws std::invalid_argument naming the flag on an unknown flag, a
-/// missing or malformed value, or flags that do not go together (--tree without bt, --csv or
-/// --png with --robots).
+/// missing or malformed value, or flags that do not go together (--tree without bt or coverage,
+/// --csv or --png with --robots, --compare with --behavior, --tree, --csv, --png or --robots).
 CoverageOptions parseCoverageArguments(int argc, const char* const* argv);
 
 }  // namespace roomba_rrt::tools

@@ -115,7 +115,7 @@ struct PlotFrame {
 };
 
 /// Grid and axes: every 10 % and every 60 s (or a tenth of the duration).
-void drawPlotAxes(cairo_t* cr, const PlotFrame& f) {
+void drawPlotAxes(cairo_t* cr, const PlotFrame& f, const std::string& axis) {
   const double tick = f.duration >= 300 ? 60.0 : f.duration / 10;
   cairo_set_font_size(cr, 12);
   cairo_set_line_width(cr, 1);
@@ -144,7 +144,7 @@ void drawPlotAxes(cairo_t* cr, const PlotFrame& f) {
   cairo_save(cr);
   cairo_move_to(cr, 18, f.top + f.height / 2 + 80);
   cairo_rotate(cr, -kPi / 2);
-  cairo_show_text(cr, "floor cleaned by the robots together");
+  cairo_show_text(cr, axis.c_str());
   cairo_restore(cr);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 1.5);
@@ -185,8 +185,9 @@ double drawCountLegend(cairo_t* cr, const PlotFrame& f, const FleetStatistics& f
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_font_size(cr, 13);
   cairo_move_to(cr, x + 32, y + 4);
-  const std::string name =
-      std::to_string(fleet.robots) + (fleet.robots == 1 ? " robot" : " robots");
+  const std::string name = !fleet.label.empty() ? fleet.label
+                                                : std::to_string(fleet.robots) +
+                                                      (fleet.robots == 1 ? " robot" : " robots");
   cairo_show_text(cr, name.c_str());
   cairo_set_font_size(cr, 11);
   for (std::size_t c = 0; c < fleet.at.size(); ++c) {
@@ -222,12 +223,12 @@ void drawRunPicture(const std::string& file, const sim::Simulator& simulator, co
 }
 
 void drawCoveragePlot(const std::string& file, const std::vector<FleetStatistics>& fleets,
-                      double duration, const std::string& title) {
+                      double duration, const std::string& title, const std::string& axis) {
   const PlotFrame frame{duration};
   PngImage image(kPlotImageWidth, kPlotImageHeight);
   cairo_t* cr = image.cr();
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  drawPlotAxes(cr, frame);
+  drawPlotAxes(cr, frame, axis);
   double legend_y = frame.top + 10;
   for (std::size_t f = 0; f < fleets.size(); ++f) {
     drawCurve(cr, frame, bandOf(fleets[f].curves), colourOfCount(f));

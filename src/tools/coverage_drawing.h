@@ -16,9 +16,11 @@ namespace roomba_rrt::tools {
 void drawRunPicture(const std::string& file, const sim::Simulator& simulator, const Run& run,
                     const std::string& title);
 
-/// Union coverage over time, one curve per robot count: the mean over the seeds, a band of ± one
-/// standard deviation, and the checkpoints' values in the legend.
+/// Union coverage over time (the vertical `axis`), one curve per robot count (or labelled one): the
+/// mean over the seeds, a band of ± one standard deviation, and the checkpoints' values in the
+/// legend.
 void drawCoveragePlot(const std::string& file, const std::vector<FleetStatistics>& fleets,
-                      double duration, const std::string& title);
+                      double duration, const std::string& title,
+                      const std::string& axis = "floor cleaned by the robots together");
 
 }  // namespace roomba_rrt::tools

@@ -1,12 +1,68 @@
 #include "coverage_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
+#include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/planning/scenarios.h"
 
 namespace roomba_rrt::tools {
+namespace {
+
+/// What drives the robot: the lab's FSM or BT (bumper in), or the cleaning tree (bumper and pose
+/// in).
+class Driver {
+ public:
+  Driver(const CoverageOptions& o, const behavior::RoombaParams& params, unsigned seed,
+         const Cleaning* cleaning) {
+    if (o.behavior != "coverage") {
+      lab_ = makeBehavior(o, params, seed);
+      return;
+    }
+    if (!cleaning) throw std::logic_error("--behavior coverage needs the cleaning set up");
+    tree_ = std::make_unique<navigation::NavBt>(
+        cleaning->config, seed,
+        o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
+  }
+  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
+    return lab_ ? lab_->tick(bumper) : tree_->tick(bumper, pose);
+  }
+  const std::string& stateName() const { return lab_ ? lab_->stateName() : tree_->stateName(); }
+  behavior::RoombaState state() const { return lab_ ? lab_->state() : tree_->state(); }
+
+ private:
+  std::unique_ptr<behavior::RoombaBehavior> lab_;
+  std::unique_ptr<navigation::NavBt> tree_;
+};
+
+/// Fraction of the reachable floor the robot has swept.
+double reachableCoverage(const sim::Simulator& simulator, const Cleaning& cleaning) {
+  const sim::CoverageGrid& grid = simulator.coverageGrid();
+  const double swept =
+      static_cast<double>(grid.sweptFreeCells()) * grid.cellSize() * grid.cellSize();
+  return cleaning.reachable_area > 0 ? std::min(1.0, swept / cleaning.reachable_area) : 0.0;
+}
+
+}  // namespace
+
+Cleaning::Cleaning(const world::World& world, const behavior::RoombaParams& params) {
+  coverage::CoverageOptions options;
+  options.resolution = world.coverage_cell_size;
+  planner = std::make_shared<const coverage::CoveragePlanner>(world, options);
+  const coverage::CoveragePlan plan = planner->plan({world.initial_pose.x, world.initial_pose.y});
+  reachable_area = plan.reachable_area;
+  floor_area = plan.floor_area;
+  ideal_time = reachable_area / (2 * world.robot_radius * params.forward_speed);
+  config = navigation::inProcessNavConfig(planning::roomProblem(world));
+  config.params = params;
+  config.follower.rate = params.rate;
+  config.more_leaves.push_back(coverage::coverageLeaves(planner));
+}
 
 bool finalIsCheckpoint(double duration, double step) {
   for (double t : kCheckpoints) {
@@ -24,35 +80,57 @@ std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageOptions& o,
 }
 
 Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, unsigned seed,
-             std::ofstream* csv, bool keep_path, sim::Simulator& simulator) {
+             std::ofstream* csv, bool keep_path, sim::Simulator& simulator,
+             const Cleaning* cleaning) {
   simulator.reset();
   const double step = simulator.world().step;
-  std::unique_ptr<behavior::RoombaBehavior> behavior = makeBehavior(o, params, seed);
+  Driver behavior(o, params, seed, cleaning);
   const long steps = std::lround(o.duration / step);
   Run run;
-  std::size_t next_checkpoint = 0;
+  std::size_t next_checkpoint = 0, next_ideal = 0;
+  const long per_point = std::max(1L, std::lround(kCurveInterval / step));
+  if (cleaning) {
+    run.time_to.assign(std::size(kTargets), std::nan(""));
+    run.curve.push_back(reachableCoverage(simulator, *cleaning));
+  }
+  bool was_pressed = false;
   double theta = simulator.pose().theta, previous_wrapped = theta;
   for (long k = 0; k < steps; ++k) {
     const robot::BumperState bumper = simulator.senseContact();
+    run.bumps += bumper.pressed && !was_pressed;
+    was_pressed = bumper.pressed;
     const robot::Pose2D pose = simulator.pose();  // the pose the behaviour sees
-    const robot::Velocity cmd = behavior->tick(bumper);
+    const robot::Velocity cmd = behavior.tick(bumper, pose);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;
     }
     if (csv) {
       *csv << k * step << ',' << pose.x << ',' << pose.y << ',' << theta << ',' << cmd.v << ','
-           << cmd.w << ',' << behavior->stateName() << ',' << (bumper.pressed ? 1 : 0) << '\n';
+           << cmd.w << ',' << behavior.stateName() << ',' << (bumper.pressed ? 1 : 0) << '\n';
     }
-    if (keep_path) run.path.push_back({pose.x, pose.y, behavior->state()});
+    if (keep_path) run.path.push_back({pose.x, pose.y, behavior.state()});
     simulator.move(cmd);
     while (next_checkpoint < std::size(kCheckpoints) &&
            std::lround(kCheckpoints[next_checkpoint] / step) == k + 1) {
       run.coverage_at.push_back(simulator.coverage());
+      if (cleaning) run.reachable_at.push_back(reachableCoverage(simulator, *cleaning));
       ++next_checkpoint;
     }
+    if (!cleaning) continue;
+    const double reached = reachableCoverage(simulator, *cleaning);
+    for (std::size_t t = 0; t < std::size(kTargets); ++t) {
+      if (std::isnan(run.time_to[t]) && reached >= kTargets[t]) run.time_to[t] = (k + 1) * step;
+    }
+    while (next_ideal < std::size(kIdealMultiples) &&
+           std::lround(kIdealMultiples[next_ideal] * cleaning->ideal_time / step) <= k + 1) {
+      run.at_ideal.push_back(reached);
+      ++next_ideal;
+    }
+    if ((k + 1) % per_point == 0) run.curve.push_back(reached);
   }
   run.final_coverage = simulator.coverage();
+  if (cleaning) run.reachable_final = reachableCoverage(simulator, *cleaning);
   return run;
 }
 

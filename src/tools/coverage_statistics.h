@@ -15,11 +15,12 @@ std::size_t closestToMean(const std::vector<double>& values);
 /// five characters); just the mean for one value.
 std::string percentMeanStd(const std::vector<double>& values);
 
-/// Every seed's runs with one robot count.
+/// Every seed's runs with one robot count (or of one behaviour: --compare).
 struct FleetStatistics {
   int robots = 0;
-  std::vector<std::vector<double>> at;      ///< [checkpoint][seed]
-  std::vector<double> finals;               ///< [seed]
+  std::string label;                    ///< the curve's name in a plot's legend; "" for "N robots"
+  std::vector<std::vector<double>> at;  ///< [checkpoint][seed]
+  std::vector<double> finals;           ///< [seed]
   std::vector<std::vector<double>> curves;  ///< [seed][point]
 };
 

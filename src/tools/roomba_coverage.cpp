@@ -12,6 +12,7 @@
 // Arguments: coverage_arguments.h; runs: coverage_run.h; statistics: coverage_statistics.h;
 // pictures: coverage_drawing.h.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -168,6 +169,200 @@ int runOne(const CoverageOptions& o, const world::World& world, const RoombaPara
   return 0;
 }
 
+/// Seconds as "mean ± std" over the runs that got there; "(k/n)" when only k of n did, "—" when
+/// none did (NaN: not reached).
+std::string secondsMeanStd(const std::vector<double>& values) {
+  std::vector<double> reached;
+  for (double v : values) {
+    if (!std::isnan(v)) reached.push_back(v);
+  }
+  if (reached.empty()) return "—";
+  const auto [mean, std] = util::meanAndStd(reached);
+  char text[64];
+  if (reached.size() < values.size()) {
+    std::snprintf(text, sizeof text, "%.0f (%zu/%zu)", mean, reached.size(), values.size());
+  } else if (values.size() < 2) {
+    std::snprintf(text, sizeof text, "%.0f", mean);
+  } else {
+    std::snprintf(text, sizeof text, "%.0f ± %.0f", mean, std);
+  }
+  return text;
+}
+
+std::string countMeanStd(const std::vector<double>& values) {
+  const auto [mean, std] = util::meanAndStd(values);
+  char text[64];
+  if (values.size() < 2) {
+    std::snprintf(text, sizeof text, "%.0f", mean);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f ± %.1f", mean, std);
+  }
+  return text;
+}
+
+/// `text` aligned in `width` characters (UTF-8: "±" and "—" are one character, not two or
+/// three bytes as printf's width counts them).
+std::string padding(const std::string& text, std::size_t width) {
+  std::size_t characters = 0;
+  for (const char c : text) characters += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return std::string(width > characters ? width - characters : 0, ' ');
+}
+std::string rightAligned(const std::string& text, std::size_t width) {
+  return padding(text, width) + text;
+}
+std::string leftAligned(const std::string& text, std::size_t width) {
+  return text + padding(text, width);
+}
+
+/// One behaviour's runs on the reachable floor, [measure][seed].
+struct ReachableStatistics {
+  std::string behavior;
+  std::vector<std::vector<double>> at, at_ideal, time_to;
+  std::vector<double> finals, bumps;
+  std::vector<std::vector<double>> curves;
+};
+
+/// --behavior coverage (one column) or --compare (fsm, bt and coverage): the coverage of the
+/// reachable floor (the floor cells the disc swept, over the coverage planner's reachable area)
+/// at the checkpoints and at 1.5× and 2× the ideal time, the time to 90 / 95 / 99 % of it and the
+/// bumps per run, one column per behaviour; coverage's CSV and picture; --plot: the curves.
+int runReachable(const CoverageOptions& options, const world::World& world,
+                 const RoombaParams& params, const std::vector<std::string>& behaviors) {
+  std::ofstream csv;
+  if (!options.csv.empty()) {
+    csv.open(options.csv);
+    if (!csv) throw std::runtime_error(options.csv + ": cannot write the CSV");
+    csv.precision(10);
+    csv << "t,x,y,theta,v,w,state,bumper\n";
+  }
+  const Cleaning cleaning(world, params);
+  sim::Simulator simulator(world);
+  std::vector<ReachableStatistics> columns;
+  ProgressBar progress(options.seeds * static_cast<int>(behaviors.size()), "runs");
+  const auto begin = std::chrono::steady_clock::now();
+  for (const std::string& behavior : behaviors) {
+    CoverageOptions o = options;
+    o.behavior = behavior;
+    ReachableStatistics column;
+    column.behavior = behavior;
+    column.at.resize(std::size(kCheckpoints));
+    column.at_ideal.resize(std::size(kIdealMultiples));
+    column.time_to.resize(std::size(kTargets));
+    for (int i = 0; i < o.seeds; ++i) {
+      const Run result =
+          simulate(o, params, o.seed + static_cast<unsigned>(i),
+                   i == 0 && csv.is_open() ? &csv : nullptr, false, simulator, &cleaning);
+      for (std::size_t c = 0; c < result.reachable_at.size(); ++c) {
+        column.at[c].push_back(result.reachable_at[c]);
+      }
+      for (std::size_t m = 0; m < result.at_ideal.size(); ++m) {
+        column.at_ideal[m].push_back(result.at_ideal[m]);
+      }
+      for (std::size_t t = 0; t < result.time_to.size(); ++t) {
+        column.time_to[t].push_back(result.time_to[t]);
+      }
+      column.finals.push_back(result.reachable_final);
+      column.bumps.push_back(result.bumps);
+      column.curves.push_back(result.curve);
+      progress.update(static_cast<int>(columns.size()) * o.seeds + i + 1);
+    }
+    columns.push_back(std::move(column));
+  }
+  const double seconds = secondsSince(begin);
+  progress.finish(options.seeds * static_cast<int>(behaviors.size()));
+
+  char title[200] = "";
+  if (!options.png.empty()) {
+    const unsigned drawn_seed =
+        options.seed + static_cast<unsigned>(closestToMean(columns.front().finals));
+    CoverageOptions o = options;
+    o.behavior = behaviors.front();
+    const Run drawn = simulate(o, params, drawn_seed, nullptr, true, simulator, &cleaning);
+    std::snprintf(title, sizeof title,
+                  "%s, seed %u, %.0f s: %.1f %% of the reachable floor cleaned, %d bumps",
+                  o.behavior.c_str(), drawn_seed, o.duration, 100 * drawn.reachable_final,
+                  drawn.bumps);
+    drawRunPicture(options.png, simulator, drawn, title);
+  }
+
+  const int n = options.seeds;
+  const std::string seeds =
+      n > 1 ? "seeds " + std::to_string(options.seed) + "–" + std::to_string(options.seed + n - 1)
+            : "seed " + std::to_string(options.seed);
+  std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n",
+              options.compare ? "fsm, bt and coverage" : behaviors.front().c_str(), seeds.c_str(),
+              options.duration, options.world.c_str());
+  std::printf(
+      "  reachable floor %.2f m² of %.2f m² of floor (the coverage planner's, from the "
+      "start); ideal time %.1f s\n",
+      cleaning.reachable_area, cleaning.floor_area, cleaning.ideal_time);
+  std::printf("  coverage of the reachable floor [%%]%s\n", n > 1 ? " (mean ± std)" : "");
+  std::printf("  %s", leftAligned("time [s]", 22).c_str());
+  for (const ReachableStatistics& column : columns) {
+    std::printf("  %s", rightAligned(column.behavior, 14).c_str());
+  }
+  std::printf("\n");
+  const auto row = [&columns](const std::string& label, const auto& cell) {
+    std::printf("  %s", leftAligned(label, 22).c_str());
+    for (const ReachableStatistics& column : columns) {
+      std::printf("  %s", rightAligned(cell(column), 14).c_str());
+    }
+    std::printf("\n");
+  };
+  char label[64];
+  // The checkpoints and the ideal time's multiples, in the order of time.
+  std::size_t c = 0, m = 0;
+  while (c < std::size(kCheckpoints) || m < std::size(kIdealMultiples)) {
+    const bool ideal = m < std::size(kIdealMultiples) &&
+                       (c == std::size(kCheckpoints) ||
+                        kIdealMultiples[m] * cleaning.ideal_time < kCheckpoints[c]);
+    const std::vector<double>& first = ideal ? columns.front().at_ideal[m] : columns.front().at[c];
+    if (!first.empty()) {
+      if (ideal) {
+        std::snprintf(label, sizeof label, "%8.0f (%.1f× ideal)",
+                      kIdealMultiples[m] * cleaning.ideal_time, kIdealMultiples[m]);
+      } else {
+        std::snprintf(label, sizeof label, "%8.0f", kCheckpoints[c]);
+      }
+      row(label, [&](const ReachableStatistics& s) {
+        return percentMeanStd(ideal ? s.at_ideal[m] : s.at[c]);
+      });
+    }
+    (ideal ? m : c) += 1;
+  }
+  if (!finalIsCheckpoint(options.duration, world.step)) {
+    std::snprintf(label, sizeof label, "%8.0f", options.duration);
+    row(label, [](const ReachableStatistics& s) { return percentMeanStd(s.finals); });
+  }
+  for (std::size_t t = 0; t < std::size(kTargets); ++t) {
+    std::snprintf(label, sizeof label, "time to %.0f %% [s]", 100 * kTargets[t]);
+    row(label, [t](const ReachableStatistics& s) { return secondsMeanStd(s.time_to[t]); });
+  }
+  row("bumps per run", [](const ReachableStatistics& s) { return countMeanStd(s.bumps); });
+  std::printf("  simulated %zu × %d × %.0f s in %.3f s of wall time\n", behaviors.size(), n,
+              options.duration, seconds);
+  if (!options.csv.empty()) std::printf("  trajectory: %s\n", options.csv.c_str());
+  if (!options.png.empty()) std::printf("  picture: %s, %s\n", options.png.c_str(), title);
+  if (!options.plot.empty()) {
+    std::vector<FleetStatistics> curves;
+    for (const ReachableStatistics& column : columns) {
+      FleetStatistics curve;
+      curve.robots = 1;
+      curve.label = column.behavior;
+      curve.at = column.at;
+      curve.finals = column.finals;
+      curve.curves = column.curves;
+      curves.push_back(std::move(curve));
+    }
+    drawCoveragePlot(
+        options.plot, curves, options.duration,
+        "Reachable floor cleaned, mean ± std, " + std::to_string(n) + (n == 1 ? " seed" : " seeds"),
+        "reachable floor cleaned");
+    std::printf("  plot: %s\n", options.plot.c_str());
+  }
+  return 0;
+}
+
 int run(int argc, char** argv) {
   const CoverageOptions o = parseCoverageArguments(argc, argv);
   if (o.help) {
@@ -177,6 +372,8 @@ int run(int argc, char** argv) {
   const world::World world = loadToolWorld(o.world, o.pose);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
+  if (o.compare) return runReachable(o, world, params, {"fsm", "bt", "coverage"});
+  if (o.behavior == "coverage") return runReachable(o, world, params, {"coverage"});
   if (!o.robots.empty() || !world.robots.empty()) return runFleets(o, world, params);
   if (!o.plot.empty()) throw std::invalid_argument("--plot needs --robots");
   return runOne(o, world, params);

@@ -95,6 +95,16 @@ CoverageOptions parse(std::vector<const char*> args) {
   return parseCoverageArguments(static_cast<int>(args.size()), args.data());
 }
 
+TEST(CoverageArguments, coverage_is_a_behaviour_and_compare_runs_all_three) {
+  EXPECT_EQ(parse({"--behavior", "coverage"}).behavior, "coverage");
+  EXPECT_EQ(parse({"--behavior", "coverage", "--tree", "t.xml"}).tree, "t.xml");
+  const CoverageOptions o = parse({"--compare", "--seeds", "3", "--plot", "p.png"});
+  EXPECT_TRUE(o.compare);
+  EXPECT_TRUE(o.behavior.empty());
+  EXPECT_EQ(o.seeds, 3);
+  EXPECT_EQ(o.plot, "p.png");
+}
+
 TEST(CoverageArguments, defaults_are_the_lab_run_in_the_config_room) {
   const CoverageOptions o = parse({"--behavior", "fsm"});
   EXPECT_EQ(o.duration, 600);
@@ -134,16 +144,24 @@ TEST(CoverageArguments, bad_values_and_combinations_are_refused_naming_the_flag)
   EXPECT_EQ(refusal([] {
               parse({"--behavior", "walk"});
             }),
-            "--behavior must be fsm or bt, got 'walk'");
+            "--behavior must be fsm, bt or coverage, got 'walk'");
   EXPECT_EQ(refusal([] {
               parse({"--behavior", "fsm", "--tree", "t.xml"});
             }),
-            "--tree needs --behavior bt");
+            "--tree needs --behavior bt or coverage");
   EXPECT_EQ(refusal([] {
               parse({"--behavior", "fsm", "--robots", "2", "--png", "a.png"});
             }),
             "--csv and --png draw one robot; with --robots use --plot");
   EXPECT_EQ(refusal([] { parse({"--behavior"}); }), "--behavior needs a value");
+  EXPECT_EQ(refusal([] {
+              parse({"--compare", "--behavior", "bt"});
+            }),
+            "--compare runs fsm, bt and coverage: no --behavior, --tree, --csv, --png or --robots");
+  EXPECT_EQ(refusal([] {
+              parse({"--behavior", "coverage", "--robots", "2"});
+            }),
+            "--robots runs the lab's behaviours: fsm or bt");
 }
 
 }  // namespace

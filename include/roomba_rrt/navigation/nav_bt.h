@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "roomba_rrt/bt/tree.h"
 #include "roomba_rrt/navigation/nav_leaves.h"
@@ -53,6 +54,8 @@ class NavBt {
   const Path* path() const { return board_->get<Path>("path"); }
   /// The active leaf's name (for ~state), "Idle" before any leaf ran.
   const std::string& stateName() const { return *context_.state_name; }
+  /// The lab's motion the last command stands for (the cleaning and recovery leaves set it).
+  behavior::RoombaState state() const { return context_.state; }
   bt::Tree& tree() { return tree_; }
 
  private:
@@ -84,12 +87,15 @@ NavLeafConfig inProcessNavConfig(
     InProcessPlanner::Mode mode = InProcessPlanner::Mode::kThread);
 
 /// The <TreeNodesModel> (BehaviorTree.CPP v4, for Groot2) of every node a roomba_bt tree can
-/// use: the lab's leaves, the navigation leaves and our control nodes, with their ports.
-std::string treeNodesModel();
+/// use: the lab's leaves, the navigation leaves, those of `more` (registrars that describe their
+/// leaves without building any, e.g. coverage::coverageLeaves) and our control nodes, with their
+/// ports.
+std::string treeNodesModel(const std::vector<LeafRegistrar>& more = {});
 
-/// Whether the tree file (or a file it includes) uses a navigation leaf: the factory that knows
-/// the lab's and the navigation leaves is asked which of its types the file uses
-/// (bt::TreeFileError when the file cannot be read or parsed).
-bool usesNavigationLeaves(const std::string& tree_file);
+/// Whether the tree file (or a file it includes) uses a navigation leaf (or one of `more`'s):
+/// the factory that knows the lab's and the navigation leaves is asked which of its types the
+/// file uses (bt::TreeFileError when the file cannot be read or parsed).
+bool usesNavigationLeaves(const std::string& tree_file,
+                          const std::vector<LeafRegistrar>& more = {});
 
 }  // namespace roomba_rrt::navigation

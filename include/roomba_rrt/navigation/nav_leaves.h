@@ -7,10 +7,12 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/behavior/roomba_state.h"
 #include "roomba_rrt/bt/tree_factory.h"
+#include "roomba_rrt/navigation/motion_guard.h"
 #include "roomba_rrt/navigation/path_checker.h"
 #include "roomba_rrt/navigation/path_follower.h"
 #include "roomba_rrt/navigation/path_planner.h"
@@ -55,6 +57,11 @@ struct NavContext : behavior::RoombaContext {
 /// Makes one planner per ComputePath leaf (each leaf has its own pending plan).
 using PlannerFactory = std::function<std::unique_ptr<PathPlanner>()>;
 
+struct NavLeafConfig;
+/// Registers further leaves on the factory of a navigation tree, beside the navigation leaves,
+/// with the same configuration and context (coverage::coverageLeaves: the cleaning leaves).
+using LeafRegistrar = std::function<void(bt::TreeFactory&, const NavLeafConfig&, NavContext&)>;
+
 /// What the navigation leaves need to be built.
 struct NavLeafConfig {
   behavior::RoombaParams params;  ///< rate (ticks per second) and the Spin's default speed
@@ -64,7 +71,14 @@ struct NavLeafConfig {
   /// them, and FollowPath never lets the robot touch them (MotionGuard). Null: every path counts
   /// as free and FollowPath's commands go out unchecked.
   std::shared_ptr<const PathChecker> known_world;
+  /// More leaves, registered after the navigation leaves (e.g. coverage::coverageLeaves).
+  std::vector<LeafRegistrar> more_leaves;
 };
+
+/// The motion guard of the known world keeping `margin` (FollowPath's: 1 cm), at the follower's
+/// rate and acceleration: null without a known world.
+std::shared_ptr<const MotionGuard> knownWorldGuard(const NavLeafConfig& config,
+                                                   double margin = 0.01);
 
 /// Registers, on `factory`:
 ///
@@ -94,6 +108,8 @@ struct NavLeafConfig {
 /// - GoalSucceeded goal="{goal}": the goal is reached: clears it, outcome SUCCEEDED, SUCCESS.
 /// - GoalAborted goal="{goal}" error="{error}": clears the goal, outcome ABORTED with the
 ///   error's text, FAILURE.
+///
+/// Then every registrar of `config.more_leaves`.
 ///
 /// `context` and the planners must outlive the trees built.
 void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, NavContext& context);

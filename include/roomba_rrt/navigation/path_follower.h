@@ -53,6 +53,7 @@ enum class FollowStatus : std::uint8_t {
   kArrived,    ///< within xy_tolerance and yaw_tolerance, stopped: the command is zero
   kStrayed,    ///< farther than max_deviation from the path: the command is zero, replan
   kNoPath,     ///< start() was given fewer than one point
+  kBlocked,    ///< GuardedFollower only: held still by its guard, the command is zero, replan
 };
 
 const char* toString(FollowStatus status);
@@ -89,6 +90,8 @@ class PathFollower {
 
   /// Distance from the robot to the path found by the last step (m).
   double deviation() const { return deviation_; }
+  /// Arc length along the path of the robot's projection found by the last step (m).
+  double progress() const { return progress_s_; }
   /// The point `distance` along the path beyond the robot's projection (clamped to the goal).
   planning::Point2 pointAhead(double distance) const { return pointAt(progress_s_ + distance); }
   /// True once the robot has reached the goal point and turns to the goal heading.

@@ -1,0 +1,79 @@
+// The cleaning tree's leaves (config/roomba_coverage_tree.xml): plan the coverage from the robot's
+// pose, drive it leg by leg with the navigation's follower, resume the rest after a bump (never
+// from the beginning), give up on a row after N tries, and tell when all is clean. ROS-free; they
+// run in navigation::NavBt beside the navigation leaves (coverageLeaves() is the registrar).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "roomba_rrt/coverage/coverage_planner.h"
+#include "roomba_rrt/navigation/nav_leaves.h"
+
+namespace roomba_rrt::coverage {
+
+/// The cleaning in progress, on the blackboard (the tree's key `coverage`): what is left to
+/// drive and how it went. Legs before `leg` are done.
+struct CoverageProgress {
+  CoveragePlan plan;     ///< the plan being driven (after a resume: the rest of the previous one)
+  std::size_t leg = 0;   ///< the leg being driven; legs.size() when all is done
+  int tries = 0;         ///< resumes since the last row was finished (skip_after counts them)
+  int bumps = 0;         ///< bumps since the cleaning started
+  int skipped_rows = 0;  ///< rows given up (skip_after tries)
+
+  bool done() const { return leg >= plan.legs.size(); }
+};
+
+/// The polyline the robot still has to drive: the points of the current leg and every later one,
+/// in order (a point shared by two legs once). For ~coverage_path.
+Polyline remainingPath(const CoverageProgress& progress);
+
+/// The progress on a tree's blackboard under `key` (nullptr before PlanCoverage wrote it).
+const CoverageProgress* findProgress(const bt::Blackboard& board,
+                                     const std::string& key = "coverage");
+
+/// Registers, for a navigation tree (navigation::NavLeafConfig::more_leaves):
+///
+/// - PlanCoverage start="{pose}" coverage="{coverage}" error="{error}": plans the coverage of the
+///   floor reachable from `start` (CoveragePlanner::plan) and writes it as a new progress;
+///   SUCCESS, or FAILURE with `error` when there is no start pose or nothing can be cleaned from
+///   it.
+/// - FollowCoverage coverage="{coverage}" pose="{pose}" transit_speed="0.8" error="{error}":
+///   drives the legs from `coverage.leg` on with the navigation's follower (GuardedFollower:
+///   FollowPath's follower and motion guard): rows at the lab's forward_speed (RoombaParams,
+///   0.5 m/s), transits at `transit_speed` (within the follower's limits; the short step
+///   between two rows is driven with the next row as one path, at the row's speed), turning in
+///   place towards each leg's start where the previous one ended. A finished leg advances
+///   `coverage.leg` (a finished row also clears `tries`). RUNNING with the command; SUCCESS when
+///   every leg is driven; FAILURE with `error` when the bumper is pressed ("bumped", counted in
+///   `bumps`), the robot strayed from the leg or the guard held it still ("blocked"), or there is
+///   no progress or pose. The leg it failed in stays `coverage.leg`, for ResumeCoverage.
+/// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
+///   of the plan from where the robot stands (CoveragePlanner::resume from `coverage.leg`: the
+///   rest of the row it was in, or the row its transit led to). After `skip_after` resumes
+///   without finishing a row, that row is given up (`skipped_rows`) and the next one is resumed
+///   instead. SUCCESS with the new progress (leg 0; nothing left that can be reached: an empty
+///   plan, done); FAILURE when there is no progress or pose.
+/// - CoverageDone coverage="{coverage}": SUCCESS when a plan was made and every leg is driven,
+///   else FAILURE.
+///
+/// The leaves plan in `world` (its walls, furniture or map; the planner is built with `options`
+/// when the first PlanCoverage or ResumeCoverage is, so a factory that only describes its leaves
+/// or builds other trees costs nothing). The known world's motion guard (NavLeafConfig::
+/// known_world) checks FollowCoverage's commands as FollowPath's.
+navigation::LeafRegistrar coverageLeaves(const world::World& world,
+                                         const CoverageOptions& options = {});
+/// The same leaves planning with `planner` (built already: e.g. shared by several trees, or also
+/// used to measure the reachable floor). Null: the leaves are only described (treeNodesModel);
+/// building PlanCoverage or ResumeCoverage throws std::invalid_argument.
+navigation::LeafRegistrar coverageLeaves(std::shared_ptr<const CoveragePlanner> planner);
+
+}  // namespace roomba_rrt::coverage
+
+namespace roomba_rrt::bt {
+template <>
+struct TypeName<coverage::CoverageProgress> {
+  static std::string get() { return "CoverageProgress"; }
+};
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,358 @@
+// The cleaning leaves' contracts (coverage_leaves.h): ports, statuses, the leg bookkeeping, resume
+// after a bump where the robot stopped, a row given up after N tries; and the cleaning tree
+// (config/roomba_coverage_tree.xml) in navigation::NavBt with the simulator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/world/world.h"
+
+namespace roomba_rrt::coverage {
+namespace {
+
+using navigation::NavBt;
+using navigation::NavContext;
+using navigation::NavLeafConfig;
+
+const std::string kCoverageTree = ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml";
+
+world::World smallRoom() {
+  world::World world;
+  world.width = 2.0;
+  world.height = 1.5;
+  world.initial_pose = {1.0, 0.75, 0.0};
+  return world;
+}
+
+NavLeafConfig cleaningConfig(const world::World& world,
+                             std::shared_ptr<const CoveragePlanner> planner) {
+  NavLeafConfig config = navigation::inProcessNavConfig(planning::roomProblem(world));
+  config.more_leaves.push_back(coverageLeaves(std::move(planner)));
+  return config;
+}
+
+/// The leaves on a blackboard, driven by hand or with the simulator, one leaf per tree.
+struct LeafTest : ::testing::Test {
+  LeafTest()
+      : world(smallRoom()),
+        planner(std::make_shared<const CoveragePlanner>(world)),
+        context(1),
+        sim(world) {
+    board->set<robot::Pose2D>("pose", world.initial_pose);
+    context.params = &params;
+    navigation::registerNavLeaves(factory, cleaningConfig(world, planner), context);
+  }
+  bt::Tree build(const std::string& body) {
+    return factory.buildFromText("<root><BehaviorTree>" + body + "</BehaviorTree></root>", "t",
+                                 board);
+  }
+  /// One tick of `tree` with the simulator's bumper and pose; moves the robot.
+  bt::Status step(bt::Tree& tree) {
+    context.bumper = sim.senseContact();
+    board->set<robot::Pose2D>("pose", sim.pose());
+    context.cmd = {};
+    const bt::Status status = tree.tick();
+    context.previous_cmd = context.cmd;
+    sim.move(context.cmd);
+    return status;
+  }
+  const CoverageProgress& progress() const { return *board->get<CoverageProgress>("coverage"); }
+  void plan() {
+    bt::Tree tree = build(kPlan);
+    ASSERT_EQ(tree.tick(), bt::Status::kSuccess);
+  }
+  /// Follows until the robot is in the middle of a row (leg index ≥ `min_leg`).
+  void driveIntoARow(bt::Tree& follow, std::size_t min_leg) {
+    for (int i = 0; i < 60 * 60; ++i) {
+      ASSERT_EQ(step(follow), bt::Status::kRunning);
+      const CoverageProgress& p = progress();
+      const Leg& leg = p.plan.legs[p.leg];
+      if (p.leg >= min_leg && leg.kind == Leg::Kind::kRow &&
+          geometry::distance(leg.points.front(), {sim.pose().x, sim.pose().y}) > 0.5 &&
+          geometry::distance(leg.points.back(), {sim.pose().x, sim.pose().y}) > 0.5) {
+        return;
+      }
+    }
+    FAIL() << "never in the middle of a row";
+  }
+
+  static constexpr const char* kPlan =
+      R"(<PlanCoverage start="{pose}" coverage="{coverage}" error="{error}"/>)";
+  static constexpr const char* kFollow =
+      R"(<FollowCoverage coverage="{coverage}" pose="{pose}" error="{error}"/>)";
+
+  world::World world;
+  std::shared_ptr<const CoveragePlanner> planner;
+  behavior::RoombaParams params;
+  bt::TreeFactory factory;
+  NavContext context;
+  std::shared_ptr<bt::Blackboard> board = std::make_shared<bt::Blackboard>();
+  sim::Simulator sim;
+};
+
+TEST(CoverageLeaves, the_nodes_model_lists_the_leaves_with_their_ports) {
+  const std::string model = navigation::treeNodesModel({coverageLeaves(nullptr)});
+  for (const char* text :
+       {"<Action ID=\"PlanCoverage\"", "<Action ID=\"FollowCoverage\"",
+        "<Action ID=\"ResumeCoverage\"", "<Condition ID=\"CoverageDone\"", "name=\"transit_speed\"",
+        "name=\"skip_after\"", "type=\"CoverageProgress\""}) {
+    EXPECT_NE(model.find(text), std::string::npos) << text << " not in\n" << model;
+  }
+  // Without the registrar the navigation model stays as it was.
+  EXPECT_EQ(navigation::treeNodesModel().find("PlanCoverage"), std::string::npos);
+}
+
+TEST(CoverageLeaves, described_only_they_cannot_be_built) {
+  NavContext context(1);
+  bt::TreeFactory factory;
+  NavLeafConfig config;
+  config.planners = [] { return std::unique_ptr<navigation::PathPlanner>(); };
+  config.more_leaves.push_back(coverageLeaves(nullptr));
+  navigation::registerNavLeaves(factory, config, context);
+  EXPECT_ANY_THROW(factory.buildFromText(
+      R"(<root><BehaviorTree><PlanCoverage start="{pose}" coverage="{c}"/></BehaviorTree></root>)",
+      "t"));
+}
+
+TEST(CoverageLeaves, the_cleaning_tree_is_a_navigation_tree_roomba_bt_runs) {
+  EXPECT_FALSE(navigation::usesNavigationLeaves(ROOMBA_RRT_CONFIG_DIR "/roomba_tree.xml",
+                                                {coverageLeaves(nullptr)}));
+  EXPECT_TRUE(navigation::usesNavigationLeaves(kCoverageTree, {coverageLeaves(nullptr)}));
+}
+
+TEST_F(LeafTest, plan_coverage_without_a_pose_fails_with_the_reason) {
+  board = std::make_shared<bt::Blackboard>();
+  board->declare<robot::Pose2D>("pose");  // declared, never written
+  bt::Tree tree = build(kPlan);
+  EXPECT_EQ(tree.tick(), bt::Status::kFailure);
+  EXPECT_EQ(*board->get<std::string>("error"), "no start pose to plan from");
+}
+
+TEST_F(LeafTest, plan_coverage_writes_the_plan_from_the_pose) {
+  plan();
+  const CoverageProgress& p = progress();
+  ASSERT_FALSE(p.plan.legs.empty());
+  EXPECT_EQ(p.leg, 0u);
+  EXPECT_EQ(p.tries, 0);
+  EXPECT_FALSE(p.done());
+  EXPECT_EQ(p.plan.legs.front().points.front().x, world.initial_pose.x);
+  EXPECT_EQ(p.plan.legs.front().points.front().y, world.initial_pose.y);
+  // What is left to drive, for ~coverage_path: every leg's points, joined.
+  const Polyline rest = remainingPath(p);
+  EXPECT_EQ(rest.front().x, world.initial_pose.x);
+  EXPECT_EQ(rest.back().x, p.plan.legs.back().points.back().x);
+}
+
+TEST_F(LeafTest, plan_coverage_inside_furniture_fails_and_leaves_nothing_to_do) {
+  world.circles.push_back({{1.0, 0.75}, 0.3});
+  LeafTest::planner = std::make_shared<const CoveragePlanner>(world);
+  bt::TreeFactory other;
+  navigation::registerNavLeaves(other, cleaningConfig(world, planner), context);
+  bt::Tree tree = other.buildFromText(
+      std::string("<root><BehaviorTree>") + kPlan + "</BehaviorTree></root>", "t", board);
+  EXPECT_EQ(tree.tick(), bt::Status::kFailure);
+  EXPECT_EQ(*board->get<std::string>("error"),
+            "nothing to clean: no floor can be reached from the start");
+  EXPECT_TRUE(progress().done());  // CoverageDone: the tree stops instead of planning again
+}
+
+TEST_F(LeafTest, follow_coverage_without_a_plan_fails_with_the_reason) {
+  bt::Tree tree = build(kFollow);
+  EXPECT_EQ(tree.tick(), bt::Status::kFailure);
+  EXPECT_EQ(*board->get<std::string>("error"), "no coverage plan to follow");
+}
+
+TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_faster) {
+  plan();
+  bt::Tree follow = build(
+      R"(<FollowCoverage coverage="{coverage}" pose="{pose}" transit_speed="0.7" error="{error}"/>)");
+  double fastest_row = 0, fastest_transit = 0;
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
+    const CoverageProgress& p = progress();
+    const bool row = !p.done() && p.plan.legs[p.leg].kind == Leg::Kind::kRow;
+    status = step(follow);
+    double& fastest = row ? fastest_row : fastest_transit;
+    fastest = std::max(fastest, context.cmd.v);
+    if (status == bt::Status::kRunning) EXPECT_EQ(context.state_name, &follow.root().name());
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_TRUE(progress().done());
+  EXPECT_NEAR(fastest_row, params.forward_speed, 1e-9);
+  EXPECT_GT(fastest_transit, params.forward_speed);
+  EXPECT_LE(fastest_transit, 0.7 + 1e-9);
+  EXPECT_GT(sim.coverage(), 0.9);
+  EXPECT_EQ(progress().bumps, 0);
+}
+
+TEST_F(LeafTest, the_step_between_two_rows_is_driven_into_the_next_row_without_stopping) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  int into_rows_on_the_move = 0, steps_between_rows = 0;
+  const std::vector<Leg>& legs = progress().plan.legs;
+  for (std::size_t k = 1; k + 1 < legs.size(); ++k) {
+    steps_between_rows += legs[k].kind == Leg::Kind::kTransit &&
+                          legs[k - 1].kind == Leg::Kind::kRow &&
+                          geometry::pathLength(legs[k].points) < 0.5;
+  }
+  ASSERT_GT(steps_between_rows, 0);
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
+    const std::size_t leg = progress().leg;
+    const bool in_step = progress().plan.legs[leg].kind == Leg::Kind::kTransit;
+    status = step(follow);
+    into_rows_on_the_move += in_step && !progress().done() && progress().leg == leg + 1 &&
+                             progress().plan.legs[leg + 1].kind == Leg::Kind::kRow &&
+                             context.cmd.v > 0;
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_EQ(into_rows_on_the_move, steps_between_rows);
+}
+
+TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  driveIntoARow(follow, 1);
+  const std::size_t leg = progress().leg;
+  context.bumper.pressed = true;
+  EXPECT_EQ(follow.tick(), bt::Status::kFailure);
+  EXPECT_EQ(*board->get<std::string>("error"), "bumped");
+  EXPECT_EQ(progress().leg, leg);
+  EXPECT_EQ(progress().bumps, 1);
+}
+
+TEST_F(LeafTest, resume_after_a_bump_continues_the_row_where_it_stopped) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  driveIntoARow(follow, 1);
+  const CoverageProgress before = progress();
+  const Leg row = before.plan.legs[before.leg];
+  const Point2 at{sim.pose().x, sim.pose().y};
+  bt::Tree resume = build(R"(<ResumeCoverage coverage="{coverage}" pose="{pose}"/>)");
+  EXPECT_EQ(resume.tick(), bt::Status::kSuccess);
+  const CoverageProgress& after = progress();
+  EXPECT_EQ(after.leg, 0u);
+  EXPECT_EQ(after.tries, 1);
+  EXPECT_EQ(after.skipped_rows, 0);
+  // The rest of the same row, from next to the robot (not from the row's start, nor the plan's).
+  const Leg& first_row = after.plan.legs[after.plan.legs.front().kind == Leg::Kind::kRow ? 0 : 1];
+  EXPECT_EQ(first_row.kind, Leg::Kind::kRow);
+  EXPECT_LT(geometry::distance(first_row.points.front(), at), 0.05);
+  EXPECT_EQ(first_row.points.back().x, row.points.back().x);
+  EXPECT_EQ(first_row.points.back().y, row.points.back().y);
+  // Every later leg as it was.
+  EXPECT_EQ(after.plan.legs.back().points.back().x, before.plan.legs.back().points.back().x);
+  EXPECT_EQ(after.plan.legs.back().points.back().y, before.plan.legs.back().points.back().y);
+  // Following goes on with that rest.
+  EXPECT_EQ(step(follow), bt::Status::kRunning);
+}
+
+TEST_F(LeafTest, a_row_is_given_up_after_skip_after_resumes_without_finishing_it) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  driveIntoARow(follow, 1);
+  const CoverageProgress before = progress();
+  const Point2 row_end = before.plan.legs[before.leg].points.back();
+  bt::Tree resume =
+      build(R"(<ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="2"/>)");
+  ASSERT_EQ(resume.tick(), bt::Status::kSuccess);  // first try: the rest of the row
+  EXPECT_EQ(progress().skipped_rows, 0);
+  ASSERT_EQ(resume.tick(), bt::Status::kSuccess);  // second: given up
+  const CoverageProgress& after = progress();
+  EXPECT_EQ(after.skipped_rows, 1);
+  EXPECT_EQ(after.tries, 0);
+  for (const Leg& leg : after.plan.legs) {
+    if (leg.kind != Leg::Kind::kRow) continue;
+    EXPECT_FALSE(leg.points.back().x == row_end.x && leg.points.back().y == row_end.y)
+        << "the row given up is still in the plan";
+  }
+  EXPECT_LT(after.plan.legs.size(), before.plan.legs.size() - before.leg);
+}
+
+TEST_F(LeafTest, finishing_a_row_clears_the_tries) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  driveIntoARow(follow, 1);
+  bt::Tree resume = build(R"(<ResumeCoverage coverage="{coverage}" pose="{pose}"/>)");
+  ASSERT_EQ(resume.tick(), bt::Status::kSuccess);
+  ASSERT_EQ(progress().tries, 1);
+  for (int i = 0; i < 60 * 30 && progress().tries != 0; ++i) {
+    ASSERT_EQ(step(follow), bt::Status::kRunning);
+  }
+  EXPECT_EQ(progress().tries, 0);
+}
+
+TEST_F(LeafTest, coverage_done_only_when_every_leg_is_driven) {
+  board->declare<CoverageProgress>("coverage");
+  bt::Tree done = build(R"(<CoverageDone coverage="{coverage}"/>)");
+  EXPECT_EQ(done.tick(), bt::Status::kFailure);  // no plan yet
+  plan();
+  EXPECT_EQ(done.tick(), bt::Status::kFailure);
+  CoverageProgress finished = progress();
+  finished.leg = finished.plan.legs.size();
+  board->set<CoverageProgress>("coverage", finished);
+  EXPECT_EQ(done.tick(), bt::Status::kSuccess);
+}
+
+/// The cleaning tree as roomba_bt and roomba_coverage run it.
+struct CleaningLoop {
+  explicit CleaningLoop(const std::string& world_file)
+      : world(world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/" + world_file)),
+        planner(std::make_shared<const CoveragePlanner>(world)),
+        sim(world),
+        nav(cleaningConfig(world, planner), 1, kCoverageTree) {}
+  void run(double seconds) {
+    for (long i = 0; i < std::lround(seconds * 60); ++i) {
+      const robot::BumperState bumper = sim.senseContact();
+      bumps += bumper.pressed && !pressed;
+      pressed = bumper.pressed;
+      const robot::Velocity cmd = nav.tick(bumper, sim.pose());
+      moving = cmd.v != 0 || cmd.w != 0;
+      sim.move(cmd);
+    }
+  }
+  world::World world;
+  std::shared_ptr<const CoveragePlanner> planner;
+  sim::Simulator sim;
+  NavBt nav;
+  int bumps = 0;
+  bool pressed = false, moving = false;
+};
+
+TEST(CoverageTree, cleans_the_furnished_room_without_bumping_then_stands_still) {
+  CleaningLoop loop("roomba_world_furnished.yaml");
+  loop.run(600);
+  const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  EXPECT_TRUE(progress->done());
+  EXPECT_FALSE(loop.moving);
+  EXPECT_EQ(loop.bumps, 0);
+  EXPECT_GT(loop.sim.coverage(), 0.95);
+}
+
+TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
+  // A chair the planner does not know about, in the middle of the first rows. Each row that
+  // meets it is resumed from behind the chair until it is given up (skip_after="3"): the floor
+  // beyond the chair on those rows stays dirty, but the rest of the plan goes on.
+  CleaningLoop loop("roomba_world.yaml");
+  world::World with_chair = loop.world;
+  with_chair.circles.push_back({{1.5, 3.0}, 0.2});
+  loop.sim = sim::Simulator(with_chair);
+  loop.run(600);
+  const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  EXPECT_TRUE(progress->done());
+  EXPECT_GE(progress->bumps, 1);
+  EXPECT_GE(progress->skipped_rows, 1);
+  EXPECT_LE(progress->bumps, 3 * (progress->skipped_rows + 1));
+  EXPECT_EQ(loop.bumps, progress->bumps);  // every bump seen by FollowCoverage, none elsewhere
+  EXPECT_GT(loop.sim.coverage(), 0.8);
+}
+
+}  // namespace
+}  // namespace roomba_rrt::coverage
