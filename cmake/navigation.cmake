@@ -57,6 +57,8 @@ if(CATKIN_ENABLE_TESTING)
   # A map world: make_plan between rooms and a goal through a doorway, in the package's apartment
   # and (make_plan only) in willow_full, a real building's floor, when ../shared/maps is there.
   add_rostest(test/navigation/nav_map.test DEPENDENCIES nav_rostest)
+  # Systematic cleaning: the coverage tree cleans the furnished room, then stands still.
+  add_rostest(test/navigation/clean.test DEPENDENCIES nav_rostest)
   if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
     add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
   endif()

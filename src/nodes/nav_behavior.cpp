@@ -79,6 +79,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
         server_(nh_, "move_base", false) {
     context_.state_name = &kIdle;
     plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
+    coverage_pub_ =
+        ros::NodeHandle("~").advertise<nav_msgs::Path>("coverage_path", 1, /*latch=*/true);
     // /move_base_simple/goal becomes a goal of the action, as in move_base, so that a goal from
     // rviz preempts an action client's goal and is reported on move_base/status.
     action_goal_pub_ = nh_.advertise<move_base_msgs::MoveBaseActionGoal>("move_base/goal", 1);
@@ -123,8 +125,21 @@ class NavBehavior final : public behavior::RoombaBehavior {
         nav_.outcome() != navigation::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
     context_.state_name = idle ? &kIdle : &nav_.stateName();
     publishPlan();
+    publishCoveragePath();
     report(pose);
     return cmd;
+  }
+
+  /// ~coverage_path: what is left of the cleaning tree's coverage plan, from the leg being
+  /// driven on, whenever the plan or the leg changes (empty once everything is driven).
+  void publishCoveragePath() {
+    const coverage::CoverageProgress* progress = coverage::findProgress(nav_.tree().blackboard());
+    if (progress == nullptr) return;
+    const CoverageMark mark{progress->plan.legs.data(), progress->plan.legs.size(), progress->leg};
+    if (mark == coverage_mark_) return;
+    coverage_mark_ = mark;
+    coverage_pub_.publish(planner_node::toPathMessage(coverage::remainingPath(*progress),
+                                                      settings_.global_frame, ros::Time::now()));
   }
 
   /// The goal's outcome to the action client, or feedback while it runs.
@@ -273,7 +288,16 @@ class NavBehavior final : public behavior::RoombaBehavior {
   tf2_ros::TransformListener listener_;
   MoveBaseServer server_;
   std::unique_ptr<nodes::Reconfigure<NavFollowerConfig>> follower_reconfigure_;
-  ros::Publisher plan_pub_, action_goal_pub_;
+  ros::Publisher plan_pub_, action_goal_pub_, coverage_pub_;
+  /// Which coverage plan (its legs' storage and count) and leg ~coverage_path last showed.
+  struct CoverageMark {
+    const void* legs = nullptr;
+    std::size_t count = 0, leg = 0;
+    bool operator==(const CoverageMark& o) const {
+      return legs == o.legs && count == o.count && leg == o.leg;
+    }
+  };
+  CoverageMark coverage_mark_;
   ros::Subscriber simple_goal_sub_;
 
   robot::BumperState bumper_;

@@ -28,6 +28,7 @@
 #include <nav_msgs/Odometry.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
+#include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 
 #include <algorithm>
@@ -49,6 +50,8 @@ using actionlib::SimpleClientGoalState;
 
 constexpr double kXyTolerance = 0.05;  // the follower's default, m
 constexpr double kWallTimeout = 40.0;  // s of wall time per goal (a loaded 2-core machine)
+// s of wall time for the whole cleaning (about 360 s of robot time at 5x: 72 s when unloaded)
+constexpr double kCleanWallTimeout = 240.0;
 
 /// What the simulator says about the robot (a named robot's topics with `ns` = "/robot1").
 class Robot {
@@ -377,6 +380,57 @@ TEST_F(NavMap, a_goal_in_another_room_is_reached_through_the_doorway_without_a_b
       << client_->getState().getText();
   EXPECT_LT(distanceTo(robot_, goal_x_, goal_y_), kXyTolerance + 0.01);
   EXPECT_FALSE(robot_.everPressed());
+}
+
+/// roomba_bt with the cleaning tree (clean.test): it cleans the furnished room and stops.
+class Clean : public Nav {};
+
+TEST_F(Clean, the_cleaning_tree_covers_90_percent_of_the_floor_then_stands_still) {
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  double coverage = 0;
+  std::size_t rows_left = 0;
+  bool got_rows = false;
+  ros::Subscriber coverage_sub = nh.subscribe<std_msgs::Float32>(
+      "/roomba_sim/coverage", 10, [&](const std_msgs::Float32::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        coverage = m->data;
+      });
+  ros::Subscriber rows_sub = nh.subscribe<nav_msgs::Path>("/roomba_bt/coverage_path", 10,
+                                                          [&](const nav_msgs::Path::ConstPtr& m) {
+                                                            std::lock_guard<std::mutex> lock(mutex);
+                                                            rows_left = m->poses.size();
+                                                            got_rows = true;
+                                                          });
+  const Robot& robot = robot_;
+  // The plan's rows are published as soon as it is made.
+  ASSERT_TRUE(waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return got_rows;
+      },
+      30.0));
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_GT(rows_left, 50u) << "the furnished room's plan has some 50 legs";
+  }
+  // Done: Idle and standing, with nothing left on ~coverage_path.
+  const bool done = waitFor([&] { return robot.state() == "Idle"; }, kCleanWallTimeout);
+  const ros::Time finished = ros::Time::now();
+  std::unique_lock<std::mutex> lock(mutex);
+  std::printf("cleaning: %s after %.0f s of robot time, coverage %.1f %%, %zu path points left\n",
+              done ? "done" : "not done", finished.toSec(), 100 * coverage, rows_left);
+  ASSERT_TRUE(done) << "still " << robot.state() << " at coverage " << coverage;
+  EXPECT_GE(coverage, 0.90);
+  EXPECT_EQ(rows_left, 0u);
+  lock.unlock();
+  EXPECT_FALSE(robot.everPressed());
+  // It comes to rest (odometry is a step behind the command) and stays there.
+  const auto standing = [&] { return robot.latest().v == 0 && robot.latest().w == 0; };
+  EXPECT_TRUE(waitFor(standing, 5.0)) << "v " << robot.latest().v << ", w " << robot.latest().w;
+  ros::WallDuration(1.0).sleep();
+  EXPECT_TRUE(standing()) << "moving again: v " << robot.latest().v;
+  EXPECT_EQ(robot.state(), "Idle");
 }
 
 }  // namespace
