@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 #include "roomba_rrt/planning/free_point_near.h"
 #include "roomba_rrt/planning/validate.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::planner_node {
 namespace {
@@ -22,13 +22,9 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
   return q;
 }
 
-std::string show(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 }  // namespace
+
+using util::show;
 
 planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults) {
   planning::PlannerOptions o = defaults.options;
