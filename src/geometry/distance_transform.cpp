@@ -80,16 +80,12 @@ std::vector<std::int32_t> squaredDistanceTransform(const OccupancyGrid& grid,
   // sweep up and a sweep down, row by row so memory is read in order. This sweep up leaves in
   // each cell the distance to the nearest blocked cell below it (or in it).
   std::vector<std::int32_t> g = largeArray(w * static_cast<std::size_t>(height));
-  // OccupancyGrid::blocked() of a cell inside the grid, from its value alone.
-  const auto blocked = [unknown_is_free](std::int8_t v) {
-    return v != OccupancyGrid::kFree && !(v == OccupancyGrid::kUnknown && unknown_is_free);
-  };
   for (int j = 0; j < height; ++j) {
     std::int32_t* row = &g[j * w];
     const std::int8_t* cells = &grid.cells[j * w];
     const std::int32_t* below = j > 0 ? &g[(j - 1) * w] : nullptr;
     for (int i = 0; i < width; ++i) {
-      if (blocked(cells[i])) {
+      if (OccupancyGrid::blockedValue(cells[i], unknown_is_free)) {
         row[i] = 0;
       } else {
         row[i] = below && below[i] < kFar ? below[i] + 1 : static_cast<std::int32_t>(kFar);

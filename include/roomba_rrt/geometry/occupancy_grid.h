@@ -32,8 +32,10 @@ struct OccupancyGrid {
   /// `unknown_is_free`, a probability from another source), or outside the grid (the map's edge
   /// is a wall).
   bool blocked(int i, int j, bool unknown_is_free = false) const {
-    if (!inside(i, j)) return true;
-    const std::int8_t v = at(i, j);
+    return !inside(i, j) || blockedValue(at(i, j), unknown_is_free);
+  }
+  /// The same rule for a cell's value alone (a cell known to be inside the grid).
+  static bool blockedValue(std::int8_t v, bool unknown_is_free = false) {
     return v != kFree && !(v == kUnknown && unknown_is_free);
   }
   /// The closed square of cell (i, j).
