@@ -128,8 +128,12 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
     const world::World world = world::loadWorld(world_file);  // throws with the reason
     d.room = planning::roomProblem(world);
     if (world.map) {
-      d.world_map = std::make_shared<const planning::Problem>(
-          planning::mapProblem(world.map, d.allow_unknown));
+      // Scenario "map": the map alone. Its unknown cells are walls in the room too, so the room's
+      // inflated map serves unless ~allow_unknown asks for another.
+      planning::Problem map;
+      map.bounds = d.room->bounds;
+      map.map = d.allow_unknown ? planning::mapProblem(world.map, true).map : d.room->map;
+      d.world_map = std::make_shared<const planning::Problem>(std::move(map));
     }
   }
   return d;
