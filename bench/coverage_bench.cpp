@@ -25,6 +25,7 @@ void planAndReport(benchmark::State& state, const world::World& world) {
   state.counters["coverage_pct"] = 100 * plan.swept_area / plan.reachable_area;
   state.counters["plan_m"] = plan.length();
   state.counters["ideal_m"] = ideal;
+  state.counters["row_m"] = plan.rowLength();
   state.counters["legs"] = static_cast<double>(plan.legs.size());
   state.counters["cells"] = plan.cells;
 }

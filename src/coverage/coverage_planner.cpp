@@ -1,6 +1,7 @@
 #include "roomba_rrt/coverage/coverage_planner.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -26,9 +27,10 @@ constexpr double kMinLegLength = 1e-6;
 constexpr double kMinRowLength = 0.05;
 
 /// A cell that widens or narrows by this much (m) from one lattice row to the next gets a row
-/// beside the step (cellRows): the strip a swath wide beside a narrower step is not worth the
-/// U-turn and the transit to it.
-constexpr double kMinStepWidth = 1.0;
+/// along the step (cellRows): the strip of up to a swath beside a narrower step is not worth the
+/// U-turns and the transit to it. 0.4 m: the 0.8 m sideboard of the furnished room gets one; 1 m
+/// left an 0.8 m × 0.2 m strip unswept there.
+constexpr double kMinStepWidth = 0.4;
 
 /// A row that would sweep less floor than this (m²) that no other row sweeps is not planned: a
 /// spot of a few square centimetres is not worth a transit and two turns.
@@ -179,61 +181,94 @@ double farthestFree(double max, Free free) {
   return lo;
 }
 
-/// The rows of `cell`, bottom to top: along its lowest and its highest slice (so the disc brushes
-/// what bounds the cell below and above) and evenly between them, as few as keep neighbours at
-/// most `swath` apart. Where the cell widens going up by kMinStepWidth or more (it passes
-/// the top of something beside it: a sideboard against the wall) or narrows going up (it reaches
-/// the bottom of something), also along the wider slice next to the step: the even rows may pass
-/// it by up to a swath, and leave the floor beside the step's narrow side; pruneRows() keeps of
-/// such a row only the stretch that sweeps floor of its own. The lattice stops up to a step short
-/// of the walls; each row's ends, and the lowest and highest row, are then moved out as far as
-/// they stay free (exactly).
+/// The rows of `cell`, bottom to top. Some are fixed: along its lowest and its highest slice (so
+/// the disc brushes what bounds the cell below and above), moved out as far as they stay free
+/// (the lattice stops up to a step short of the walls), and along the wider slice beside every
+/// place where the cell widens or narrows by kMinStepWidth or more from one lattice row to the
+/// next (it passes the top or reaches the bottom of something beside it: a sideboard against the
+/// wall), so that the floor beside the step's narrow side is swept. Between two fixed rows the
+/// others are evenly spaced, at any height, as few as keep neighbours at most `swath` apart. Each
+/// row's ends are then moved out as far as they stay free (exactly).
 std::vector<Row> cellRows(const FreeSpace& space, const Cell& cell, double swath) {
-  const int rows = static_cast<int>(cell.size()) - 1;  // lattice rows spanned
+  const int top = static_cast<int>(cell.size()) - 1;  // the cell's highest slice
   const double h = space.resolution();
-  // Spaced by at most swath − h, so that moving the outer rows out by up to h keeps every gap
-  // within the swath.
-  const int count = rows == 0 ? 1 : static_cast<int>(std::ceil(rows * h / (swath - h) - 1e-9)) + 1;
+  auto height = [](const Row& row) { return row.left.y; };
   auto shifted = [](const Row& row, double dy) {
     return Row{{row.left.x, row.left.y + dy}, {row.right.x, row.right.y + dy}};
   };
   auto free = [&](const Row& row) { return space.segmentFree(row.left, row.right); };
-  // The slices the rows run along: evenly spaced, and beside the steps.
-  std::vector<std::pair<long, bool>> along;  // (slice index, an outer row)
-  for (int k = 0; k < count; ++k) {
-    along.emplace_back(count == 1 ? 0 : std::lround(double(k) * rows / (count - 1)),
-                       count > 1 && (k == 0 || k == count - 1));
-  }
-  const int step = std::max(1, static_cast<int>(std::lround(kMinStepWidth / h)));
-  for (int j = 1; j <= rows; ++j) {
-    const Slice& lower = cell[j - 1];
-    const Slice& upper = cell[j];
-    if (upper.a + step <= lower.a || upper.b >= lower.b + step) along.emplace_back(j, false);
-    if (lower.a + step <= upper.a || lower.b >= upper.b + step) along.emplace_back(j - 1, false);
-  }
-  std::sort(along.begin(), along.end(), [](const auto& x, const auto& y) {
-    return x.first != y.first ? x.first < y.first : x.second > y.second;  // outer first
-  });
-  along.erase(std::unique(along.begin(), along.end(),
-                          [](const auto& x, const auto& y) { return x.first == y.first; }),
-              along.end());
-  std::vector<Row> out;
-  for (const auto& [index, outer] : along) {
+  auto along = [&](int index) {  // the row along a slice
     const Slice& s = cell[index];
-    Row row{space.point(s.a, s.j), space.point(s.b, s.j)};
-    if (outer) {
-      const double out_dir = index == 0 ? -1 : 1;
-      row = shifted(row, out_dir * farthestFree(h, [&](double t) {
-                           return free(shifted(row, out_dir * t));
-                         }));
+    return Row{space.point(s.a, s.j), space.point(s.b, s.j)};
+  };
+  const double y0 = height(along(0));
+  // The row at height y between the slices below and above it, along the stretch they share, or
+  // (when that is not free) along the nearer slice.
+  auto between = [&](double y) {
+    const double f = std::clamp((y - y0) / h, 0.0, double(top));
+    const int below = std::min(static_cast<int>(std::floor(f)), top - 1);
+    const int a = std::max(cell[below].a, cell[below + 1].a);
+    const int b = std::min(cell[below].b, cell[below + 1].b);
+    const Row row{{space.point(a, 0).x, y}, {space.point(b, 0).x, y}};
+    return a <= b && free(row) ? row : along(f - below < 0.5 ? below : below + 1);
+  };
+
+  std::vector<Row> out{along(0)};
+  if (top > 0) {
+    const Row lowest = along(0), highest = along(top);
+    out[0] = shifted(lowest, -farthestFree(h, [&](double t) { return free(shifted(lowest, -t)); }));
+    out.push_back(
+        shifted(highest, farthestFree(h, [&](double t) { return free(shifted(highest, t)); })));
+    const double low = height(out[0]);
+    const double gap = height(out[1]) - low;
+    const int parts = static_cast<int>(std::ceil(gap / swath - 1e-9));
+    for (int p = 1; p < parts; ++p) out.push_back(between(low + gap * p / parts));
+  }
+  // Each end may move out to where the widest slice within a step of the row ends, and a step more.
+  for (Row& row : out) {
+    const double f = (height(row) - y0) / h;
+    int a = std::numeric_limits<int>::max(), b = std::numeric_limits<int>::min();
+    for (int j = std::max(0, static_cast<int>(std::floor(f)));
+         j <= std::min(top, static_cast<int>(std::ceil(f))); ++j) {
+      a = std::min(a, cell[j].a);
+      b = std::max(b, cell[j].b);
     }
-    row.left.x -= farthestFree(h, [&](double t) {
+    const double left_reach = std::max(0.0, row.left.x - space.point(a, 0).x) + h;
+    const double right_reach = std::max(0.0, space.point(b, 0).x - row.right.x) + h;
+    row.left.x -= farthestFree(left_reach, [&](double t) {
       return space.segmentFree({row.left.x - t, row.left.y}, row.left);
     });
-    row.right.x += farthestFree(h, [&](double t) {
+    row.right.x += farthestFree(right_reach, [&](double t) {
       return space.segmentFree(row.right, {row.right.x + t, row.right.y});
     });
-    out.push_back(row);
+  }
+  if (top > 0) {
+    // Along the stretch of slice j beyond the narrower slice `other` (a step), on either side, out
+    // to the free end.
+    const int step = std::max(1, static_cast<int>(std::lround(kMinStepWidth / h)));
+    auto beside = [&](int j, const Slice& other) {
+      const Slice& s = cell[j];
+      if (s.a + step <= other.a) {
+        Row row{space.point(s.a, s.j), space.point(other.a, s.j)};
+        row.left.x -= farthestFree(h, [&](double t) {
+          return space.segmentFree({row.left.x - t, row.left.y}, row.left);
+        });
+        out.push_back(row);
+      }
+      if (s.b >= other.b + step) {
+        Row row{space.point(other.b, s.j), space.point(s.b, s.j)};
+        row.right.x += farthestFree(h, [&](double t) {
+          return space.segmentFree(row.right, {row.right.x + t, row.right.y});
+        });
+        out.push_back(row);
+      }
+    };
+    for (int j = 1; j < top; ++j) {
+      beside(j, cell[j - 1]);
+      beside(j, cell[j + 1]);
+    }
+    std::sort(out.begin(), out.end(),
+              [&](const Row& x, const Row& y) { return height(x) < height(y); });
   }
   return out;
 }
@@ -305,37 +340,98 @@ struct Way {
 };
 constexpr Way kWays[] = {{true, true}, {true, false}, {false, true}, {false, false}};
 
-/// Row `k` of the sweep as (start, end).
-std::pair<Point2, Point2> rowOf(const std::vector<Row>& rows, Way way, std::size_t k) {
-  const Row& row = rows[way.upwards ? k : rows.size() - 1 - k];
-  const bool left_to_right = (k % 2 == 0) == way.first_left_to_right;
-  return left_to_right ? std::pair{row.left, row.right} : std::pair{row.right, row.left};
+/// A cell's rows in the order they are driven, each as (start, end).
+using Sweep = std::vector<std::pair<Point2, Point2>>;
+
+/// The rows of a cell as `way` sweeps them: the first row in the way's direction, then the others
+/// in the directions that make the straight jumps between rows shortest (dynamic programming over
+/// the two directions of each row), and in the order of their heights but where driving two
+/// neighbours the other way round makes the jumps shorter. Rows alternate, but a short row (a
+/// step's, or one pruneRows() shortened) would flip the alternation of all the rows after it:
+/// it is entered from its nearer end, after the row before or the row after it, whichever
+/// leaves the robot where the next row starts. Ties keep the alternation.
+Sweep sweep(const std::vector<Row>& rows, Way way) {
+  const std::size_t n = rows.size();
+  if (n == 0) return {};
+  std::vector<std::size_t> order(n);  // indices into rows, in the order driven
+  for (std::size_t k = 0; k < n; ++k) order[k] = way.upwards ? k : n - 1 - k;
+  auto ends = [&](std::size_t k, int d) {  // row order[k], d = 0 in its alternating direction
+    const Row& row = rows[order[k]];
+    const bool left_to_right = (k % 2 == 0) == way.first_left_to_right;
+    return left_to_right == (d == 0) ? std::pair{row.left, row.right}
+                                     : std::pair{row.right, row.left};
+  };
+  // The directions of the rows in `order` with the shortest jumps, and their total.
+  std::vector<std::array<double, 2>> cost(n);
+  std::vector<std::array<int, 2>> came(n);  // direction of row k − 1 on the best way to (k, d)
+  auto directions = [&](std::vector<int>* best) {
+    cost[0] = {0, std::numeric_limits<double>::infinity()};  // the first as the way says
+    for (std::size_t k = 1; k < n; ++k) {
+      for (int d = 0; d < 2; ++d) {
+        const Point2 start = ends(k, d).first;
+        const double stay = cost[k - 1][0] + geometry::distance(ends(k - 1, 0).second, start);
+        const double swap = cost[k - 1][1] + geometry::distance(ends(k - 1, 1).second, start);
+        came[k][d] = swap < stay - kMinLegLength ? 1 : 0;
+        cost[k][d] = came[k][d] ? swap : stay;
+      }
+    }
+    int d = cost[n - 1][1] < cost[n - 1][0] - kMinLegLength ? 1 : 0;
+    const double total = cost[n - 1][d];
+    if (best) {
+      best->assign(n, 0);
+      for (std::size_t k = n; k-- > 0;) {
+        (*best)[k] = d;
+        d = came[k][d];
+      }
+    }
+    return total;
+  };
+  double total = directions(nullptr);
+  for (bool improved = true; improved;) {
+    improved = false;
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      std::swap(order[k], order[k + 1]);
+      const double swapped = directions(nullptr);
+      if (swapped < total - kMinLegLength) {
+        total = swapped;
+        improved = true;
+      } else {
+        std::swap(order[k], order[k + 1]);
+      }
+    }
+  }
+  std::vector<int> chosen;
+  directions(&chosen);
+  Sweep out(n);
+  for (std::size_t k = 0; k < n; ++k) out[k] = ends(k, chosen[k]);
+  return out;
 }
 
 /// A cell in the sweep order, and the way it is swept.
 struct Visit {
   std::size_t cell = 0;
-  Way way;
+  std::size_t way = 0;  ///< index in kWays
 };
+
+/// sweeps[c][w]: cell c swept the way kWays[w].
+using Sweeps = std::vector<std::array<Sweep, std::size(kWays)>>;
 
 /// The order to sweep the cells with rows in: first greedily (from where the robot is, the cell
 /// whose first row starts nearest), then improved by moving single cells to another place in the
 /// order or sweeping them another way, while that shortens the straight jumps between cells (a
 /// lower bound of the transits), at most kMaxOrderRounds times.
-std::vector<Visit> orderCells(const std::vector<std::vector<Row>>& rows, const Point2& start) {
-  auto entry = [&](const Visit& v) { return rowOf(rows[v.cell], v.way, 0).first; };
-  auto exit = [&](const Visit& v) {
-    return rowOf(rows[v.cell], v.way, rows[v.cell].size() - 1).second;
-  };
+std::vector<Visit> orderCells(const Sweeps& sweeps, const Point2& start) {
+  auto entry = [&](const Visit& v) { return sweeps[v.cell][v.way].front().first; };
+  auto exit = [&](const Visit& v) { return sweeps[v.cell][v.way].back().second; };
   std::vector<Visit> order;
-  std::vector<bool> done(rows.size(), false);
+  std::vector<bool> done(sweeps.size(), false);
   Point2 at = start;
   for (;;) {
     std::optional<Visit> best;
     double best_distance = 0;
-    for (std::size_t c = 0; c < rows.size(); ++c) {
-      if (done[c] || rows[c].empty()) continue;
-      for (const Way& way : kWays) {
+    for (std::size_t c = 0; c < sweeps.size(); ++c) {
+      if (done[c] || sweeps[c][0].empty()) continue;
+      for (std::size_t way = 0; way < std::size(kWays); ++way) {
         const double d = geometry::distance(at, entry({c, way}));
         if (!best || d < best_distance) best = Visit{c, way}, best_distance = d;
       }
@@ -360,7 +456,7 @@ std::vector<Visit> orderCells(const std::vector<std::vector<Row>>& rows, const P
       double saved = jump(order, i, moved);
       if (i + 1 < order.size()) saved += jump(order, i + 1, order[i + 1]) - jump(rest, i, rest[i]);
       for (std::size_t k = 0; k <= rest.size() && !improved; ++k) {
-        for (const Way& way : kWays) {
+        for (std::size_t way = 0; way < std::size(kWays); ++way) {
           const Visit v{moved.cell, way};
           double cost = jump(rest, k, v);
           if (k < rest.size()) {
@@ -433,22 +529,130 @@ std::optional<Polyline> CoveragePlanner::transit(const Point2& from, const Point
   return space_.shortcut(out);
 }
 
-CoveragePlan CoveragePlanner::plan(const Point2& start) const {
-  CoveragePlan plan;
+std::vector<std::uint8_t> CoveragePlanner::reachableFloor(CoveragePlan& plan,
+                                                          const Point2& start) const {
   Mask floor(space_.size());
   for (int k = 0; k < space_.size(); ++k) floor[k] = space_.isFloor(k);
   plan.floor_area = area(space_, floor);
   plan.unreachable_area = plan.floor_area;
+  const std::optional<int> seed = space_.connect(start, FreeSpace::kTight);
+  if (!seed) return Mask(space_.size(), 0);
+  Mask reachable = floorReachedFrom(space_, flood(space_, *seed, FreeSpace::kTight));
+  plan.reachable_area = area(space_, reachable);
+  plan.unreachable_area = plan.floor_area - plan.reachable_area;
+  return reachable;
+}
+
+void CoveragePlanner::markSwept(std::vector<std::uint8_t>& swept, const Point2& at) const {
+  swept.resize(space_.size(), 0);
+  forPointsNear(space_, at, at, space_.robotRadius(), [&](int k) { swept[k] = 1; });
+}
+
+CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
+                                      const Point2& at) const {
+  CoveragePlan plan;
+  Mask missed = reachableFloor(plan, at);
+  for (int k = 0; k < space_.size(); ++k) {
+    missed[k] = missed[k] && !(k < static_cast<int>(swept.size()) && swept[k]);
+  }
+  // Where the robot can drive from here (with the clearance).
+  const std::optional<int> seed = space_.connect(at, FreeSpace::kFree);
+  if (!seed) return plan;
+  const Mask drivable = flood(space_, *seed, FreeSpace::kFree);
+  // Spots too small to go back for: 8-connected pieces of missed floor under kMinSpotArea.
+  const double h = space_.resolution();
+  Mask seen(space_.size(), 0);
+  for (int k = 0; k < space_.size(); ++k) {
+    if (!missed[k] || seen[k]) continue;
+    std::vector<int> spot{k}, frontier{k};
+    seen[k] = 1;
+    while (!frontier.empty()) {
+      const int q = frontier.back();
+      frontier.pop_back();
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          const int i = space_.column(q) + di, j = space_.row(q) + dj;
+          if (!space_.inside(i, j)) continue;
+          const int n = space_.index(i, j);
+          if (missed[n] && !seen[n]) {
+            seen[n] = 1;
+            spot.push_back(n);
+            frontier.push_back(n);
+          }
+        }
+      }
+    }
+    if (spot.size() * h * h < kMinSpotArea) {
+      for (int q : spot) missed[q] = 0;
+    }
+  }
+  // Places to stand: from the first missed point left (row by row), the drivable lattice point
+  // within the robot's radius of it whose disc covers most missed floor; what it covers is no
+  // longer missed. A point no drivable disc covers (a corner, the strip within the clearance of
+  // a wall) is dropped.
+  const double r = space_.robotRadius();
+  std::vector<Point2> targets;
+  for (int k = 0; k < space_.size(); ++k) {
+    if (!missed[k]) continue;
+    std::optional<int> best;
+    int best_count = 0;
+    const Point2 p = space_.point(k);
+    forPointsNear(space_, p, p, r, [&](int c) {
+      if (!drivable[c]) return;
+      int count = 0;
+      const Point2 centre = space_.point(c);
+      forPointsNear(space_, centre, centre, r, [&](int q) { count += missed[q]; });
+      if (count > best_count) best = c, best_count = count;
+    });
+    if (!best) {
+      missed[k] = 0;
+      continue;
+    }
+    const Point2 centre = space_.point(*best);
+    forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
+    targets.push_back(centre);
+  }
+  // Nearest first, each a transit and a short row along x (or a point, when that is not free).
+  Point2 here = at;
+  std::vector<bool> visited(targets.size(), false);
+  for (std::size_t n = 0; n < targets.size(); ++n) {
+    std::size_t next = targets.size();
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      if (visited[t]) continue;
+      if (next == targets.size() ||
+          geometry::distance(here, targets[t]) < geometry::distance(here, targets[next])) {
+        next = t;
+      }
+    }
+    visited[next] = true;
+    const Point2 target = targets[next];
+    const std::optional<Polyline> path = transit(here, target);
+    if (!path) continue;
+    if (geometry::pathLength(*path) > kMinLegLength) {
+      plan.legs.push_back(Leg{Leg::Kind::kTransit, *path});
+    }
+    Point2 end = target;
+    for (double dx : {kMinRowLength, -kMinRowLength}) {
+      const Point2 p{target.x + dx, target.y};
+      if (space_.segmentFree(target, p)) {
+        end = p;
+        break;
+      }
+    }
+    plan.legs.push_back(Leg{Leg::Kind::kRow, {target, end}});
+    here = end;
+  }
+  return plan;
+}
+
+CoveragePlan CoveragePlanner::plan(const Point2& start) const {
+  CoveragePlan plan;
 
   // 1. What the robot can reach from the start: with its own radius (the floor it may touch),
   //    and with the clearance (where the rows and transits run).
-  const std::optional<int> reach_seed = space_.connect(start, FreeSpace::kTight);
   const std::optional<int> plan_seed = space_.connect(start, FreeSpace::kFree);
-  if (!reach_seed) return plan;
-  const Mask reachable = floorReachedFrom(space_, flood(space_, *reach_seed, FreeSpace::kTight));
-  plan.reachable_area = area(space_, reachable);
-  plan.unreachable_area = plan.floor_area - plan.reachable_area;
-  if (!plan_seed) return plan;
+  const Mask reachable = reachableFloor(plan, start);
+  if (!plan_seed || plan.reachable_area == 0) return plan;
 
   // 2. Cells, and 3. the rows that cover each.
   const std::vector<Cell> cells = decompose(space_, flood(space_, *plan_seed, FreeSpace::kFree));
@@ -460,13 +664,12 @@ CoveragePlan CoveragePlanner::plan(const Point2& start) const {
   // 4. The order of the cells; 5. their rows, joined by transits.
   Mask swept(space_.size(), 0);
   Point2 at = start;
-  for (const Visit& visit : orderCells(rows, start)) {
-    for (std::size_t k = 0; k < rows[visit.cell].size(); ++k) {
-      auto [row_start, row_end] = rowOf(rows[visit.cell], visit.way, k);
-      // A row shortened to one side (pruneRows) may start nearer its other end.
-      if (geometry::distance(at, row_end) < geometry::distance(at, row_start)) {
-        std::swap(row_start, row_end);
-      }
+  Sweeps sweeps(rows.size());
+  for (std::size_t c = 0; c < rows.size(); ++c) {
+    for (std::size_t w = 0; w < std::size(kWays); ++w) sweeps[c][w] = sweep(rows[c], kWays[w]);
+  }
+  for (const Visit& visit : orderCells(sweeps, start)) {
+    for (auto [row_start, row_end] : sweeps[visit.cell][visit.way]) {
       const std::optional<Polyline> path = transit(at, row_start);
       if (!path) continue;  // cannot happen in one connected region; never assumed
       if (geometry::pathLength(*path) > kMinLegLength) {

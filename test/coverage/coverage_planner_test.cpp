@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -408,4 +409,56 @@ TEST(CoveragePlanner, refuses_a_swath_wider_than_the_robot) {
   CoverageOptions options;
   options.swath = 0.35;
   EXPECT_THROW(CoveragePlanner(emptyRoom(), options), std::invalid_argument);
+}
+
+/// The floor a robot marks driving `legs` (CoveragePlanner::markSwept every 5 mm), and its share
+/// of the reachable floor.
+struct Driven {
+  std::vector<std::uint8_t> swept;
+  double share(const CoveragePlanner& planner, const CoveragePlan& plan) const {
+    const double h = planner.freeSpace().resolution();
+    return std::count(swept.begin(), swept.end(), 1) * h * h / plan.reachable_area;
+  }
+  void drive(const CoveragePlanner& planner, const std::vector<Leg>& legs) {
+    for (const Leg& leg : legs) {
+      for (std::size_t s = 0; s + 1 < leg.points.size(); ++s) {
+        const Point2 a = leg.points[s], b = leg.points[s + 1];
+        const int n = 1 + static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 0.005);
+        for (int k = 0; k <= n; ++k) {
+          const double t = double(k) / n;
+          planner.markSwept(swept, {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+        }
+      }
+    }
+  }
+};
+
+TEST(CoveragePlanner, touch_up_goes_back_for_a_skipped_row_and_then_has_nothing_left) {
+  const World world = furnishedRoom();
+  const CoveragePlanner planner(world);
+  const CoveragePlan plan = planner.plan({world.initial_pose.x, world.initial_pose.y});
+  Driven all;
+  all.drive(planner, plan.legs);
+  // The longest row skipped: the touch-up brings the floor back to about what all legs sweep.
+  std::vector<Leg> legs = plan.legs;
+  const auto longest = std::max_element(legs.begin(), legs.end(), [](const Leg& a, const Leg& b) {
+    return (a.kind == Leg::Kind::kRow ? roomba_rrt::geometry::pathLength(a.points) : 0) <
+           (b.kind == Leg::Kind::kRow ? roomba_rrt::geometry::pathLength(b.points) : 0);
+  });
+  ASSERT_GT(roomba_rrt::geometry::pathLength(longest->points), 4.0);
+  legs.erase(longest);
+  Driven skipping;
+  skipping.drive(planner, legs);
+  ASSERT_LT(skipping.share(planner, plan), all.share(planner, plan) - 0.03);
+  const Point2 at = legs.back().points.back();
+  const CoveragePlan touch_up = planner.touchUp(skipping.swept, at);
+  expectSafe(world, touch_up);
+  ASSERT_FALSE(touch_up.legs.empty());
+  EXPECT_EQ(touch_up.legs.front().points.front().x, at.x);  // from where the robot is
+  skipping.drive(planner, touch_up.legs);
+  // Within half a percent of the floor (the spots are swept from lattice points, not the row).
+  EXPECT_GE(skipping.share(planner, plan), all.share(planner, plan) - 0.005);
+  // What is left, no free disc reaches or is too small to go back for.
+  EXPECT_TRUE(planner.touchUp(skipping.swept, touch_up.legs.back().points.back()).legs.empty());
+  EXPECT_GT(skipping.share(planner, plan), 0.98);
 }

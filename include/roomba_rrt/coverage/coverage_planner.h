@@ -11,10 +11,11 @@
 //      obstacle, or two parts of the free space join, or one splits) opens a new cell. Each
 //      cell is thus a stack of intervals, one per lattice row, without holes: it can be swept
 //      by horizontal back-and-forth rows without leaving it.
-//   3. Cover each cell with rows along x, at most a swath apart, along its lowest and highest
-//      lattice rows too, so the disc brushes what bounds the cell below and above. The lattice
-//      stops up to a step short of the walls: the outer rows and every row's ends are moved out
-//      as far as they stay free (exactly).
+//   3. Cover each cell with rows along x: along its lowest and highest lattice rows (so the disc
+//      brushes what bounds the cell below and above), evenly at any height between them at most a
+//      swath apart, and a short row along each step where the cell widens or narrows (a
+//      sideboard's top). The lattice stops up to a step short of the walls: the outer rows and
+//      every row's ends are moved out as far as they stay free (exactly).
 //   4. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
 //      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Rows
 //      that would sweep less than a small area no other row sweeps are dropped, the others
@@ -22,8 +23,13 @@
 //   5. Order the cells: greedily, from where the robot is, the cell whose first row (of four
 //      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
 //      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
+//      Within a cell each row's direction is chosen by dynamic programming (the rows alternate,
+//      but a short step row must not flip all the rows after it), and neighbouring rows are
+//      swapped while that shortens the jumps.
 //   6. Join consecutive rows with transits: the straight segment when it is free, else the
 //      shortest lattice path, shortcut (FreeSpace::shortestPath).
+//   7. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
+//      own poses, markSwept()): the corners its U-turns cut, rows it gave up.
 // Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
 // where the free space's connectivity changes, not at every vertex), so there are few long rows
 // and few transits; it needs no polygonal model (the lattice handles circles, rectangles and
@@ -44,6 +50,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -115,6 +122,20 @@ class CoveragePlanner {
   /// are those of `plan`.
   CoveragePlan resume(const CoveragePlan& plan, std::size_t leg, const Point2& at) const;
 
+  /// Marks in `swept` (one flag per lattice point of freeSpace(), sized on first use) the floor
+  /// under the robot's disc at `at`: what a robot knows it has cleaned, from its own poses.
+  void markSwept(std::vector<std::uint8_t>& swept, const Point2& at) const;
+
+  /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
+  /// `swept` does not mark (each spot of at least kMinSpotArea: the corners a U-turn cut, a
+  /// skipped row, the floor beside a bump), nearest first. Each spot is visited by a transit to
+  /// the free lattice point whose disc covers most of it, then a row of a few centimetres there.
+  /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
+  CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at) const;
+
+  /// A spot of missed floor smaller than this (m²) is not worth going back for.
+  static constexpr double kMinSpotArea = 0.004;
+
   const FreeSpace& freeSpace() const { return space_; }
   const CoverageOptions& options() const { return options_; }
 
@@ -123,6 +144,8 @@ class CoveragePlanner {
   /// the straight segment when it is free, else via the nearest lattice points and the shortest
   /// lattice path between them. nullopt when `to` cannot be reached.
   std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
+  /// The floor reachable from `start` (one flag per lattice point), with the plan's areas set.
+  std::vector<std::uint8_t> reachableFloor(CoveragePlan& plan, const Point2& start) const;
 
   CoverageOptions options_;
   FreeSpace space_;
