@@ -179,7 +179,9 @@ TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_f
     status = step(follow);
     double& fastest = row ? fastest_row : fastest_transit;
     fastest = std::max(fastest, context.cmd.v);
-    if (status == bt::Status::kRunning) EXPECT_EQ(context.state_name, &follow.root().name());
+    if (status == bt::Status::kRunning) {
+      EXPECT_EQ(context.state_name, &follow.root().name());
+    }
   }
   EXPECT_EQ(status, bt::Status::kSuccess);
   EXPECT_TRUE(progress().done());
@@ -190,28 +192,32 @@ TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_f
   EXPECT_EQ(progress().bumps, 0);
 }
 
-TEST_F(LeafTest, the_step_between_two_rows_is_driven_into_the_next_row_without_stopping) {
+TEST_F(LeafTest, the_u_turn_between_two_rows_is_driven_without_stopping) {
   plan();
   bt::Tree follow = build(kFollow);
-  int into_rows_on_the_move = 0, steps_between_rows = 0;
-  const std::vector<Leg>& legs = progress().plan.legs;
-  for (std::size_t k = 1; k + 1 < legs.size(); ++k) {
-    steps_between_rows += legs[k].kind == Leg::Kind::kTransit &&
-                          legs[k - 1].kind == Leg::Kind::kRow &&
-                          geometry::pathLength(legs[k].points) < 0.5;
+  const std::vector<Leg> legs = progress().plan.legs;
+  auto step_at = [&](std::size_t k) {  // a short transit into a row: a U-turn's step
+    return k + 1 < legs.size() && legs[k].kind == Leg::Kind::kTransit &&
+           legs[k + 1].kind == Leg::Kind::kRow && geometry::pathLength(legs[k].points) < 0.5;
+  };
+  // Each step is entered from its row and left into the next one on the move.
+  int changes_on_the_move = 0, changes_expected = 0;
+  for (std::size_t k = 0; k < legs.size(); ++k) {
+    changes_expected += step_at(k) + (legs[k].kind == Leg::Kind::kRow && step_at(k + 1));
   }
-  ASSERT_GT(steps_between_rows, 0);
+  ASSERT_GT(changes_expected, 4);
   bt::Status status = bt::Status::kRunning;
   for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
     const std::size_t leg = progress().leg;
-    const bool in_step = progress().plan.legs[leg].kind == Leg::Kind::kTransit;
+    const bool rows = !progress().touching_up;
     status = step(follow);
-    into_rows_on_the_move += in_step && !progress().done() && progress().leg == leg + 1 &&
-                             progress().plan.legs[leg + 1].kind == Leg::Kind::kRow &&
-                             context.cmd.v > 0;
+    if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
+      continue;
+    }
+    changes_on_the_move += step_at(leg) || (legs[leg].kind == Leg::Kind::kRow && step_at(leg + 1));
   }
   EXPECT_EQ(status, bt::Status::kSuccess);
-  EXPECT_EQ(into_rows_on_the_move, steps_between_rows);
+  EXPECT_EQ(changes_on_the_move, changes_expected);
 }
 
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
@@ -295,6 +301,9 @@ TEST_F(LeafTest, coverage_done_only_when_every_leg_is_driven) {
   EXPECT_EQ(done.tick(), bt::Status::kFailure);
   CoverageProgress finished = progress();
   finished.leg = finished.plan.legs.size();
+  board->set<CoverageProgress>("coverage", finished);
+  EXPECT_EQ(done.tick(), bt::Status::kFailure);  // the rows are driven, the touch-up is not
+  finished.touching_up = true;
   board->set<CoverageProgress>("coverage", finished);
   EXPECT_EQ(done.tick(), bt::Status::kSuccess);
 }

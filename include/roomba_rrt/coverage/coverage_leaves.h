@@ -5,8 +5,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/navigation/nav_leaves.h"
@@ -21,8 +23,13 @@ struct CoverageProgress {
   int tries = 0;         ///< resumes since the last row was finished (skip_after counts them)
   int bumps = 0;         ///< bumps since the cleaning started
   int skipped_rows = 0;  ///< rows given up (skip_after tries)
+  /// The floor under the robot's disc so far, one flag per lattice point of the planner's
+  /// FreeSpace (CoveragePlanner::markSwept, from the robot's poses while FollowCoverage runs).
+  std::vector<std::uint8_t> swept;
+  /// True once the rows are driven and `plan` is the touch-up of the spots they missed.
+  bool touching_up = false;
 
-  bool done() const { return leg >= plan.legs.size(); }
+  bool done() const { return touching_up && leg >= plan.legs.size(); }
 };
 
 /// The polyline the robot still has to drive: the points of the current leg and every later one,
@@ -45,18 +52,21 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   0.5 m/s), transits at `transit_speed` (within the follower's limits; the short step
 ///   between two rows is driven with the next row as one path, at the row's speed), turning in
 ///   place towards each leg's start where the previous one ended. A finished leg advances
-///   `coverage.leg` (a finished row also clears `tries`). RUNNING with the command; SUCCESS when
-///   every leg is driven; FAILURE with `error` when the bumper is pressed ("bumped", counted in
-///   `bumps`), the robot strayed from the leg or the guard held it still ("blocked"), or there is
-///   no progress or pose. The leg it failed in stays `coverage.leg`, for ResumeCoverage.
+///   `coverage.leg` (a finished row also clears `tries`). It marks the floor under the robot in
+///   `coverage.swept` on every tick; once the rows are driven it goes back for the spots they
+///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows), once.
+///   RUNNING with the command; SUCCESS when every leg of the touch-up is driven too; FAILURE with
+///   `error` when the bumper is pressed ("bumped", counted in `bumps`), the robot strayed from the
+///   leg or the guard held it still ("blocked"), or there is no progress or pose. The leg it failed
+///   in stays `coverage.leg`, for ResumeCoverage.
 /// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
 ///   of the plan from where the robot stands (CoveragePlanner::resume from `coverage.leg`: the
 ///   rest of the row it was in, or the row its transit led to). After `skip_after` resumes
 ///   without finishing a row, that row is given up (`skipped_rows`) and the next one is resumed
 ///   instead. SUCCESS with the new progress (leg 0; nothing left that can be reached: an empty
 ///   plan, done); FAILURE when there is no progress or pose.
-/// - CoverageDone coverage="{coverage}": SUCCESS when a plan was made and every leg is driven,
-///   else FAILURE.
+/// - CoverageDone coverage="{coverage}": SUCCESS when a plan was made and every leg of it and of
+///   its touch-up is driven, else FAILURE.
 ///
 /// The leaves plan in `world` (its walls, furniture or map; the planner is built with `options`
 /// when the first PlanCoverage or ResumeCoverage is, so a factory that only describes its leaves
