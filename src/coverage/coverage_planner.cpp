@@ -246,17 +246,24 @@ std::vector<Row> cellRows(const FreeSpace& space, const Cell& cell, double swath
     // Along the stretch of slice j beyond the narrower slice `other` (a step), on either side, out
     // to the free end.
     const int step = std::max(1, static_cast<int>(std::lround(kMinStepWidth / h)));
-    auto beside = [&](int j, const Slice& other) {
+    // Moved towards the step (`towards` −1: it is below, +1: above) as far as it stays free, as
+    // the outer rows are, so that the disc brushes what the step is the edge of.
+    auto beside = [&](int j, const Slice& other, double towards) {
       const Slice& s = cell[j];
+      auto towardsStep = [&](const Row& row) {
+        return shifted(row, towards * farthestFree(h, [&](double t) {
+                              return free(shifted(row, towards * t));
+                            }));
+      };
       if (s.a + step <= other.a) {
-        Row row{space.point(s.a, s.j), space.point(other.a, s.j)};
+        Row row = towardsStep({space.point(s.a, s.j), space.point(other.a, s.j)});
         row.left.x -= farthestFree(h, [&](double t) {
           return space.segmentFree({row.left.x - t, row.left.y}, row.left);
         });
         out.push_back(row);
       }
       if (s.b >= other.b + step) {
-        Row row{space.point(other.b, s.j), space.point(s.b, s.j)};
+        Row row = towardsStep({space.point(other.b, s.j), space.point(s.b, s.j)});
         row.right.x += farthestFree(h, [&](double t) {
           return space.segmentFree(row.right, {row.right.x + t, row.right.y});
         });
@@ -264,8 +271,8 @@ std::vector<Row> cellRows(const FreeSpace& space, const Cell& cell, double swath
       }
     };
     for (int j = 1; j < top; ++j) {
-      beside(j, cell[j - 1]);
-      beside(j, cell[j + 1]);
+      beside(j, cell[j - 1], -1);
+      beside(j, cell[j + 1], +1);
     }
     std::sort(out.begin(), out.end(),
               [&](const Row& x, const Row& y) { return height(x) < height(y); });
@@ -559,8 +566,11 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   const std::optional<int> seed = space_.connect(at, FreeSpace::kFree);
   if (!seed) return plan;
   const Mask drivable = flood(space_, *seed, FreeSpace::kFree);
-  // Spots too small to go back for: 8-connected pieces of missed floor under kMinSpotArea.
+  // The spots: 8-connected pieces of missed floor. Those under kMinSpotArea are not worth going
+  // back for.
   const double h = space_.resolution();
+  const double r = space_.robotRadius();
+  std::vector<std::pair<Point2, Point2>> visits;  // rows to drive, in any direction
   Mask seen(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
     if (!missed[k] || seen[k]) continue;
@@ -587,11 +597,10 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
     }
   }
   // Places to stand: from the first missed point left (row by row), the drivable lattice point
-  // within the robot's radius of it whose disc covers most missed floor; what it covers is no
-  // longer missed. A point no drivable disc covers (a corner, the strip within the clearance of
-  // a wall) is dropped.
-  const double r = space_.robotRadius();
-  std::vector<Point2> targets;
+  // within the robot's radius of it whose disc covers most missed floor, with a row of a few
+  // centimetres there; what it covers is no longer missed. A point no drivable lattice point
+  // covers is left for the strips below.
+  Mask uncovered(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
     if (!missed[k]) continue;
     std::optional<int> best;
@@ -606,43 +615,125 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
     });
     if (!best) {
       missed[k] = 0;
+      uncovered[k] = 1;
       continue;
     }
     const Point2 centre = space_.point(*best);
     forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
-    targets.push_back(centre);
-  }
-  // Nearest first, each a transit and a short row along x (or a point, when that is not free).
-  Point2 here = at;
-  std::vector<bool> visited(targets.size(), false);
-  for (std::size_t n = 0; n < targets.size(); ++n) {
-    std::size_t next = targets.size();
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      if (visited[t]) continue;
-      if (next == targets.size() ||
-          geometry::distance(here, targets[t]) < geometry::distance(here, targets[next])) {
-        next = t;
+    Point2 end = centre;
+    for (double dx : {kMinRowLength, -kMinRowLength}) {
+      const Point2 e{centre.x + dx, centre.y};
+      if (space_.segmentFree(centre, e)) {
+        end = e;
+        break;
       }
     }
+    visits.push_back({centre, end});
+  }
+  // What is left along a wall or a piece of furniture, in runs of a lattice column or row (the
+  // floor U-turns' arcs leave between the rows' ends, closer to the wall than any lattice point
+  // the robot may stand on): a row along each run, as close as stays free (stripRow()), when the
+  // disc reaches the run from there. The rest (the corners the clearance keeps the robot out of)
+  // stays.
+  // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
+  // transit and two turns more. When that row is not free, each run on its own.
+  auto sweepStrip = [&](const std::vector<std::vector<int>>& runs) {
+    std::vector<int> merged;
+    for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
+    std::vector<std::vector<int>> tries{merged};
+    if (runs.size() > 1) tries.insert(tries.end(), runs.begin(), runs.end());
+    for (const auto& points : tries) {
+      if (static_cast<int>(points.size()) <= kStripLength) continue;
+      const std::optional<std::pair<Point2, Point2>> row = stripRow(points);
+      if (!row) continue;
+      forPointsNear(space_, row->first, row->second, r, [&](int c) { uncovered[c] = 0; });
+      visits.push_back(*row);
+      if (&points == &tries.front()) return;
+    }
+  };
+  for (const bool vertical : {true, false}) {
+    const int lines = vertical ? space_.width() : space_.height();
+    const int length = vertical ? space_.height() : space_.width();
+    for (int line = 0; line < lines; ++line) {
+      std::vector<std::vector<int>> runs;  // runs of uncovered points, at most kStripGap apart
+      int last = -kStripGap - 2;           // where the last uncovered point was along the line
+      for (int along = 0; along < length; ++along) {
+        const int q = vertical ? space_.index(line, along) : space_.index(along, line);
+        if (!uncovered[q]) continue;
+        if (along - last > kStripGap + 1) {
+          sweepStrip(runs);
+          runs.clear();
+        }
+        if (runs.empty() || along - last > 1) runs.emplace_back();
+        runs.back().push_back(q);
+        last = along;
+      }
+      sweepStrip(runs);
+    }
+  }
+  // Nearest first (either end), each a transit and its row.
+  Point2 here = at;
+  std::vector<bool> visited(visits.size(), false);
+  for (std::size_t n = 0; n < visits.size(); ++n) {
+    std::size_t next = visits.size();
+    double next_distance = 0;
+    for (std::size_t v = 0; v < visits.size(); ++v) {
+      if (visited[v]) continue;
+      const double d = std::min(geometry::distance(here, visits[v].first),
+                                geometry::distance(here, visits[v].second));
+      if (next == visits.size() || d < next_distance) next = v, next_distance = d;
+    }
     visited[next] = true;
-    const Point2 target = targets[next];
-    const std::optional<Polyline> path = transit(here, target);
+    auto [from, to] = visits[next];
+    if (geometry::distance(here, to) < geometry::distance(here, from)) std::swap(from, to);
+    const std::optional<Polyline> path = transit(here, from);
     if (!path) continue;
     if (geometry::pathLength(*path) > kMinLegLength) {
       plan.legs.push_back(Leg{Leg::Kind::kTransit, *path});
     }
-    Point2 end = target;
-    for (double dx : {kMinRowLength, -kMinRowLength}) {
-      const Point2 p{target.x + dx, target.y};
-      if (space_.segmentFree(target, p)) {
-        end = p;
-        break;
-      }
-    }
-    plan.legs.push_back(Leg{Leg::Kind::kRow, {target, end}});
-    here = end;
+    plan.legs.push_back(Leg{Leg::Kind::kRow, {from, to}});
+    here = to;
   }
   return plan;
+}
+
+std::optional<std::pair<Point2, Point2>> CoveragePlanner::stripRow(
+    const std::vector<int>& spot) const {
+  const double h = space_.resolution();
+  const double r = space_.robotRadius();
+  int i0 = space_.width(), i1 = -1, j0 = space_.height(), j1 = -1;
+  Point2 mean{0, 0};
+  for (int q : spot) {
+    i0 = std::min(i0, space_.column(q)), i1 = std::max(i1, space_.column(q));
+    j0 = std::min(j0, space_.row(q)), j1 = std::max(j1, space_.row(q));
+    mean = {mean.x + space_.point(q).x / spot.size(), mean.y + space_.point(q).y / spot.size()};
+  }
+  const bool vertical = i1 - i0 <= kStripWidth && j1 - j0 >= kStripLength;
+  const bool horizontal = j1 - j0 <= kStripWidth && i1 - i0 >= kStripLength;
+  if (!vertical && !horizontal) return std::nullopt;
+  // The row along the strip, `offset` from its middle line (across it).
+  const Point2 low = space_.point(i0, j0), high = space_.point(i1, j1);
+  auto along = [&](double offset) {
+    return vertical ? std::pair{Point2{mean.x + offset, low.y}, Point2{mean.x + offset, high.y}}
+                    : std::pair{Point2{low.x, mean.y + offset}, Point2{high.x, mean.y + offset}};
+  };
+  auto free = [&](double offset) {
+    const auto [a, b] = along(offset);
+    return space_.segmentFree(a, b);
+  };
+  // Out from the strip, on the side with room, to the first free row; then back towards it as
+  // far as it stays free (exactly). Kept when the disc reaches the strip from there.
+  const int most = static_cast<int>(std::ceil(space_.planningRadius() / h)) + 3;
+  for (const double side : {1.0, -1.0}) {
+    for (int m = 1; m <= most; ++m) {
+      if (!free(side * m * h)) continue;
+      const double offset =
+          side * (m * h - farthestFree(h, [&](double t) { return free(side * (m * h - t)); }));
+      if (std::fabs(offset) < r) return along(offset);
+      break;
+    }
+  }
+  return std::nullopt;
 }
 
 CoveragePlan CoveragePlanner::plan(const Point2& start) const {

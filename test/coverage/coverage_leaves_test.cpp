@@ -173,7 +173,7 @@ TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_f
       R"(<FollowCoverage coverage="{coverage}" pose="{pose}" transit_speed="0.7" error="{error}"/>)");
   double fastest_row = 0, fastest_transit = 0;
   bt::Status status = bt::Status::kRunning;
-  for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
+  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
     const CoverageProgress& p = progress();
     const bool row = !p.done() && p.plan.legs[p.leg].kind == Leg::Kind::kRow;
     status = step(follow);
@@ -207,7 +207,7 @@ TEST_F(LeafTest, the_u_turn_between_two_rows_is_driven_without_stopping) {
   }
   ASSERT_GT(changes_expected, 4);
   bt::Status status = bt::Status::kRunning;
-  for (int i = 0; i < 60 * 120 && status == bt::Status::kRunning; ++i) {
+  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
     const std::size_t leg = progress().leg;
     const bool rows = !progress().touching_up;
     status = step(follow);

@@ -462,3 +462,32 @@ TEST(CoveragePlanner, touch_up_goes_back_for_a_skipped_row_and_then_has_nothing_
   EXPECT_TRUE(planner.touchUp(skipping.swept, touch_up.legs.back().points.back()).legs.empty());
   EXPECT_GT(skipping.share(planner, plan), 0.98);
 }
+
+TEST(CoveragePlanner, touch_up_sweeps_a_strip_along_a_wall_with_one_row_beside_it) {
+  // What the U-turns' arcs leave: the floor within 2.5 cm of the left wall, closer to it than any
+  // lattice point the robot may stand on, for 1.5 m.
+  const World world = emptyRoom();
+  const CoveragePlanner planner(world);
+  const auto& space = planner.freeSpace();
+  std::vector<std::uint8_t> swept(space.size(), 1);
+  int strip = 0;
+  for (int k = 0; k < space.size(); ++k) {
+    const Point2 p = space.point(k);
+    if (p.x < 0.025 && p.y > 1.0 && p.y < 2.5) swept[k] = 0, ++strip;
+  }
+  ASSERT_GT(strip, 50);
+  const CoveragePlan touch_up = planner.touchUp(swept, {2.0, 2.0});
+  expectSafe(world, touch_up);
+  std::vector<Leg> rows;
+  for (const Leg& leg : touch_up.legs) {
+    if (leg.kind == Leg::Kind::kRow) rows.push_back(leg);
+  }
+  ASSERT_EQ(rows.size(), 1u);
+  const Point2 a = rows[0].points.front(), b = rows[0].points.back();
+  EXPECT_NEAR(a.x, b.x, 1e-9);  // along the wall
+  EXPECT_LT(a.x, world.robot_radius + planner.options().clearance + 0.003);
+  EXPECT_NEAR(std::fabs(a.y - b.y), 1.5, 0.05);
+  Driven driven{swept};
+  driven.drive(planner, touch_up.legs);
+  EXPECT_TRUE(std::all_of(driven.swept.begin(), driven.swept.end(), [](auto s) { return s == 1; }));
+}

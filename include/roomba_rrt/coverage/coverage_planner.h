@@ -52,6 +52,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "roomba_rrt/coverage/free_space.h"
@@ -144,6 +145,14 @@ class CoveragePlanner {
   /// the straight segment when it is free, else via the nearest lattice points and the shortest
   /// lattice path between them. nullopt when `to` cannot be reached.
   std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
+  /// A row along `spot` (lattice points of missed floor) when it is a thin strip (at most
+  /// kStripWidth + 1 points across, at least kStripLength + 1 along, in x or y: the floor a U-turn
+  /// left by a wall), as close to it as stays free, if the disc reaches it from there.
+  std::optional<std::pair<Point2, Point2>> stripRow(const std::vector<int>& spot) const;
+  static constexpr int kStripWidth = 2;
+  static constexpr int kStripLength = 4;
+  /// Strips along one line this many lattice points apart or closer are swept by one row.
+  static constexpr int kStripGap = 16;
   /// The floor reachable from `start` (one flag per lattice point), with the plan's areas set.
   std::vector<std::uint8_t> reachableFloor(CoveragePlan& plan, const Point2& start) const;
 
