@@ -11,11 +11,12 @@ namespace {
 
 const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
-    "                       [--world FILE] [--pose X,Y[,THETA]] [--config FILE] [--tree FILE]\n"
+    "                       [--world FILE] [--pose X,Y[,THETA]] [--crop X0,Y0,X1,Y1]\n"
+    "                       [--config FILE] [--tree FILE]\n"
     "                       [--csv traj.csv] [--png map.png]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
-    "                       [--plot coverage.png]\n"
+    "                       [--crop ...] [--plot coverage.png]\n"
     "  --behavior  fsm (state machine), bt (behavior tree) or coverage (the cleaning tree,\n"
     "              config/roomba_coverage_tree.xml: planned rows; reports the coverage of the\n"
     "              reachable floor, the time to 90 / 95 / 99 % of it and the bumps)\n"
@@ -25,6 +26,8 @@ const char* const kUsage =
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
     "              world or map_server YAML\n"
     "  --pose      where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
+    "  --crop      keep only this region of the world (m): its edges become walls (a large\n"
+    "              map cut to a few rooms)\n"
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree) or coverage\n"
     "              (default: config/roomba_coverage_tree.xml)\n"
@@ -101,6 +104,8 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
       o.world = worldFile(value);
     } else if (flag == "--pose") {
       o.pose = value;
+    } else if (flag == "--crop") {
+      o.crop = value;
     } else if (flag == "--config") {
       o.config = value;
     } else if (flag == "--tree") {

@@ -14,6 +14,7 @@ struct CoverageOptions {
   int seeds = 1;
   std::string world = ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml";
   std::string pose;  ///< --pose X,Y[,THETA]; "" = the world's initial pose
+  std::string crop;  ///< --crop X0,Y0,X1,Y1; "" = the whole world
   std::string config = ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml";
   std::string tree;
   std::string csv;

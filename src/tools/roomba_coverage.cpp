@@ -369,7 +369,7 @@ int run(int argc, char** argv) {
     std::fputs(coverageUsage(), stdout);
     return 0;
   }
-  const world::World world = loadToolWorld(o.world, o.pose);
+  const world::World world = loadToolWorld(o.world, o.pose, o.crop);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
   if (o.compare) return runReachable(o, world, params, {"fsm", "bt", "coverage"});

@@ -37,8 +37,29 @@ std::string worldFile(const std::string& value) {
   return value;
 }
 
-world::World loadToolWorld(const std::string& file, const std::string& pose) {
+world::World loadToolWorld(const std::string& file, const std::string& pose,
+                           const std::string& crop) {
   world::World world = world::readWorldFile(file);
+  if (!crop.empty()) {
+    std::vector<double> box;
+    std::size_t begin = 0;
+    while (begin <= crop.size()) {
+      const std::size_t comma = std::min(crop.find(',', begin), crop.size());
+      box.push_back(parseDoubleFlag("--crop", crop.substr(begin, comma - begin)));
+      begin = comma + 1;
+    }
+    if (box.size() != 4) bad("--crop", "expected X0,Y0,X1,Y1, got '" + crop + "'");
+    const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
+    if (!(box[0] >= world.origin.x && box[1] >= world.origin.y && box[2] <= x1 && box[3] <= y1 &&
+          box[2] - box[0] > 2 * world.robot_radius && box[3] - box[1] > 2 * world.robot_radius)) {
+      bad("--crop", "must lie within the world (" + util::show(world.origin.x) + ", " +
+                        util::show(world.origin.y) + ") to (" + util::show(x1) + ", " +
+                        util::show(y1) + ") and be wider than the robot, got '" + crop + "'");
+    }
+    world.origin = {box[0], box[1]};
+    world.width = box[2] - box[0];
+    world.height = box[3] - box[1];
+  }
   if (!pose.empty()) {
     std::vector<double> xyt;
     std::size_t begin = 0;

@@ -24,7 +24,10 @@ std::string worldFile(const std::string& value);
 /// The world of a tool's --world file with --pose "X,Y" or "X,Y,THETA" (m, rad; "" keeps the
 /// file's initial pose: a map's (0, 0)) as the robot's initial pose, validated. Throws
 /// util::InvalidInput naming the file and the field; a pose in a wall says to pass --pose.
-world::World loadToolWorld(const std::string& file, const std::string& pose);
+/// `crop` ("X0,Y0,X1,Y1", m; empty: none) keeps that region of the world: its edges become the
+/// walls (a large map cut to a room or two).
+world::World loadToolWorld(const std::string& file, const std::string& pose,
+                           const std::string& crop = "");
 
 /// "X,Y" of a flag: throws std::invalid_argument naming the flag otherwise.
 planning::Point2 parsePointFlag(const std::string& flag, const std::string& value);

@@ -164,5 +164,27 @@ TEST(CoverageArguments, bad_values_and_combinations_are_refused_naming_the_flag)
             "--robots runs the lab's behaviours: fsm or bt");
 }
 
+TEST(ToolArguments, crop_keeps_a_region_of_the_world_whose_edges_become_walls) {
+  const std::string apartment = worldFile("apartment");
+  const roomba_rrt::world::World whole = loadToolWorld(apartment, "");
+  const roomba_rrt::world::World part = loadToolWorld(apartment, "", "-2,-1.5,2,1.5");
+  EXPECT_EQ(part.origin.x, -2.0);
+  EXPECT_EQ(part.origin.y, -1.5);
+  EXPECT_EQ(part.width, 4.0);
+  EXPECT_EQ(part.height, 3.0);
+  ASSERT_TRUE(part.map);
+  EXPECT_EQ(part.map_file, whole.map_file);  // the same grid, fewer rooms of it
+  EXPECT_EQ(parse({"--behavior", "coverage", "--crop", "-1,-2,3,4"}).crop, "-1,-2,3,4");
+  EXPECT_EQ(refusal([&] { loadToolWorld(apartment, "", "0,0,4"); }),
+            "--crop: expected X0,Y0,X1,Y1, got '0,0,4'");
+  EXPECT_NE(refusal([&] {
+              loadToolWorld(apartment, "", "-1000,0,4,3");
+            }).find("--crop: must lie within the world"),
+            std::string::npos);
+  EXPECT_NE(
+      refusal([&] { loadToolWorld(apartment, "", "0,0,0.2,3"); }).find("wider than the robot"),
+      std::string::npos);
+}
+
 }  // namespace
 }  // namespace roomba_rrt::tools
