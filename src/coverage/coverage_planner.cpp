@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -596,60 +597,45 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
       for (int q : spot) missed[q] = 0;
     }
   }
-  // Places to stand: from the first missed point left (row by row), the drivable lattice point
-  // within the robot's radius of it whose disc covers most missed floor, with a row of a few
-  // centimetres there; what it covers is no longer missed. A point no drivable lattice point
-  // covers is left for the strips below.
+  // First what is missed along a wall or a piece of furniture, closer to it than any drivable
+  // lattice point reaches (the floor U-turns' arcs leave between the rows' ends), in runs of a
+  // lattice column or row: a row along each run, as close as stays free (stripRow()), when the
+  // disc reaches the run from there. It sweeps the missed floor beside the run too.
   Mask uncovered(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
     if (!missed[k]) continue;
-    std::optional<int> best;
-    int best_count = 0;
+    bool reached = false;
     const Point2 p = space_.point(k);
-    forPointsNear(space_, p, p, r, [&](int c) {
-      if (!drivable[c]) return;
-      int count = 0;
-      const Point2 centre = space_.point(c);
-      forPointsNear(space_, centre, centre, r, [&](int q) { count += missed[q]; });
-      if (count > best_count) best = c, best_count = count;
-    });
-    if (!best) {
-      missed[k] = 0;
-      uncovered[k] = 1;
-      continue;
-    }
-    const Point2 centre = space_.point(*best);
-    forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
-    Point2 end = centre;
-    for (double dx : {kMinRowLength, -kMinRowLength}) {
-      const Point2 e{centre.x + dx, centre.y};
-      if (space_.segmentFree(centre, e)) {
-        end = e;
-        break;
-      }
-    }
-    visits.push_back({centre, end});
+    forPointsNear(space_, p, p, r, [&](int c) { reached = reached || drivable[c]; });
+    uncovered[k] = !reached;
   }
-  // What is left along a wall or a piece of furniture, in runs of a lattice column or row (the
-  // floor U-turns' arcs leave between the rows' ends, closer to the wall than any lattice point
-  // the robot may stand on): a row along each run, as close as stays free (stripRow()), when the
-  // disc reaches the run from there. The rest (the corners the clearance keeps the robot out of)
-  // stays.
   // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
   // transit and two turns more. When that row is not free, each run on its own.
+  // A run (its points in order along the line) that no free row reaches as a whole (something
+  // stands near one end: a plant in the corner) is tried in halves.
+  std::function<void(const std::vector<int>&)> sweepRun = [&](const std::vector<int>& points) {
+    if (static_cast<int>(points.size()) <= kStripLength) return;
+    if (const std::optional<std::pair<Point2, Point2>> row = stripRow(points)) {
+      forPointsNear(space_, row->first, row->second, r,
+                    [&](int c) { uncovered[c] = missed[c] = 0; });
+      visits.push_back(*row);
+      return;
+    }
+    const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
+    sweepRun(std::vector<int>(points.begin(), middle));
+    sweepRun(std::vector<int>(middle, points.end()));
+  };
   auto sweepStrip = [&](const std::vector<std::vector<int>>& runs) {
     std::vector<int> merged;
     for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
-    std::vector<std::vector<int>> tries{merged};
-    if (runs.size() > 1) tries.insert(tries.end(), runs.begin(), runs.end());
-    for (const auto& points : tries) {
-      if (static_cast<int>(points.size()) <= kStripLength) continue;
-      const std::optional<std::pair<Point2, Point2>> row = stripRow(points);
-      if (!row) continue;
-      forPointsNear(space_, row->first, row->second, r, [&](int c) { uncovered[c] = 0; });
+    if (static_cast<int>(merged.size()) <= kStripLength) return;
+    if (const std::optional<std::pair<Point2, Point2>> row = stripRow(merged)) {
+      forPointsNear(space_, row->first, row->second, r,
+                    [&](int c) { uncovered[c] = missed[c] = 0; });
       visits.push_back(*row);
-      if (&points == &tries.front()) return;
+      return;
     }
+    for (const auto& run : runs) sweepRun(run);
   };
   for (const bool vertical : {true, false}) {
     const int lines = vertical ? space_.width() : space_.height();
@@ -671,7 +657,40 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
       sweepStrip(runs);
     }
   }
-  // Nearest first (either end), each a transit and its row.
+  // Places to stand for the rest: from the first missed point left (row by row), the drivable
+  // lattice point within the robot's radius of it whose disc covers most missed floor, with a
+  // row of a few centimetres there; what it covers is no longer missed. A point no drivable
+  // lattice point covers (a corner the clearance keeps the robot out of) is dropped.
+  for (int k = 0; k < space_.size(); ++k) {
+    if (!missed[k]) continue;
+    std::optional<int> best;
+    int best_count = 0;
+    const Point2 p = space_.point(k);
+    forPointsNear(space_, p, p, r, [&](int c) {
+      if (!drivable[c]) return;
+      int count = 0;
+      const Point2 centre = space_.point(c);
+      forPointsNear(space_, centre, centre, r, [&](int q) { count += missed[q]; });
+      if (count > best_count) best = c, best_count = count;
+    });
+    if (!best) {
+      missed[k] = 0;
+      continue;
+    }
+    const Point2 centre = space_.point(*best);
+    forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
+    Point2 end = centre;
+    for (double dx : {kMinRowLength, -kMinRowLength}) {
+      const Point2 e{centre.x + dx, centre.y};
+      if (space_.segmentFree(centre, e)) {
+        end = e;
+        break;
+      }
+    }
+    visits.push_back({centre, end});
+  }
+  // Nearest first (either end), each a transit and its row. (Improving the tour by 2-opt on the
+  // straight jumps did not make the touch-up quicker: its cost is the turns as much as the jumps.)
   Point2 here = at;
   std::vector<bool> visited(visits.size(), false);
   for (std::size_t n = 0; n < visits.size(); ++n) {
