@@ -609,32 +609,30 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
     forPointsNear(space_, p, p, r, [&](int c) { reached = reached || drivable[c]; });
     uncovered[k] = !reached;
   }
-  // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
-  // transit and two turns more. When that row is not free, each run on its own.
-  // A run (its points in order along the line) that no free row reaches as a whole (something
-  // stands near one end: a plant in the corner) is tried in halves.
+  // A row along `points` (in order along a line), sweeping what is missed beside it; false when
+  // no free row reaches them. Too few points to be worth a row: nothing to do (true).
+  auto stripVisit = [&](const std::vector<int>& points) {
+    if (static_cast<int>(points.size()) <= kStripLength) return true;
+    const std::optional<std::pair<Point2, Point2>> row = stripRow(points);
+    if (!row) return false;
+    forPointsNear(space_, row->first, row->second, r, [&](int c) { uncovered[c] = missed[c] = 0; });
+    visits.push_back(*row);
+    return true;
+  };
+  // A run that no free row reaches as a whole (something stands near one end: a plant in the
+  // corner) is tried in halves.
   std::function<void(const std::vector<int>&)> sweepRun = [&](const std::vector<int>& points) {
-    if (static_cast<int>(points.size()) <= kStripLength) return;
-    if (const std::optional<std::pair<Point2, Point2>> row = stripRow(points)) {
-      forPointsNear(space_, row->first, row->second, r,
-                    [&](int c) { uncovered[c] = missed[c] = 0; });
-      visits.push_back(*row);
-      return;
-    }
+    if (stripVisit(points)) return;
     const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
     sweepRun(std::vector<int>(points.begin(), middle));
     sweepRun(std::vector<int>(middle, points.end()));
   };
+  // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
+  // transit and two turns more. When that row is not free, each run on its own.
   auto sweepStrip = [&](const std::vector<std::vector<int>>& runs) {
     std::vector<int> merged;
     for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
-    if (static_cast<int>(merged.size()) <= kStripLength) return;
-    if (const std::optional<std::pair<Point2, Point2>> row = stripRow(merged)) {
-      forPointsNear(space_, row->first, row->second, r,
-                    [&](int c) { uncovered[c] = missed[c] = 0; });
-      visits.push_back(*row);
-      return;
-    }
+    if (stripVisit(merged)) return;
     for (const auto& run : runs) sweepRun(run);
   };
   for (const bool vertical : {true, false}) {
