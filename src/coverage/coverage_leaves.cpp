@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "roomba_rrt/navigation/guarded_follower.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::coverage {
 
@@ -80,6 +81,10 @@ struct Driving {
   static constexpr double kJoinedTransit = 0.5;
   static constexpr double kJoinedLookahead = 0.2;
   static constexpr double kMaxJoinedTurn = 2.4;  ///< rad: a U-turn's corners are π/2
+  /// A leg with less progress than kMinProgress (m) in kStuckTime (s) fails: turning to a leg
+  /// and braking at its end take about 2 s.
+  static constexpr double kMinProgress = 0.01;
+  static constexpr double kStuckTime = 10.0;
 
   static navigation::FollowerParams apply(navigation::FollowerParams p) {
     p.max_linear_accel = kAccel;
@@ -169,6 +174,17 @@ class FollowCoverage final : public bt::LeafNode {
     follower_.resetHold();
   }
 
+  /// True once the robot has made no progress along the leg for Driving::kStuckTime (it turns on
+  /// the spot, or its wheels spin): the leg fails and the tree resumes from where it stands.
+  bool stuck() {
+    if (follower_.progress() > furthest_ + Driving::kMinProgress) {
+      furthest_ = follower_.progress();
+      still_ticks_ = 0;
+      return false;
+    }
+    return ++still_ticks_ * follower_.params().dt() > Driving::kStuckTime;
+  }
+
   Status onTick() override {
     const robot::Pose2D* pose = pose_.get();
     if (!coverage_.get() || !pose) {
@@ -203,6 +219,10 @@ class FollowCoverage final : public bt::LeafNode {
       }
       switch (status) {
         case FollowStatus::kFollowing:
+          if (stuck()) {
+            error_.set("no progress along the leg for " + util::show(Driving::kStuckTime) + " s");
+            return Status::kFailure;
+          }
           context_.cmd = cmd;
           context_.state = behavior::RoombaState::kMoveForward;  // cleaning on the move
           context_.state_name = &name();
@@ -277,6 +297,8 @@ class FollowCoverage final : public bt::LeafNode {
     follower_.setParams(params);
     follower_.start(path_, goal, context_.previous_cmd);
     following_ = progress.leg;
+    furthest_ = 0;
+    still_ticks_ = 0;
   }
 
   /// The current leg is done: on to the next (a finished row ends the tries at resuming).
@@ -300,8 +322,10 @@ class FollowCoverage final : public bt::LeafNode {
   navigation::GuardedFollower follower_;
   Polyline path_;                  ///< the leg being followed (the follower points into it)
   std::size_t following_ = kNone;  ///< the leg the follower was started on
-  std::vector<double>
-      ends_;  ///< arc lengths along path_ where the joined legs after the first start
+  /// Arc lengths along path_ where the joined legs after the first start.
+  std::vector<double> ends_;
+  double furthest_ = 0;  ///< the most progress along path_ so far (m)
+  int still_ticks_ = 0;  ///< ticks since it last grew by Driving::kMinProgress
 };
 
 class ResumeCoverage final : public bt::LeafNode {

@@ -232,6 +232,27 @@ TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
   EXPECT_EQ(progress().bumps, 1);
 }
 
+TEST_F(LeafTest, follow_coverage_fails_when_the_robot_makes_no_progress_for_10_s) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  driveIntoARow(follow, 1);
+  const std::size_t leg = progress().leg;
+  // The wheels spin: the pose stays where it is, whatever the command.
+  const int ticks_in_10_s = static_cast<int>(10.0 * 60);
+  bt::Status status = bt::Status::kRunning;
+  int ticks = 0;
+  for (; ticks < 2 * ticks_in_10_s && status == bt::Status::kRunning; ++ticks) {
+    context.cmd = {};
+    status = follow.tick();
+  }
+  EXPECT_EQ(status, bt::Status::kFailure);
+  EXPECT_GT(ticks, ticks_in_10_s - 60);  // not before about 10 s (progress in the first ticks)
+  EXPECT_LE(ticks, ticks_in_10_s + 2);
+  EXPECT_EQ(*board->get<std::string>("error"), "no progress along the leg for 10 s");
+  EXPECT_EQ(progress().leg, leg);  // for ResumeCoverage
+  EXPECT_EQ(progress().bumps, 0);
+}
+
 TEST_F(LeafTest, resume_after_a_bump_continues_the_row_where_it_stopped) {
   plan();
   bt::Tree follow = build(kFollow);

@@ -49,15 +49,16 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 /// - FollowCoverage coverage="{coverage}" pose="{pose}" transit_speed="0.8" error="{error}":
 ///   drives the legs from `coverage.leg` on with the navigation's follower (GuardedFollower:
 ///   FollowPath's follower and motion guard): rows at the lab's forward_speed (RoombaParams,
-///   0.5 m/s), transits at `transit_speed` (within the follower's limits; the short step
-///   between two rows is driven with the next row as one path, at the row's speed), turning in
-///   place towards each leg's start where the previous one ended. A finished leg advances
+///   0.5 m/s), transits at `transit_speed` (within the follower's limits; a U-turn, row, short
+///   step and next row, is driven as one path, at the row's speed), turning in place towards each
+///   leg's start where the previous one ended. A finished leg advances
 ///   `coverage.leg` (a finished row also clears `tries`). It marks the floor under the robot in
 ///   `coverage.swept` on every tick; once the rows are driven it goes back for the spots they
 ///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows), once.
 ///   RUNNING with the command; SUCCESS when every leg of the touch-up is driven too; FAILURE with
 ///   `error` when the bumper is pressed ("bumped", counted in `bumps`), the robot strayed from the
-///   leg or the guard held it still ("blocked"), or there is no progress or pose. The leg it failed
+///   leg, the guard held it still ("blocked"), it made no progress along the leg for 10 s (its
+///   wheels spin), or there is no progress or pose. The leg it failed
 ///   in stays `coverage.leg`, for ResumeCoverage.
 /// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
 ///   of the plan from where the robot stands (CoveragePlanner::resume from `coverage.leg`: the
