@@ -26,6 +26,17 @@ Enum parseEnumFlag(const std::string& flag, const std::string& value,
   return *parsed;
 }
 
+/// "A,B,C" of a flag as numbers (each whole and finite: parseDoubleFlag).
+std::vector<double> parseNumbers(const std::string& flag, const std::string& value) {
+  std::vector<double> numbers;
+  std::size_t begin = 0;
+  while (begin <= value.size()) {
+    const std::size_t comma = std::min(value.find(',', begin), value.size());
+    numbers.push_back(parseDoubleFlag(flag, value.substr(begin, comma - begin)));
+    begin = comma + 1;
+  }
+  return numbers;
+}
 }  // namespace
 
 std::string defaultScenarioFile() { return ROOMBA_RRT_CONFIG_DIR "/rrt_scenarios.yaml"; }
@@ -41,13 +52,7 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
                            const std::string& crop) {
   world::World world = world::readWorldFile(file);
   if (!crop.empty()) {
-    std::vector<double> box;
-    std::size_t begin = 0;
-    while (begin <= crop.size()) {
-      const std::size_t comma = std::min(crop.find(',', begin), crop.size());
-      box.push_back(parseDoubleFlag("--crop", crop.substr(begin, comma - begin)));
-      begin = comma + 1;
-    }
+    const std::vector<double> box = parseNumbers("--crop", crop);
     if (box.size() != 4) bad("--crop", "expected X0,Y0,X1,Y1, got '" + crop + "'");
     const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
     if (!(box[0] >= world.origin.x && box[1] >= world.origin.y && box[2] <= x1 && box[3] <= y1 &&
@@ -61,13 +66,7 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
     world.height = box[3] - box[1];
   }
   if (!pose.empty()) {
-    std::vector<double> xyt;
-    std::size_t begin = 0;
-    while (begin <= pose.size()) {
-      const std::size_t comma = std::min(pose.find(',', begin), pose.size());
-      xyt.push_back(parseDoubleFlag("--pose", pose.substr(begin, comma - begin)));
-      begin = comma + 1;
-    }
+    const std::vector<double> xyt = parseNumbers("--pose", pose);
     if (xyt.size() < 2 || xyt.size() > 3)
       bad("--pose", "expected X,Y or X,Y,THETA, got '" + pose + "'");
     world.initial_pose = {xyt[0], xyt[1], xyt.size() == 3 ? xyt[2] : 0.0};
