@@ -51,12 +51,14 @@ struct Slice {
 /// A cell of the decomposition: one slice per lattice row, bottom to top, consecutive rows.
 using Cell = std::vector<Slice>;
 
-/// The lattice points of class ≥ `least` connected to `seed` (8-neighbours), by breadth-first
-/// search.
-Mask flood(const FreeSpace& space, int seed, FreeSpace::Class least) {
-  Mask region(space.size(), 0);
+/// Visits the lattice points connected to `seed` (8-neighbours) for which inside(point) holds,
+/// and `seed` itself, by depth-first search; `taken` marks them (and, on entry, the points not
+/// to visit again).
+template <class Inside, class Visit>
+void forComponent(const FreeSpace& space, int seed, Inside inside, Mask& taken, Visit visit) {
   std::vector<int> frontier{seed};
-  region[seed] = 1;
+  taken[seed] = 1;
+  visit(seed);
   while (!frontier.empty()) {
     const int k = frontier.back();
     frontier.pop_back();
@@ -65,13 +67,21 @@ Mask flood(const FreeSpace& space, int seed, FreeSpace::Class least) {
       for (int di = -1; di <= 1; ++di) {
         if (!space.inside(i + di, j + dj)) continue;
         const int n = space.index(i + di, j + dj);
-        if (!region[n] && space.at(n) >= least) {
-          region[n] = 1;
+        if (!taken[n] && inside(n)) {
+          taken[n] = 1;
+          visit(n);
           frontier.push_back(n);
         }
       }
     }
   }
+}
+
+/// The lattice points of class ≥ `least` connected to `seed` (8-neighbours).
+Mask flood(const FreeSpace& space, int seed, FreeSpace::Class least) {
+  Mask region(space.size(), 0);
+  forComponent(
+      space, seed, [&](int n) { return space.at(n) >= least; }, region, [](int) {});
   return region;
 }
 
@@ -575,24 +585,9 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   Mask seen(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
     if (!missed[k] || seen[k]) continue;
-    std::vector<int> spot{k}, frontier{k};
-    seen[k] = 1;
-    while (!frontier.empty()) {
-      const int q = frontier.back();
-      frontier.pop_back();
-      for (int dj = -1; dj <= 1; ++dj) {
-        for (int di = -1; di <= 1; ++di) {
-          const int i = space_.column(q) + di, j = space_.row(q) + dj;
-          if (!space_.inside(i, j)) continue;
-          const int n = space_.index(i, j);
-          if (missed[n] && !seen[n]) {
-            seen[n] = 1;
-            spot.push_back(n);
-            frontier.push_back(n);
-          }
-        }
-      }
-    }
+    std::vector<int> spot;
+    forComponent(
+        space_, k, [&](int n) { return missed[n] != 0; }, seen, [&](int n) { spot.push_back(n); });
     if (spot.size() * h * h < kMinSpotArea) {
       for (int q : spot) missed[q] = 0;
     }
