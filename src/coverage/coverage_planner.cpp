@@ -606,9 +606,9 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   }
   // A row along `points` (in order along a line), sweeping what is missed beside it; false when
   // no free row reaches them. Too few points to be worth a row: nothing to do (true).
-  auto stripVisit = [&](const std::vector<int>& points) {
+  auto stripVisit = [&](const std::vector<int>& points, bool vertical) {
     if (static_cast<int>(points.size()) <= kStripLength) return true;
-    const std::optional<std::pair<Point2, Point2>> row = stripRow(points);
+    const std::optional<std::pair<Point2, Point2>> row = stripRow(points, vertical);
     if (!row) return false;
     forPointsNear(space_, row->first, row->second, r, [&](int c) { uncovered[c] = missed[c] = 0; });
     visits.push_back(*row);
@@ -616,19 +616,20 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   };
   // A run that no free row reaches as a whole (something stands near one end: a plant in the
   // corner) is tried in halves.
-  std::function<void(const std::vector<int>&)> sweepRun = [&](const std::vector<int>& points) {
-    if (stripVisit(points)) return;
+  std::function<void(const std::vector<int>&, bool)> sweepRun = [&](const std::vector<int>& points,
+                                                                    bool vertical) {
+    if (stripVisit(points, vertical)) return;
     const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
-    sweepRun(std::vector<int>(points.begin(), middle));
-    sweepRun(std::vector<int>(middle, points.end()));
+    sweepRun(std::vector<int>(points.begin(), middle), vertical);
+    sweepRun(std::vector<int>(middle, points.end()), vertical);
   };
   // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
   // transit and two turns more. When that row is not free, each run on its own.
-  auto sweepStrip = [&](const std::vector<std::vector<int>>& runs) {
+  auto sweepStrip = [&](const std::vector<std::vector<int>>& runs, bool vertical) {
     std::vector<int> merged;
     for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
-    if (stripVisit(merged)) return;
-    for (const auto& run : runs) sweepRun(run);
+    if (stripVisit(merged, vertical)) return;
+    for (const auto& run : runs) sweepRun(run, vertical);
   };
   for (const bool vertical : {true, false}) {
     const int lines = vertical ? space_.width() : space_.height();
@@ -640,14 +641,14 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
         const int q = vertical ? space_.index(line, along) : space_.index(along, line);
         if (!uncovered[q]) continue;
         if (along - last > kStripGap + 1) {
-          sweepStrip(runs);
+          sweepStrip(runs, vertical);
           runs.clear();
         }
         if (runs.empty() || along - last > 1) runs.emplace_back();
         runs.back().push_back(q);
         last = along;
       }
-      sweepStrip(runs);
+      sweepStrip(runs, vertical);
     }
   }
   // Places to stand for the rest: from the first missed point left (row by row), the drivable
@@ -709,25 +710,15 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   return plan;
 }
 
-std::optional<std::pair<Point2, Point2>> CoveragePlanner::stripRow(
-    const std::vector<int>& spot) const {
+std::optional<std::pair<Point2, Point2>> CoveragePlanner::stripRow(const std::vector<int>& points,
+                                                                   bool vertical) const {
   const double h = space_.resolution();
   const double r = space_.robotRadius();
-  int i0 = space_.width(), i1 = -1, j0 = space_.height(), j1 = -1;
-  Point2 mean{0, 0};
-  for (int q : spot) {
-    i0 = std::min(i0, space_.column(q)), i1 = std::max(i1, space_.column(q));
-    j0 = std::min(j0, space_.row(q)), j1 = std::max(j1, space_.row(q));
-    mean = {mean.x + space_.point(q).x / spot.size(), mean.y + space_.point(q).y / spot.size()};
-  }
-  const bool vertical = i1 - i0 <= kStripWidth && j1 - j0 >= kStripLength;
-  const bool horizontal = j1 - j0 <= kStripWidth && i1 - i0 >= kStripLength;
-  if (!vertical && !horizontal) return std::nullopt;
-  // The row along the strip, `offset` from its middle line (across it).
-  const Point2 low = space_.point(i0, j0), high = space_.point(i1, j1);
+  // The row along the line, `offset` from it (across it), from its first point to its last.
+  const Point2 low = space_.point(points.front()), high = space_.point(points.back());
   auto along = [&](double offset) {
-    return vertical ? std::pair{Point2{mean.x + offset, low.y}, Point2{mean.x + offset, high.y}}
-                    : std::pair{Point2{low.x, mean.y + offset}, Point2{high.x, mean.y + offset}};
+    return vertical ? std::pair{Point2{low.x + offset, low.y}, Point2{low.x + offset, high.y}}
+                    : std::pair{Point2{low.x, low.y + offset}, Point2{high.x, low.y + offset}};
   };
   auto free = [&](double offset) {
     const auto [a, b] = along(offset);

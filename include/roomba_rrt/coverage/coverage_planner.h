@@ -146,11 +146,12 @@ class CoveragePlanner {
   /// the straight segment when it is free, else via the nearest lattice points and the shortest
   /// lattice path between them. nullopt when `to` cannot be reached.
   std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
-  /// A row along `spot` (lattice points of missed floor) when it is a thin strip (at most
-  /// kStripWidth + 1 points across, at least kStripLength + 1 along, in x or y: the floor a U-turn
-  /// left by a wall), as close to it as stays free, if the disc reaches it from there.
-  std::optional<std::pair<Point2, Point2>> stripRow(const std::vector<int>& spot) const;
-  static constexpr int kStripWidth = 2;
+  /// A row along `points` (lattice points of missed floor in order along one lattice column, or
+  /// one lattice row when not `vertical`: the floor a U-turn left by a wall), from the first to
+  /// the last, as close to them as stays free, if the disc reaches them from there.
+  std::optional<std::pair<Point2, Point2>> stripRow(const std::vector<int>& points,
+                                                    bool vertical) const;
+  /// A strip of this many lattice points or fewer is left to the spots' stops.
   static constexpr int kStripLength = 4;
   /// Strips along one line this many lattice points apart or closer are swept by one row.
   static constexpr int kStripGap = 16;
