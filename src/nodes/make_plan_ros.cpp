@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "message_parts.h"
 #include "roomba_rrt/planning/free_point_near.h"
 #include "roomba_rrt/planning/validate.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -14,13 +15,6 @@ namespace {
 constexpr double kStep = 0.5;            // m
 constexpr int kMaxIterations = 200'000;  // extension steps, unless ~max_iterations_cap is lower
 constexpr planning::Algorithm kAlgorithm = planning::Algorithm::kRrtConnect;
-
-geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2);
-  q.w = std::cos(yaw / 2);
-  return q;
-}
 
 }  // namespace
 
@@ -50,8 +44,9 @@ MakePlanQuery resolveMakePlan(const planning::Problem& map, const robot::Pose2D&
     query.error = "tolerance: must be a finite number >= 0, got " + show(tolerance);
     return query;
   }
-  if (!std::isfinite(goal.x) || !std::isfinite(goal.y)) {
-    query.error = "goal: must be finite, got (" + show(goal.x) + ", " + show(goal.y) + ")";
+  if (!std::isfinite(goal.x) || !std::isfinite(goal.y) || !std::isfinite(goal.theta)) {
+    query.error = "goal: must be finite, got (" + show(goal.x) + ", " + show(goal.y) +
+                  ") heading " + show(goal.theta);
     return query;
   }
   const std::optional<planning::Point2> reachable =
@@ -79,9 +74,9 @@ nav_msgs::Path toPlanMessage(const std::vector<planning::Point2>& path, double g
   nav_msgs::Path plan = toPathMessage(path, frame_id, stamp);
   for (std::size_t i = 0; i + 1 < plan.poses.size(); ++i) {
     const planning::Point2 &a = path[i], &b = path[i + 1];
-    plan.poses[i].pose.orientation = yawQuaternion(std::atan2(b.y - a.y, b.x - a.x));
+    plan.poses[i].pose.orientation = nodes::yawToQuaternion(std::atan2(b.y - a.y, b.x - a.x));
   }
-  if (!plan.poses.empty()) plan.poses.back().pose.orientation = yawQuaternion(goal_yaw);
+  if (!plan.poses.empty()) plan.poses.back().pose.orientation = nodes::yawToQuaternion(goal_yaw);
   return plan;
 }
 

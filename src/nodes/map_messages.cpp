@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "message_parts.h"
+
 namespace roomba_rrt::nodes {
 
 nav_msgs::OccupancyGrid toMapMessage(const geometry::OccupancyGrid& grid, const ros::Time& stamp) {
@@ -44,7 +46,7 @@ std::string fromMapMessage(const nav_msgs::OccupancyGrid& message, geometry::Occ
     why << "data: " << message.data.size() << " cells for " << info.width << " x " << info.height;
   } else {
     // A yaw other than 0 (a rotated map) is refused; an unset quaternion (all 0) reads as none.
-    const double yaw = std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+    const double yaw = quaternionToYaw(q);
     if (!(std::abs(yaw) < 1e-6) || !std::isfinite(q.w)) {
       why << "info.origin.orientation: a rotated map (yaw " << yaw << " rad) is not supported";
     }

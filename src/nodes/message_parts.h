@@ -1,7 +1,8 @@
 // Small message parts every node builds the same way: a colour, an rviz marker's common fields, a
-// yaw as a quaternion. Header-only, so each node and its conversion tests just include it.
+// yaw as a quaternion and back. Header-only, so each node and its conversion tests just include it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -45,6 +46,17 @@ inline geometry_msgs::Quaternion yawToQuaternion(double yaw) {
   q.z = std::sin(0.5 * yaw);
   q.w = std::cos(0.5 * yaw);
   return q;
+}
+
+/// The heading (yaw about z, ZYX convention) of any finite quaternion, unit or not: it is scaled
+/// by its largest component first, so 1e300 in every component gives a heading, not NaN from
+/// inf - inf. 0 for the all-zero quaternion of a message that left the orientation unset; NaN if
+/// a component is not finite.
+inline double quaternionToYaw(const geometry_msgs::Quaternion& q) {
+  const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), std::abs(q.w)});
+  if (largest == 0) return 0;
+  const double x = q.x / largest, y = q.y / largest, z = q.z / largest, w = q.w / largest;
+  return std::atan2(2 * (w * z + x * y), w * w + x * x - y * y - z * z);
 }
 
 }  // namespace roomba_rrt::nodes

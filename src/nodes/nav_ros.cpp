@@ -36,11 +36,7 @@ std::string poseProblem(const geometry_msgs::Pose& pose) {
 }
 
 robot::Pose2D toPose2D(const geometry_msgs::Pose& pose) {
-  const auto& q = pose.orientation;
-  // Yaw of the rotation (ZYX convention); this form holds for unnormalised quaternions too.
-  const double yaw =
-      std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
-  return {pose.position.x, pose.position.y, yaw};
+  return {pose.position.x, pose.position.y, nodes::quaternionToYaw(pose.orientation)};
 }
 
 geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::string& frame_id,

@@ -39,6 +39,7 @@
 #include "make_plan_ros.h"
 #include "map_messages.h"
 #include "master_watch.h"
+#include "message_parts.h"
 #include "node_params.h"
 #include "plan_slots.h"
 #include "planner_ros.h"
@@ -137,12 +138,6 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
     }
   }
   return d;
-}
-
-// The heading of a quaternion (yaw about z); 0 for the all-zero quaternion of a request that
-// left the orientation unset.
-double yawOf(const geometry_msgs::Quaternion& q) {
-  return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
 }
 
 // ~threads: plans at once, in [1, kMaxThreads]; 1 is raised to 2.
@@ -298,7 +293,9 @@ class RrtPlannerNode {
       return std::nullopt;
     }
     const std::string& frame = pose.header.frame_id;
-    if (frame.empty() || frame == frame_id_) return robot::Pose2D{p.x, p.y, yawOf(q)};
+    if (frame.empty() || frame == frame_id_) {
+      return robot::Pose2D{p.x, p.y, nodes::quaternionToYaw(q)};
+    }
     geometry_msgs::TransformStamped t;
     try {
       constexpr double kTransformWait = 0.5;  // s
@@ -308,10 +305,11 @@ class RrtPlannerNode {
              "': " + e.what();
       return std::nullopt;
     }
-    const double yaw = yawOf(t.transform.rotation);
+    const double yaw = nodes::quaternionToYaw(t.transform.rotation);
     const double c = std::cos(yaw), s = std::sin(yaw);
     return robot::Pose2D{t.transform.translation.x + c * p.x - s * p.y,
-                         t.transform.translation.y + s * p.x + c * p.y, yaw + yawOf(q)};
+                         t.transform.translation.y + s * p.x + c * p.y,
+                         yaw + nodes::quaternionToYaw(q)};
   }
 
   // ~make_plan (nav_msgs/GetPlan), move_base's convention: an empty plan when there is none,

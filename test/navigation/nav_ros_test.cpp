@@ -43,6 +43,17 @@ TEST(NavRos, yaw_round_trips_and_unnormalised_quaternions_are_accepted) {
   EXPECT_NEAR(toPose2D(pose).theta, M_PI_2, 1e-12);
 }
 
+TEST(NavRos, a_huge_but_finite_orientation_is_a_heading_not_nan) {
+  geometry_msgs::Pose pose = poseAt(1, 2, 0);
+  pose.orientation.x = pose.orientation.y = pose.orientation.z = pose.orientation.w = 1e300;
+  EXPECT_EQ(poseProblem(pose), "");
+  EXPECT_NEAR(toPose2D(pose).theta, M_PI_2, 1e-12);  // (0.5, 0.5, 0.5, 0.5): a quarter turn
+  pose = poseAt(1, 2, -2.0);
+  pose.orientation.z *= 1e306;
+  pose.orientation.w *= 1e306;
+  EXPECT_NEAR(toPose2D(pose).theta, -2.0, 1e-12);
+}
+
 TEST(NavRos, goal_in_the_sofa_names_the_furniture) {
   const std::string why = goalPlaceProblem(furnished(), 0.05, 0.8, 0.3);
   EXPECT_NE(why.find("inside furniture (rectangle 0"), std::string::npos) << why;

@@ -375,6 +375,30 @@ TEST_F(NavMap, make_plan_relaxes_a_goal_in_a_wall_by_its_tolerance_and_only_then
   EXPECT_LE(std::abs(last.y - goal_y_), 1.0 + 1e-9);
 }
 
+TEST_F(NavMap, make_plan_takes_a_huge_but_finite_goal_orientation_as_its_heading) {
+  // 1e300 in every component: (0.5, 0.5, 0.5, 0.5) scaled, a quarter turn. Squaring it overflows;
+  // the plan's poses must still be finite and the last one face +y.
+  nav_msgs::GetPlan srv;
+  const Robot::Sample s = robot_.latest();
+  srv.request.start.header.frame_id = "map";
+  srv.request.start.pose.position.x = s.x;
+  srv.request.start.pose.position.y = s.y;
+  srv.request.goal = goalAt(goal_x_, goal_y_).target_pose;
+  auto& q = srv.request.goal.pose.orientation;
+  q.x = q.y = q.z = q.w = 1e300;
+  ASSERT_TRUE(ros::service::call("/rrt_planner/make_plan", srv));
+  const nav_msgs::Path& plan = srv.response.plan;
+  expectClear(plan);
+  ASSERT_FALSE(plan.poses.empty());
+  for (const auto& pose : plan.poses) {
+    const auto& o = pose.pose.orientation;
+    ASSERT_TRUE(std::isfinite(o.x) && std::isfinite(o.y) && std::isfinite(o.z) &&
+                std::isfinite(o.w));
+  }
+  const auto& last = plan.poses.back().pose.orientation;
+  EXPECT_NEAR(2 * std::atan2(last.z, last.w), M_PI_2, 1e-9);
+}
+
 TEST_F(NavMap, a_goal_in_another_room_is_reached_through_the_doorway_without_a_bump) {
   EXPECT_EQ(run(*client_, goalAt(goal_x_, goal_y_)), SimpleClientGoalState::SUCCEEDED)
       << client_->getState().getText();
