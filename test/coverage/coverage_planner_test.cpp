@@ -203,6 +203,33 @@ TEST(CoveragePlanner, central_round_table_is_swept_around) {
   EXPECT_GE(rowCoverage(world, plan), 0.95);
 }
 
+TEST(CoveragePlanner, a_pillar_standing_free_is_passed_around_and_does_not_split_the_room) {
+  World world = emptyRoom();
+  world.circles.push_back(Circle{{3.2, 2.4}, 0.15});
+  const CoveragePlan plan = planChecked(world, {1.0, 1.0});
+  EXPECT_EQ(plan.cells, 1);  // not below, beside (two) and above it
+  EXPECT_GE(rowCoverage(world, plan), 0.95);
+  // The rows through it stop on one side and go on at the same height on the other, the transit
+  // between them going round the pillar, not to another part of the room.
+  int crossings = 0;
+  for (std::size_t k = 0; k + 2 < plan.legs.size(); ++k) {
+    const Leg &before = plan.legs[k], &around = plan.legs[k + 1], &after = plan.legs[k + 2];
+    if (before.kind != Leg::Kind::kRow || around.kind != Leg::Kind::kTransit ||
+        after.kind != Leg::Kind::kRow || before.points.back().y != after.points.front().y) {
+      continue;
+    }
+    ++crossings;
+    EXPECT_LT(std::fabs(before.points.back().y - 2.4), 0.15 + 0.18);
+    EXPECT_LT(std::min(before.points.back().x, after.points.front().x), 3.2);
+    EXPECT_GT(std::max(before.points.back().x, after.points.front().x), 3.2);
+    EXPECT_LT(roomba_rrt::geometry::pathLength(around.points), kPi * (0.15 + 0.18) + 0.1);
+  }
+  EXPECT_GE(crossings, 2);
+  // Beside a wall, with no room to pass between them, it splits the room as any furniture.
+  world.circles.back().center = {3.2, 0.4};
+  EXPECT_GE(planChecked(world, {1.0, 2.0}).cells, 2);
+}
+
 TEST(CoveragePlanner, central_rectangular_table_is_swept_around) {
   World world = emptyRoom();
   world.rectangles.push_back(Rectangle{2.5, 1.8, 3.9, 3.0});
@@ -439,17 +466,25 @@ TEST(CoveragePlanner, touch_up_goes_back_for_a_skipped_row_and_then_has_nothing_
   const CoveragePlan plan = planner.plan({world.initial_pose.x, world.initial_pose.y});
   Driven all;
   all.drive(planner, plan.legs);
-  // The longest row skipped: the touch-up brings the floor back to about what all legs sweep.
+  // The longest row skipped, with the pieces of it beyond the islands it passes around: the
+  // touch-up brings the floor back to about what all legs sweep.
   std::vector<Leg> legs = plan.legs;
   const auto longest = std::max_element(legs.begin(), legs.end(), [](const Leg& a, const Leg& b) {
     return (a.kind == Leg::Kind::kRow ? roomba_rrt::geometry::pathLength(a.points) : 0) <
            (b.kind == Leg::Kind::kRow ? roomba_rrt::geometry::pathLength(b.points) : 0);
   });
-  ASSERT_GT(roomba_rrt::geometry::pathLength(longest->points), 4.0);
-  legs.erase(longest);
+  ASSERT_GT(roomba_rrt::geometry::pathLength(longest->points), 2.5);
+  const double skipped_y = longest->points.front().y;
+  legs.erase(std::remove_if(legs.begin(), legs.end(),
+                            [&](const Leg& leg) {
+                              return leg.kind == Leg::Kind::kRow &&
+                                     leg.points.front().y == skipped_y &&
+                                     leg.points.back().y == skipped_y;
+                            }),
+             legs.end());
   Driven skipping;
   skipping.drive(planner, legs);
-  ASSERT_LT(skipping.share(planner, plan), all.share(planner, plan) - 0.03);
+  ASSERT_LT(skipping.share(planner, plan), all.share(planner, plan) - 0.015);
   const Point2 at = legs.back().points.back();
   const CoveragePlan touch_up = planner.touchUp(skipping.swept, at);
   expectSafe(world, touch_up);

@@ -5,30 +5,37 @@
 // the disc's CENTRE, computed on a lattice (FreeSpace):
 //   1. Sample the configuration space on a lattice and keep the part connected to the start
 //      (the rest is floor the robot cannot reach: reported, never planned).
-//   2. Sweep a line up the lattice, row by row. In each lattice row the free points form
+//   2. Islands: an obstacle standing free in the floor, whose grown extent (where the disc lacks
+//      the clearance) touches nothing else and is at most kMaxIsland (1 m) across (a pillar, a
+//      bin, a small round table), does not split the free space into cells: steps 3 to 6 plan
+//      as if it were not there, and each row across it stops before it and goes on behind it,
+//      the transit between the two pieces going round it (sweeping the floor around it). A
+//      boustrophedon split at every pillar of the turtlebot3 arena made 17 cells and 39
+//      transits; passing round them, one cell: 79 % → 92 % of the floor by 1.5× the ideal time.
+//   3. Sweep a line up the lattice, row by row. In each lattice row the free points form
 //      intervals. An interval that overlaps exactly one interval of the row below, which
 //      overlaps only it, continues that interval's cell; any other (the sweep line meets an
 //      obstacle, or two parts of the free space join, or one splits) opens a new cell. Each
 //      cell is thus a stack of intervals, one per lattice row, without holes: it can be swept
 //      by horizontal back-and-forth rows without leaving it.
-//   3. Cover each cell with rows along x: along its lowest and highest lattice rows (so the disc
+//   4. Cover each cell with rows along x: along its lowest and highest lattice rows (so the disc
 //      brushes what bounds the cell below and above), evenly at any height between them at most a
 //      swath apart, and a short row along each step where the cell widens or narrows (a
 //      sideboard's top). The lattice stops up to a step short of the walls: the outer rows and
 //      every row's ends are moved out as far as they stay free (exactly).
-//   4. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
+//   5. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
 //      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Rows
 //      that would sweep less than a small area no other row sweeps are dropped, the others
 //      shortened to the stretch that sweeps floor of their own.
-//   5. Order the cells: greedily, from where the robot is, the cell whose first row (of four
+//   6. Order the cells: greedily, from where the robot is, the cell whose first row (of four
 //      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
 //      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
 //      Within a cell each row's direction is chosen by dynamic programming (the rows alternate,
 //      but a short step row must not flip all the rows after it), and neighbouring rows are
 //      swapped while that shortens the jumps.
-//   6. Join consecutive rows with transits: the straight segment when it is free, else the
+//   7. Join consecutive rows with transits: the straight segment when it is free, else the
 //      shortest lattice path, shortcut (FreeSpace::shortestPath).
-//   7. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
+//   8. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
 //      own poses, markSwept()): the corners its U-turns cut, rows it gave up.
 // Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
 // where the free space's connectivity changes, not at every vertex), so there are few long rows
@@ -92,7 +99,7 @@ struct CoveragePlan {
   double reachable_area = 0;    ///< floor the robot's disc can reach from the start
   double swept_area = 0;        ///< floor the disc sweeps along the rows
   double unreachable_area = 0;  ///< floor_area − reachable_area
-  int cells = 0;                ///< cells of the decomposition
+  int cells = 0;                ///< cells of the decomposition (islands do not split cells)
 
   /// Length of all legs (m) and of the rows alone.
   double length() const;
@@ -158,8 +165,13 @@ class CoveragePlanner {
   /// The floor reachable from `start` (one flag per lattice point), with the plan's areas set.
   std::vector<std::uint8_t> reachableFloor(CoveragePlan& plan, const Point2& start) const;
 
+  /// The pieces of the row a–b (planned in open_) that are free in space_, in order from a: the
+  /// row itself when no island is in its way.
+  std::vector<std::pair<Point2, Point2>> freePieces(const Point2& a, const Point2& b) const;
+
   CoverageOptions options_;
   FreeSpace space_;
+  std::optional<FreeSpace> open_;  ///< the free space without its islands, if it has any
 };
 
 }  // namespace roomba_rrt::coverage
