@@ -81,6 +81,11 @@ struct Driving {
   static constexpr double kJoinedTransit = 0.5;
   static constexpr double kJoinedLookahead = 0.2;
   static constexpr double kMaxJoinedTurn = 2.4;  ///< rad: a U-turn's corners are π/2
+  /// The way round an island (m: half round a 1 m one, CoveragePlanner's largest) between two
+  /// pieces of a row is driven with them too, at the cleaning speed: it sweeps the floor round
+  /// the island. turtlebot3 arena by 1.5× the ideal time: 92.2 % stopping before and after
+  /// each, 93.2 % joined.
+  static constexpr double kJoinedDetour = 2.0;
   /// A leg with less progress than kMinProgress (m) in kStuckTime (s) fails: turning to a leg
   /// and braking at its end take about 2 s.
   static constexpr double kMinProgress = 0.01;
@@ -262,13 +267,34 @@ class FollowCoverage final : public bt::LeafNode {
       const double norms = std::hypot(ux, uy) * std::hypot(vx, vy);
       return norms == 0 || (ux * vx + uy * vy) / norms >= std::cos(Driving::kMaxJoinedTurn);
     };
+    // The way round an island from one piece of a row to the next (which goes on along the same
+    // line, the same way: CoveragePlanner cuts rows at islands).
+    auto roundIsland = [&](std::size_t k) {
+      if (k == 0 || legs[k - 1].kind != Leg::Kind::kRow ||
+          geometry::pathLength(legs[k].points) > Driving::kJoinedDetour) {
+        return false;
+      }
+      const Point2 a = legs[k - 1].points.front(), b = legs[k - 1].points.back();
+      const Point2 c = legs[k + 1].points.front(), d = legs[k + 1].points.back();
+      const double ux = b.x - a.x, uy = b.y - a.y, length = std::hypot(ux, uy);
+      auto onLine = [&](const Point2& p) {
+        return std::fabs(ux * (p.y - a.y) - uy * (p.x - a.x)) <= 1e-9 * length;
+      };
+      return length > 0 && onLine(c) && onLine(d) && ux * (c.x - b.x) + uy * (c.y - b.y) > 0 &&
+             ux * (d.x - c.x) + uy * (d.y - c.y) > 0 &&
+             gentle(legs[k - 1].points, legs[k].points) &&
+             gentle(legs[k].points, legs[k + 1].points);
+    };
     auto joinable = [&](std::size_t k) {
-      return k + 1 < legs.size() && legs[k].kind == Leg::Kind::kTransit &&
-             legs[k + 1].kind == Leg::Kind::kRow &&
-             geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
-             (!progress.touching_up ||
-              (gentle(legs[k].points, legs[k + 1].points) &&
-               (k == progress.leg || gentle(legs[k - 1].points, legs[k].points))));
+      if (k + 1 >= legs.size() || legs[k].kind != Leg::Kind::kTransit ||
+          legs[k + 1].kind != Leg::Kind::kRow) {
+        return false;
+      }
+      const bool u_turn = geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
+                          (!progress.touching_up ||
+                           (gentle(legs[k].points, legs[k + 1].points) &&
+                            (k == progress.leg || gentle(legs[k - 1].points, legs[k].points))));
+      return u_turn || roundIsland(k);
     };
     const bool cleaning = leg.kind == Leg::Kind::kRow || joinable(progress.leg);
     if (cleaning) {

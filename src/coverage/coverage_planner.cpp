@@ -503,6 +503,11 @@ std::vector<Visit> orderCells(const Sweeps& sweeps, const Point2& start) {
 /// 0.7 m left those two splitting the room and cost it 27 s to 90 %.
 constexpr double kMaxIsland = 1.0;
 
+/// A row's piece ends this far (m) before the island: the way round it then sets off from the
+/// row without a step back first (the nearest lattice point of a piece that ends exactly at the
+/// planning radius is often behind it), and the robot drives the two as one (FollowCoverage).
+constexpr double kIslandBackOff = 0.02;
+
 /// The world without its islands: obstacles whose grown extent (the lattice points where the
 /// disc does not have the clearance) touches nothing else and fits in kMaxIsland. nullopt when
 /// there are none.
@@ -815,7 +820,7 @@ std::vector<std::pair<Point2, Point2>> CoveragePlanner::freePieces(const Point2&
                                                                    const Point2& b) const {
   if (!open_ || space_.segmentFree(a, b)) return {{a, b}};
   // Samples half a lattice step apart; each run of free ones is a piece, its ends moved out to
-  // the island as far as they stay free (exactly).
+  // the island as far as they stay free (exactly), then kIslandBackOff back.
   const double length = geometry::distance(a, b);
   const int n = std::max(1, static_cast<int>(std::ceil(2 * length / space_.resolution())));
   auto at = [&](double t) { return Point2{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; };
@@ -832,6 +837,8 @@ std::vector<std::pair<Point2, Point2>> CoveragePlanner::freePieces(const Point2&
     if (k < n) {
       t1 += farthestFree(1.0 / n, [&](double d) { return space_.segmentFree(at(t1), at(t1 + d)); });
     }
+    if (first > 0) t0 += kIslandBackOff / length;
+    if (k < n) t1 -= kIslandBackOff / length;
     if ((t1 - t0) * length > kMinLegLength && space_.segmentFree(at(t0), at(t1))) {
       out.push_back({at(t0), at(t1)});
     }

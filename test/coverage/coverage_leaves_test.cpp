@@ -36,10 +36,20 @@ NavLeafConfig cleaningConfig(const world::World& world,
   return config;
 }
 
+/// A 3 m × 2 m room with a pillar in the middle, which its rows pass round.
+world::World pillarRoom() {
+  world::World world;
+  world.width = 3.0;
+  world.height = 2.0;
+  world.circles.push_back({{1.5, 1.0}, 0.12});
+  world.initial_pose = {0.5, 0.5, 0.0};
+  return world;
+}
+
 /// The leaves on a blackboard, driven by hand or with the simulator, one leaf per tree.
 struct LeafTest : ::testing::Test {
-  LeafTest()
-      : world(smallRoom()),
+  explicit LeafTest(world::World room = smallRoom())
+      : world(std::move(room)),
         planner(std::make_shared<const CoveragePlanner>(world)),
         context(1),
         sim(world) {
@@ -218,6 +228,41 @@ TEST_F(LeafTest, the_u_turn_between_two_rows_is_driven_without_stopping) {
   }
   EXPECT_EQ(status, bt::Status::kSuccess);
   EXPECT_EQ(changes_on_the_move, changes_expected);
+}
+
+struct PillarTest : LeafTest {
+  PillarTest() : LeafTest(pillarRoom()) {}
+};
+
+TEST_F(PillarTest, the_way_round_a_pillar_between_two_pieces_of_a_row_is_driven_without_stopping) {
+  plan();
+  bt::Tree follow = build(kFollow);
+  const std::vector<Leg> legs = progress().plan.legs;
+  auto round_at = [&](std::size_t k) {  // a transit between two pieces of one row
+    return k > 0 && k + 1 < legs.size() && legs[k].kind == Leg::Kind::kTransit &&
+           legs[k - 1].kind == Leg::Kind::kRow && legs[k + 1].kind == Leg::Kind::kRow &&
+           legs[k - 1].points.back().y == legs[k + 1].points.front().y;
+  };
+  int rounds = 0;
+  for (std::size_t k = 0; k < legs.size(); ++k) rounds += round_at(k);
+  ASSERT_GE(rounds, 2);
+  // Each is entered from its row and left into the row's next piece on the move.
+  int changes_on_the_move = 0;
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
+    const std::size_t leg = progress().leg;
+    const bool rows = !progress().touching_up;
+    status = step(follow);
+    if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
+      continue;
+    }
+    changes_on_the_move +=
+        round_at(leg) || (legs[leg].kind == Leg::Kind::kRow && round_at(leg + 1));
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_EQ(changes_on_the_move, 2 * rounds);
+  EXPECT_EQ(progress().bumps, 0);
+  EXPECT_GT(sim.coverage(), 0.9);
 }
 
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
