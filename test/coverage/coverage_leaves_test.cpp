@@ -91,6 +91,26 @@ struct LeafTest : ::testing::Test {
     FAIL() << "never in the middle of a row";
   }
 
+  /// Follows the plan to the end (SUCCESS within 300 s) and counts the legs changed on the move
+  /// (driving forwards) before the touch-up, into or out of a transit k for which joined(k) holds:
+  /// a transit driven with the rows around it.
+  template <class Joined>
+  int changesOnTheMove(bt::Tree& follow, const std::vector<Leg>& legs, Joined joined) {
+    int changes = 0;
+    bt::Status status = bt::Status::kRunning;
+    for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
+      const std::size_t leg = progress().leg;
+      const bool rows = !progress().touching_up;
+      status = step(follow);
+      if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
+        continue;
+      }
+      changes += joined(leg) || (legs[leg].kind == Leg::Kind::kRow && joined(leg + 1));
+    }
+    EXPECT_EQ(status, bt::Status::kSuccess);
+    return changes;
+  }
+
   static constexpr const char* kPlan =
       R"(<PlanCoverage start="{pose}" coverage="{coverage}" error="{error}"/>)";
   static constexpr const char* kFollow =
@@ -211,23 +231,12 @@ TEST_F(LeafTest, the_u_turn_between_two_rows_is_driven_without_stopping) {
            legs[k + 1].kind == Leg::Kind::kRow && geometry::pathLength(legs[k].points) < 0.5;
   };
   // Each step is entered from its row and left into the next one on the move.
-  int changes_on_the_move = 0, changes_expected = 0;
+  int changes_expected = 0;
   for (std::size_t k = 0; k < legs.size(); ++k) {
     changes_expected += step_at(k) + (legs[k].kind == Leg::Kind::kRow && step_at(k + 1));
   }
   ASSERT_GT(changes_expected, 4);
-  bt::Status status = bt::Status::kRunning;
-  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
-    const std::size_t leg = progress().leg;
-    const bool rows = !progress().touching_up;
-    status = step(follow);
-    if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
-      continue;
-    }
-    changes_on_the_move += step_at(leg) || (legs[leg].kind == Leg::Kind::kRow && step_at(leg + 1));
-  }
-  EXPECT_EQ(status, bt::Status::kSuccess);
-  EXPECT_EQ(changes_on_the_move, changes_expected);
+  EXPECT_EQ(changesOnTheMove(follow, legs, step_at), changes_expected);
 }
 
 struct PillarTest : LeafTest {
@@ -247,20 +256,7 @@ TEST_F(PillarTest, the_way_round_a_pillar_between_two_pieces_of_a_row_is_driven_
   for (std::size_t k = 0; k < legs.size(); ++k) rounds += round_at(k);
   ASSERT_GE(rounds, 2);
   // Each is entered from its row and left into the row's next piece on the move.
-  int changes_on_the_move = 0;
-  bt::Status status = bt::Status::kRunning;
-  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
-    const std::size_t leg = progress().leg;
-    const bool rows = !progress().touching_up;
-    status = step(follow);
-    if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
-      continue;
-    }
-    changes_on_the_move +=
-        round_at(leg) || (legs[leg].kind == Leg::Kind::kRow && round_at(leg + 1));
-  }
-  EXPECT_EQ(status, bt::Status::kSuccess);
-  EXPECT_EQ(changes_on_the_move, 2 * rounds);
+  EXPECT_EQ(changesOnTheMove(follow, legs, round_at), 2 * rounds);
   EXPECT_EQ(progress().bumps, 0);
   EXPECT_GT(sim.coverage(), 0.9);
 }
