@@ -158,11 +158,11 @@ std::vector<Cell> decompose(const FreeSpace& space, const Mask& region) {
         if (overlap(slice, below[p].first)) ++overlaps, parent = static_cast<int>(p);
       }
       if (overlaps == 1) {
-        const auto& [parent_slice, parent_cell] = below[parent];
+        const Slice& parent_slice = below[parent].first;
         const auto above = std::count_if(here.begin(), here.end(), [&](const auto& other) {
           return overlap(parent_slice, other.first);
         });
-        if (above == 1) cell = parent_cell;
+        if (above == 1) cell = below[parent].second;
       }
       if (cell < 0) {
         cell = static_cast<int>(cells.size());
@@ -319,7 +319,8 @@ void pruneRows(const FreeSpace& space, const Mask& floor, std::vector<std::vecto
   }
   std::stable_sort(order.begin(), order.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [own, row] : order) {
+  for (auto& entry : order) {
+    Row* const row = entry.second;  // (not a structured binding: lambdas capture it, C++20)
     // The shortest stretch [lo, hi] of the row within r of each point only it sweeps.
     double lo = row->right.x, hi = row->left.x;
     int own_now = 0;
