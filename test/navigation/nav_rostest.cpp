@@ -319,17 +319,27 @@ class NavMap : public Nav {
     grid_ = roomba_rrt::geometry::loadMap(map_file_).grid;
     ASSERT_TRUE(ros::service::waitForService("/rrt_planner/make_plan", ros::Duration(30)));
   }
-  nav_msgs::GetPlan::Response makePlan(double x, double y, double tolerance,
-                                       const std::string& start_frame = "map") {
-    nav_msgs::GetPlan srv;
+  /// A make_plan request from where the robot is (its start in `start_frame`) to (x, y).
+  nav_msgs::GetPlan::Request planRequest(double x, double y, double tolerance,
+                                         const std::string& start_frame = "map") {
+    nav_msgs::GetPlan::Request request;
     const Robot::Sample s = robot_.latest();
-    srv.request.start.header.frame_id = start_frame;
-    srv.request.start.pose.position.x = s.x;
-    srv.request.start.pose.position.y = s.y;
-    srv.request.goal = goalAt(x, y).target_pose;
-    srv.request.tolerance = static_cast<float>(tolerance);
+    request.start.header.frame_id = start_frame;
+    request.start.pose.position.x = s.x;
+    request.start.pose.position.y = s.y;
+    request.goal = goalAt(x, y).target_pose;
+    request.tolerance = static_cast<float>(tolerance);
+    return request;
+  }
+  nav_msgs::GetPlan::Response makePlan(const nav_msgs::GetPlan::Request& request) {
+    nav_msgs::GetPlan srv;
+    srv.request = request;
     EXPECT_TRUE(ros::service::call("/rrt_planner/make_plan", srv));
     return srv.response;
+  }
+  nav_msgs::GetPlan::Response makePlan(double x, double y, double tolerance,
+                                       const std::string& start_frame = "map") {
+    return makePlan(planRequest(x, y, tolerance, start_frame));
   }
   /// Every edge of the plan keeps the Roomba's radius from every blocked cell's square.
   void expectClear(const nav_msgs::Path& plan) {
@@ -378,16 +388,10 @@ TEST_F(NavMap, make_plan_relaxes_a_goal_in_a_wall_by_its_tolerance_and_only_then
 TEST_F(NavMap, make_plan_takes_a_huge_but_finite_goal_orientation_as_its_heading) {
   // 1e300 in every component: (0.5, 0.5, 0.5, 0.5) scaled, a quarter turn. Squaring it overflows;
   // the plan's poses must still be finite and the last one face +y.
-  nav_msgs::GetPlan srv;
-  const Robot::Sample s = robot_.latest();
-  srv.request.start.header.frame_id = "map";
-  srv.request.start.pose.position.x = s.x;
-  srv.request.start.pose.position.y = s.y;
-  srv.request.goal = goalAt(goal_x_, goal_y_).target_pose;
-  auto& q = srv.request.goal.pose.orientation;
+  nav_msgs::GetPlan::Request request = planRequest(goal_x_, goal_y_, 0.0);
+  auto& q = request.goal.pose.orientation;
   q.x = q.y = q.z = q.w = 1e300;
-  ASSERT_TRUE(ros::service::call("/rrt_planner/make_plan", srv));
-  const nav_msgs::Path& plan = srv.response.plan;
+  const nav_msgs::Path plan = makePlan(request).plan;
   expectClear(plan);
   ASSERT_FALSE(plan.poses.empty());
   for (const auto& pose : plan.poses) {
