@@ -71,12 +71,17 @@ class Observer {
   void onOdom(const nav_msgs::Odometry& msg) {
     const double x = msg.pose.pose.position.x, y = msg.pose.pose.position.y;
     const bool backing = msg.twist.twist.linear.x < 0;
+    // Standing still does not end a GoBack: on a loaded machine /bumper can be late at 10x real
+    // time, and the node then commands zero velocity until it speaks again (the behaviour does
+    // not tick meanwhile, and GoBack goes on afterwards). The next motion that is not backwards
+    // (Rotate's turn) ends it.
+    const bool still = msg.twist.twist.linear.x == 0 && msg.twist.twist.angular.z == 0;
     if (backing) backed_ += std::hypot(x - x_, y - y_);
-    if (!backing && backing_) {
+    if (!backing && !still && backing_) {
       backing_distances.push_back(backed_);
       backed_ = 0;
     }
-    backing_ = backing;
+    backing_ = backing || (still && backing_);
     x_ = x;
     y_ = y;
     min_x = std::min(min_x, x_);
