@@ -135,7 +135,9 @@ class PlanCoverage final : public bt::LeafNode {
     CoverageProgress& progress = coverage_.value();
     progress = CoverageProgress{};
     progress.plan = planner_->plan({start->x, start->y});
-    progress.touching_up = progress.plan.legs.empty();  // nothing to touch up either: done
+    if (progress.plan.legs.empty()) {  // nothing to touch up either: done
+      progress.touch_ups = CoverageProgress::kTouchUpPasses;
+    }
     coverage_.commit();
     if (progress.plan.legs.empty()) {
       error_.set("nothing to clean: no floor can be reached from the start");
@@ -205,10 +207,11 @@ class FollowCoverage final : public bt::LeafNode {
       return Status::kFailure;
     }
     while (!progress.done()) {
-      if (progress.leg >= progress.plan.legs.size()) {  // the rows are driven: the spots missed
-        progress.plan = planner.touchUp(progress.swept, {pose->x, pose->y});
+      if (progress.leg >= progress.plan.legs.size()) {  // the rows (a pass) are driven: the spots
+        progress.plan = planner.touchUp(progress.swept, {pose->x, pose->y},
+                                        CoverageProgress::kTouchUpSpotAreas[progress.touch_ups]);
         progress.leg = 0;
-        progress.touching_up = true;
+        ++progress.touch_ups;
         following_ = kNone;
         continue;
       }
@@ -291,7 +294,7 @@ class FollowCoverage final : public bt::LeafNode {
         return false;
       }
       const bool u_turn = geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
-                          (!progress.touching_up ||
+                          (!progress.touchingUp() ||
                            (gentle(legs[k].points, legs[k + 1].points) &&
                             (k == progress.leg || gentle(legs[k - 1].points, legs[k].points))));
       return u_turn || roundIsland(k);

@@ -644,8 +644,8 @@ void CoveragePlanner::markSwept(std::vector<std::uint8_t>& swept, const Point2& 
   forPointsNear(space_, at, at, space_.robotRadius(), [&](int k) { swept[k] = 1; });
 }
 
-CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
-                                      const Point2& at) const {
+CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
+                                      double min_spot_area) const {
   CoveragePlan plan;
   Mask missed = reachableFloor(plan, at);
   for (int k = 0; k < space_.size(); ++k) {
@@ -655,8 +655,8 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
   const std::optional<int> seed = space_.connect(at, FreeSpace::kFree);
   if (!seed) return plan;
   const Mask drivable = flood(space_, *seed, FreeSpace::kFree);
-  // The spots: 8-connected pieces of missed floor. Those under kMinSpotArea are not worth going
-  // back for.
+  // The spots: 8-connected pieces of missed floor. Those under min_spot_area are not worth going
+  // back for (now).
   const double h = space_.resolution();
   const double r = space_.robotRadius();
   std::vector<std::pair<Point2, Point2>> visits;  // rows to drive, in any direction
@@ -666,7 +666,7 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept,
     std::vector<int> spot;
     forComponent(
         space_, k, [&](int n) { return missed[n] != 0; }, seen, [&](int n) { spot.push_back(n); });
-    if (spot.size() * h * h < kMinSpotArea) {
+    if (spot.size() * h * h < min_spot_area) {
       for (int q : spot) missed[q] = 0;
     }
   }

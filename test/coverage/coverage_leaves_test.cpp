@@ -100,9 +100,9 @@ struct LeafTest : ::testing::Test {
     bt::Status status = bt::Status::kRunning;
     for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) {
       const std::size_t leg = progress().leg;
-      const bool rows = !progress().touching_up;
+      const bool rows = !progress().touchingUp();
       status = step(follow);
-      if (!rows || progress().touching_up || progress().leg != leg + 1 || context.cmd.v <= 0) {
+      if (!rows || progress().touchingUp() || progress().leg != leg + 1 || context.cmd.v <= 0) {
         continue;
       }
       changes += joined(leg) || (legs[leg].kind == Leg::Kind::kRow && joined(leg + 1));
@@ -365,7 +365,7 @@ TEST_F(LeafTest, coverage_done_only_when_every_leg_is_driven) {
   finished.leg = finished.plan.legs.size();
   board->set<CoverageProgress>("coverage", finished);
   EXPECT_EQ(done.tick(), bt::Status::kFailure);  // the rows are driven, the touch-up is not
-  finished.touching_up = true;
+  finished.touch_ups = CoverageProgress::kTouchUpPasses;
   board->set<CoverageProgress>("coverage", finished);
   EXPECT_EQ(done.tick(), bt::Status::kSuccess);
 }

@@ -507,6 +507,38 @@ TEST(CoveragePlanner, touch_up_goes_back_for_a_skipped_row_and_then_has_nothing_
   EXPECT_GT(skipping.share(planner, plan), 0.98);
 }
 
+TEST(CoveragePlanner, touch_up_goes_back_only_for_spots_as_large_as_asked) {
+  // All swept but a 20 × 20 cm spot (400 cm²) and a 7.5 × 7.5 cm one (56 cm²) far from it: a pass
+  // for spots of 120 cm² or more visits the large one only; the default pass both.
+  const World world = emptyRoom();
+  const CoveragePlanner planner(world);
+  const auto& space = planner.freeSpace();
+  std::vector<std::uint8_t> swept(space.size(), 1);
+  const Point2 large{1.5, 1.5}, small{4.5, 3.0};
+  for (int k = 0; k < space.size(); ++k) {
+    const Point2 p = space.point(k);
+    if (std::fabs(p.x - large.x) < 0.1 && std::fabs(p.y - large.y) < 0.1) swept[k] = 0;
+    if (std::fabs(p.x - small.x) < 0.0375 && std::fabs(p.y - small.y) < 0.0375) swept[k] = 0;
+  }
+  auto stops = [&](double least) {
+    std::vector<Point2> at;
+    for (const Leg& leg : planner.touchUp(swept, {3.0, 2.0}, least).legs) {
+      if (leg.kind == Leg::Kind::kRow) at.push_back(leg.points.front());
+    }
+    return at;
+  };
+  const auto near = [](const Point2& a, const Point2& b) {
+    return std::hypot(a.x - b.x, a.y - b.y) < 0.17;
+  };
+  const std::vector<Point2> first = stops(0.012);
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_TRUE(near(first[0], large));
+  const std::vector<Point2> all = stops(CoveragePlanner::kMinSpotArea);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_TRUE(near(all[0], small) || near(all[1], small));
+  EXPECT_TRUE(near(all[0], large) || near(all[1], large));
+}
+
 TEST(CoveragePlanner, touch_up_sweeps_a_strip_along_a_wall_with_one_row_beside_it) {
   // What the U-turns' arcs leave: the floor within 2.5 cm of the left wall, closer to it than any
   // lattice point the robot may stand on, for 1.5 m.

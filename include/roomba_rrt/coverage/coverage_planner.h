@@ -137,12 +137,13 @@ class CoveragePlanner {
   void markSwept(std::vector<std::uint8_t>& swept, const Point2& at) const;
 
   /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
-  /// `swept` does not mark (each spot of at least kMinSpotArea: the corners a U-turn cut, a
+  /// `swept` does not mark (each spot of at least `min_spot_area`: the corners a U-turn cut, a
   /// skipped row, the floor beside a bump), nearest first. Each spot is visited by a transit to
   /// the free lattice point whose disc covers most of it, then a row of no length there (the
   /// robot passes or stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
-  CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at) const;
+  CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
+                       double min_spot_area = kMinSpotArea) const;
 
   /// A spot of missed floor smaller than this (m²) is not worth going back for.
   static constexpr double kMinSpotArea = 0.004;
