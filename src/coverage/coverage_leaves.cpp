@@ -179,6 +179,7 @@ class FollowCoverage final : public bt::LeafNode {
   void onEnter() override {
     following_ = kNone;
     follower_.resetHold();
+    contact_ = context_.bumper.pressed;
   }
 
   /// True once the robot has made no progress along the leg for Driving::kStuckTime (it turns on
@@ -201,7 +202,12 @@ class FollowCoverage final : public bt::LeafNode {
     CoverageProgress& progress = coverage_.value();
     const CoveragePlanner& planner = *planner_->get();
     planner.markSwept(progress.swept, {pose->x, pose->y});
-    if (context_.bumper.pressed) {
+    // A bump is the bumper pressed while following, not a contact there when it started (the
+    // robot put down against a wall; the side of a wall the back-up did not leave): from that,
+    // the legs lead away, and the guard keeps the robot from pushing into what it knows.
+    const bool bumped = context_.bumper.pressed && !contact_;
+    contact_ = context_.bumper.pressed;
+    if (bumped) {
       ++progress.bumps;
       error_.set("bumped");
       return Status::kFailure;
@@ -353,8 +359,9 @@ class FollowCoverage final : public bt::LeafNode {
   std::size_t following_ = kNone;  ///< the leg the follower was started on
   /// Arc lengths along path_ where the joined legs after the first start.
   std::vector<double> ends_;
-  double furthest_ = 0;  ///< the most progress along path_ so far (m)
-  int still_ticks_ = 0;  ///< ticks since it last grew by Driving::kMinProgress
+  double furthest_ = 0;   ///< the most progress along path_ so far (m)
+  int still_ticks_ = 0;   ///< ticks since it last grew by Driving::kMinProgress
+  bool contact_ = false;  ///< the bumper was pressed at the last tick (or when the leaf started)
 };
 
 class ResumeCoverage final : public bt::LeafNode {

@@ -93,7 +93,7 @@ Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, uns
     run.time_to.assign(std::size(kTargets), std::nan(""));
     run.curve.push_back(reachableCoverage(simulator, *cleaning));
   }
-  bool was_pressed = false;
+  bool was_pressed = simulator.senseContact().pressed;  // put down touching a wall: no bump
   double theta = simulator.pose().theta, previous_wrapped = theta;
   for (long k = 0; k < steps; ++k) {
     const robot::BumperState bumper = simulator.senseContact();

@@ -425,5 +425,23 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   EXPECT_GT(loop.sim.coverage(), 0.8);
 }
 
+TEST(CoverageTree, placed_against_a_wall_it_cleans_instead_of_backing_up_along_it) {
+  // Touching the bottom wall from the start (a robot put down by hand, or on its dock): the
+  // bumper is pressed, and backing up does not release a contact at its side. It is not a bump
+  // of the cleaning's: the robot drives off along its plan (the guard keeps it off the wall)
+  // instead of backing up along the wall, 5 cm at a time, into the corner.
+  CleaningLoop loop("roomba_world.yaml");
+  world::World against_wall = loop.world;
+  against_wall.initial_pose = {3.2, against_wall.robot_radius, 0.0};
+  loop.sim = sim::Simulator(against_wall);
+  ASSERT_TRUE(loop.sim.senseContact().pressed);
+  loop.run(600);
+  const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  EXPECT_TRUE(progress->done());
+  EXPECT_EQ(progress->bumps, 0);
+  EXPECT_GT(loop.sim.coverage(), 0.95);
+}
+
 }  // namespace
 }  // namespace roomba_rrt::coverage

@@ -161,4 +161,13 @@ TEST(RoombaCoverage, coverage_reports_the_reachable_floor_and_compare_puts_all_t
   EXPECT_TRUE(std::ifstream(plot).good());
 }
 
+TEST(RoombaCoverage, a_robot_put_down_against_a_wall_has_not_bumped_and_cleans) {
+  // The bottom wall of the lab's room touches the disc at y = 0.17 m (the robot's radius).
+  const Outcome out = coverage("--behavior coverage --world empty --pose 3.2,0.17 --duration 400");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find("bumps per run                        0"), std::string::npos)
+      << out.output;
+  EXPECT_GT(coverageAt(out.output, 300), 95.0) << out.output;
+}
+
 }  // namespace

@@ -65,11 +65,12 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   `coverage.swept` on every tick; once the rows are driven it goes back for the spots they
 ///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows), in two passes
 ///   (CoverageProgress::kTouchUpSpotAreas). RUNNING with the command; SUCCESS when every leg
-///   of both touch-up passes is driven too; FAILURE with
-///   `error` when the bumper is pressed ("bumped", counted in `bumps`), the robot strayed from the
-///   leg, the guard held it still ("blocked"), it made no progress along the leg for 10 s (its
-///   wheels spin), or there is no progress or pose. The leg it failed
-///   in stays `coverage.leg`, for ResumeCoverage.
+///   of both touch-up passes is driven too; FAILURE with `error` when the bumper is pressed
+///   while it follows ("bumped", counted in `bumps`; a contact there when it starts is not a
+///   bump: the robot put down against a wall drives off, where backing up would slide along the
+///   wall), the robot strayed from the leg, the guard held it still ("blocked"), it made no
+///   progress along the leg for 10 s (its wheels spin), or there is no progress or pose. The
+///   leg it failed in stays `coverage.leg`, for ResumeCoverage.
 /// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
 ///   of the plan from where the robot stands (CoveragePlanner::resume from `coverage.leg`: the
 ///   rest of the row it was in, or the row its transit led to). After `skip_after` resumes
