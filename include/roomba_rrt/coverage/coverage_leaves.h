@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,7 +36,7 @@ struct CoverageProgress {
   /// that ended a centimetre short). One pass of spots ≥ 40 cm²: the dining room's 99 % at 302 s;
   /// ≥ 120 cm² then ≥ 40 cm²: 286 s (its ideal time: 148 s).
   static constexpr double kTouchUpSpotAreas[] = {0.012, CoveragePlanner::kMinSpotArea};
-  static constexpr int kTouchUpPasses = 2;
+  static constexpr int kTouchUpPasses = static_cast<int>(std::size(kTouchUpSpotAreas));
 
   bool touchingUp() const { return touch_ups > 0; }
   bool done() const { return touch_ups >= kTouchUpPasses && leg >= plan.legs.size(); }
