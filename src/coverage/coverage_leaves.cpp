@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -37,6 +38,17 @@ const CoverageProgress* findProgress(const bt::Blackboard& board, const std::str
 }
 
 namespace {
+
+/// The way the first (`last`: the last) stretch of `points` that has a length goes; nullopt when
+/// none has (a touch-up stop: a row of no length).
+std::optional<Point2> stretch(const Polyline& points, bool last) {
+  for (std::size_t s = 0; s + 1 < points.size(); ++s) {
+    const std::size_t i = last ? points.size() - 2 - s : s;
+    const Point2 d{points[i + 1].x - points[i].x, points[i + 1].y - points[i].y};
+    if (d.x != 0 || d.y != 0) return d;
+  }
+  return std::nullopt;
+}
 
 /// The planner of the leaves: given, or built from the world when the first leaf that plans is.
 class LazyPlanner {
@@ -270,11 +282,15 @@ class FollowCoverage final : public bt::LeafNode {
     // A short transit, then a row; in the touch-up, whose legs go from spot to spot, only with no
     // turn sharper than Driving::kMaxJoinedTurn where the transit meets the legs (a path that
     // reverses has the carrot jump behind the robot, which then turns on the spot for ever).
-    auto gentle = [&](const Polyline& in, const Polyline& out) {
-      const Point2 a = in[in.size() - 2], b = in.back(), c = out[1];
-      const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - out[0].x, vy = c.y - out[0].y;
-      const double norms = std::hypot(ux, uy) * std::hypot(vx, vy);
-      return norms == 0 || (ux * vx + uy * vy) / norms >= std::cos(Driving::kMaxJoinedTurn);
+    // gentle(k): the turn where leg k starts, from the last stretch driven before it to the first
+    // one from there on; a touch-up stop (a row of no length) does not hide the turn through it.
+    auto gentle = [&](std::size_t k) {
+      std::optional<Point2> in, out;
+      for (std::size_t m = k; m-- > 0 && !in;) in = stretch(legs[m].points, true);
+      for (std::size_t m = k; m < legs.size() && !out; ++m) out = stretch(legs[m].points, false);
+      if (!in || !out) return true;
+      const double norms = std::hypot(in->x, in->y) * std::hypot(out->x, out->y);
+      return (in->x * out->x + in->y * out->y) / norms >= std::cos(Driving::kMaxJoinedTurn);
     };
     // The way round an island from one piece of a row to the next (which goes on along the same
     // line, the same way: CoveragePlanner cuts rows at islands).
@@ -290,19 +306,16 @@ class FollowCoverage final : public bt::LeafNode {
         return std::fabs(ux * (p.y - a.y) - uy * (p.x - a.x)) <= 1e-9 * length;
       };
       return length > 0 && onLine(c) && onLine(d) && ux * (c.x - b.x) + uy * (c.y - b.y) > 0 &&
-             ux * (d.x - c.x) + uy * (d.y - c.y) > 0 &&
-             gentle(legs[k - 1].points, legs[k].points) &&
-             gentle(legs[k].points, legs[k + 1].points);
+             ux * (d.x - c.x) + uy * (d.y - c.y) > 0 && gentle(k) && gentle(k + 1);
     };
     auto joinable = [&](std::size_t k) {
       if (k + 1 >= legs.size() || legs[k].kind != Leg::Kind::kTransit ||
           legs[k + 1].kind != Leg::Kind::kRow) {
         return false;
       }
-      const bool u_turn = geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
-                          (!progress.touchingUp() ||
-                           (gentle(legs[k].points, legs[k + 1].points) &&
-                            (k == progress.leg || gentle(legs[k - 1].points, legs[k].points))));
+      const bool u_turn =
+          geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
+          (!progress.touchingUp() || (gentle(k + 1) && (k == progress.leg || gentle(k))));
       return u_turn || roundIsland(k);
     };
     const bool cleaning = leg.kind == Leg::Kind::kRow || joinable(progress.leg);

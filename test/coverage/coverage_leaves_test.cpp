@@ -261,6 +261,29 @@ TEST_F(PillarTest, the_way_round_a_pillar_between_two_pieces_of_a_row_is_driven_
   EXPECT_GT(sim.coverage(), 0.9);
 }
 
+TEST_F(LeafTest, a_touch_up_stop_the_way_turns_back_at_is_reached_not_cut) {
+  // A touch-up stop is a row of no length. The way there and the way on reverse at it: driven
+  // as one path, the carrot would jump behind the robot before it got there.
+  CoverageProgress touch_up;
+  touch_up.touch_ups = 1;  // the first pass; the floor is swept but for the stop
+  touch_up.swept.assign(planner->freeSpace().size(), 1);
+  const Point2 start{1.0, 0.75}, stop{1.3, 0.75};
+  touch_up.plan.legs = {{Leg::Kind::kTransit, {start, stop}},
+                        {Leg::Kind::kRow, {stop, stop}},
+                        {Leg::Kind::kTransit, {stop, start}},
+                        {Leg::Kind::kRow, {start, start}}};
+  board->set<CoverageProgress>("coverage", touch_up);
+  bt::Tree follow = build(kFollow);
+  double furthest = 0;
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 20 && status == bt::Status::kRunning; ++i) {
+    status = step(follow);
+    furthest = std::max(furthest, sim.pose().x);
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_GT(furthest, stop.x - 0.015);  // within the follower's 1 cm of the stop
+}
+
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
   plan();
   bt::Tree follow = build(kFollow);
