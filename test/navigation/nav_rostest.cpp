@@ -442,8 +442,14 @@ TEST_F(Clean, the_cleaning_tree_covers_90_percent_of_the_floor_then_stands_still
     std::lock_guard<std::mutex> lock(mutex);
     EXPECT_GT(rows_left, 50u) << "the furnished room's plan has some 50 legs";
   }
-  // Done: Idle and standing, with nothing left on ~coverage_path.
-  const bool done = waitFor([&] { return robot.state() == "Idle"; }, kCleanWallTimeout);
+  // Done: Idle and standing, with nothing left on ~coverage_path. (~state also reads Idle for a
+  // tick in which a recovery resumes the plan and nothing drives.)
+  const bool done = waitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return robot.state() == "Idle" && rows_left == 0;
+      },
+      kCleanWallTimeout);
   const ros::Time finished = ros::Time::now();
   std::unique_lock<std::mutex> lock(mutex);
   std::printf("cleaning: %s after %.0f s of robot time, coverage %.1f %%, %zu path points left\n",
