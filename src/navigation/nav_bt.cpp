@@ -117,6 +117,7 @@ NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string&
       board_(makeBoard()),
       goal_(&board_->declare<robot::Pose2D>("goal")),
       pose_(&board_->declare<robot::Pose2D>("pose")),
+      predictor_(config.pose_latency, config.params.rate),
       tree_(buildTree(config, context_, text, source, from_file, board_)) {
   context_.state_name = &kIdle;
   context_.params = &params_;
@@ -155,7 +156,7 @@ void NavBt::cancelGoal() {
 
 robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
   context_.bumper = bumper;
-  pose_->set(pose);
+  pose_->set(predictor_.predict(pose));
   context_.cmd = robot::Velocity{};
   const bt::Status status = tree_.tick();
   if (status != bt::Status::kRunning && context_.outcome == GoalOutcome::kActive && goal_->get()) {
@@ -171,6 +172,7 @@ robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2
     }
   }
   context_.previous_cmd = context_.cmd;
+  predictor_.sent(context_.cmd);
   return context_.cmd;
 }
 

@@ -10,6 +10,7 @@
 
 #include "roomba_rrt/bt/tree.h"
 #include "roomba_rrt/navigation/nav_leaves.h"
+#include "roomba_rrt/navigation/pose_predictor.h"
 
 namespace roomba_rrt::navigation {
 
@@ -45,6 +46,7 @@ class NavBt {
   void setRoombaParams(const behavior::RoombaParams& params);
 
   /// One tick: the bumper and pose of this step in, the command out (zero when no leaf runs).
+  /// The leaves see the pose driven forward over the config's pose_latency (PosePredictor).
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose);
 
   GoalOutcome outcome() const { return context_.outcome; }
@@ -67,6 +69,7 @@ class NavBt {
   std::shared_ptr<bt::Blackboard> board_;
   bt::Blackboard::Entry<robot::Pose2D>* goal_;
   bt::Blackboard::Entry<robot::Pose2D>* pose_;
+  PosePredictor predictor_;
   bt::Tree tree_;
 };
 

@@ -73,6 +73,9 @@ struct NavLeafConfig {
   std::shared_ptr<const PathChecker> known_world;
   /// More leaves, registered after the navigation leaves (e.g. coverage::coverageLeaves).
   std::vector<LeafRegistrar> more_leaves;
+  /// s, how old the pose is by the time the command computed from it drives the robot (over
+  /// ROS: a tick; 0 in-process). NavBt drives the pose forward over it (PosePredictor).
+  double pose_latency = 0;
 };
 
 /// The motion guard of the known world keeping `margin` (FollowPath's: 1 cm), at the follower's
