@@ -12,7 +12,7 @@ namespace {
 const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
     "                       [--world FILE] [--pose X,Y[,THETA]] [--crop X0,Y0,X1,Y1]\n"
-    "                       [--config FILE] [--tree FILE]\n"
+    "                       [--config FILE] [--tree FILE] [--lag N] [--predict N]\n"
     "                       [--csv traj.csv] [--png map.png]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
@@ -31,6 +31,10 @@ const char* const kUsage =
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree) or coverage\n"
     "              (default: config/roomba_coverage_tree.xml)\n"
+    "  --lag       the behaviour sees the pose and bumper N steps late (default 0; over ROS\n"
+    "              it is 1: roomba_sim steps once more before a command arrives)\n"
+    "  --predict   steps the cleaning tree drives the pose it sees forward along its own\n"
+    "              commands (roomba_bt's ~pose_latency; default: --lag's)\n"
     "  --csv       trajectory of the first seed: t,x,y,theta,v,w,state,bumper\n"
     "  --png       picture of a typical run: with --seeds N, the seed whose final coverage is\n"
     "              closest to the mean of the N (its title says which)\n"
@@ -116,6 +120,13 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
       o.png = value;
     } else if (flag == "--robots") {
       o.robots = parseCounts(flag, value);
+    } else if (flag == "--lag" || flag == "--predict") {
+      const double ticks = parseDoubleFlag(flag, value);
+      if (ticks < 0 || ticks > 60 || ticks != std::floor(ticks)) {
+        throw std::invalid_argument(flag + " needs a whole number of steps in [0, 60], got " +
+                                    value);
+      }
+      (flag == "--lag" ? o.lag : o.predict) = static_cast<int>(ticks);
     } else if (flag == "--plot") {
       o.plot = value;
     } else {
@@ -134,6 +145,9 @@ CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
   if (!(o.duration > 0)) throw std::invalid_argument("--duration must be > 0");
   if (!o.tree.empty() && o.behavior != "bt" && o.behavior != "coverage") {
     throw std::invalid_argument("--tree needs --behavior bt or coverage");
+  }
+  if (o.predict >= 0 && o.behavior != "coverage" && !o.compare) {
+    throw std::invalid_argument("--predict is the cleaning tree's: --behavior coverage");
   }
   if (o.behavior == "coverage" && !o.robots.empty()) {
     throw std::invalid_argument("--robots runs the lab's behaviours: fsm or bt");

@@ -21,6 +21,9 @@ struct CoverageOptions {
   std::string png;
   std::vector<int> robots;  ///< robot counts (--robots); empty: the world's robots
   std::string plot;
+  int lag = 0;       ///< --lag: steps between the simulator's state and what the behaviour sees
+  int predict = -1;  ///< --predict: ticks the cleaning tree drives the pose forward; -1: lag
+  int predictTicks() const { return predict < 0 ? lag : predict; }
   bool compare = false;  ///< --compare: fsm, bt and coverage side by side
   bool help = false;     ///< -h or --help: print coverageUsage() and nothing else
 };

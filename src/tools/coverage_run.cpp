@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iterator>
 #include <stdexcept>
+#include <utility>
 
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
@@ -25,8 +27,10 @@ class Driver {
       return;
     }
     if (!cleaning) throw std::logic_error("--behavior coverage needs the cleaning set up");
+    navigation::NavLeafConfig config = cleaning->config;
+    config.pose_latency = o.predictTicks() / params.rate;  // as roomba_bt's ~pose_latency
     tree_ = std::make_unique<navigation::NavBt>(
-        cleaning->config, seed,
+        config, seed,
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
@@ -95,12 +99,16 @@ Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, uns
   }
   bool was_pressed = simulator.senseContact().pressed;  // put down touching a wall: no bump
   double theta = simulator.pose().theta, previous_wrapped = theta;
+  // What the behaviour sees, o.lag steps late (over ROS, pose and bumper are messages: one step).
+  std::deque<std::pair<robot::BumperState, robot::Pose2D>> seen;
   for (long k = 0; k < steps; ++k) {
     const robot::BumperState bumper = simulator.senseContact();
     run.bumps += bumper.pressed && !was_pressed;
     was_pressed = bumper.pressed;
-    const robot::Pose2D pose = simulator.pose();  // the pose the behaviour sees
-    const robot::Velocity cmd = behavior.tick(bumper, pose);
+    const robot::Pose2D pose = simulator.pose();  // written and drawn: where the robot is
+    seen.emplace_back(bumper, pose);
+    if (seen.size() > static_cast<std::size_t>(o.lag) + 1) seen.pop_front();
+    const robot::Velocity cmd = behavior.tick(seen.front().first, seen.front().second);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;

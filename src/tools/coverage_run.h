@@ -2,7 +2,8 @@
 // order (contact → bumper → behaviour → move), deterministic by seed; one robot (with its path
 // and CSV) or several (their union's coverage over time). The behaviour is the lab's FSM or BT,
 // or the cleaning tree (config/roomba_coverage_tree.xml in navigation::NavBt, which also sees
-// the robot's pose).
+// the robot's pose). With --lag the one robot's behaviour sees bumper and pose that many steps
+// late, as over ROS.
 #pragma once
 
 #include <fstream>

@@ -47,6 +47,7 @@ int runFleets(const CoverageOptions& o, const world::World& world, const RoombaP
     throw std::invalid_argument("--csv and --png draw one unnamed robot; " + o.world +
                                 " names robots: use --plot");
   }
+  if (o.lag > 0) throw std::invalid_argument("--lag simulates one unnamed robot, no fleet");
   std::vector<int> counts = o.robots;
   if (counts.empty()) counts.push_back(static_cast<int>(world.robots.size()));
   std::vector<FleetStatistics> fleets;

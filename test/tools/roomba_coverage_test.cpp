@@ -170,4 +170,26 @@ TEST(RoombaCoverage, a_robot_put_down_against_a_wall_has_not_bumped_and_cleans) 
   EXPECT_GT(coverageAt(out.output, 300), 95.0) << out.output;
 }
 
+TEST(RoombaCoverage, a_pose_seen_late_bumps_unless_the_tree_drives_it_forward) {
+  // Three steps late (what a loaded machine gives roomba_bt at 5x real time for a moment): the
+  // robot acts on where it was and bumps at the rows' ends. Driving the pose forward along its
+  // own commands (roomba_bt's ~pose_latency) cleans as if nothing were late.
+  const std::string furnished = "--behavior coverage --world furnished --duration 300";
+  const Outcome on_time = coverage(furnished);
+  const Outcome late = coverage(furnished + " --lag 3 --predict 0");
+  const Outcome predicted = coverage(furnished + " --lag 3");
+  for (const Outcome* out : {&on_time, &late, &predicted})
+    ASSERT_EQ(out->exit_code, 0) << out->output;
+  const std::string no_bump = "bumps per run                        0";
+  EXPECT_NE(on_time.output.find(no_bump), std::string::npos) << on_time.output;
+  EXPECT_EQ(late.output.find(no_bump), std::string::npos) << late.output;
+  EXPECT_NE(predicted.output.find(no_bump), std::string::npos) << predicted.output;
+  EXPECT_EQ(coverageAt(predicted.output, 300), coverageAt(on_time.output, 300)) << predicted.output;
+
+  const Outcome bad = coverage("--behavior coverage --lag 1.5");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--lag needs a whole number of steps"), std::string::npos)
+      << bad.output;
+}
+
 }  // namespace
