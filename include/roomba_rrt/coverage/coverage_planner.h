@@ -139,7 +139,8 @@ class CoveragePlanner {
   /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
   /// `swept` does not mark (each spot of at least `min_spot_area`: the corners a U-turn cut, a
   /// skipped row, the floor beside a bump), nearest first. Each spot is visited by a transit to
-  /// the free lattice point whose disc covers most of it, then a row of a few centimetres there.
+  /// the free lattice point whose disc covers most of it, then a row of no length there (the
+  /// robot passes or stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
   CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
                        double min_spot_area = kMinSpotArea) const;
