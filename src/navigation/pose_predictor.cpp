@@ -8,8 +8,7 @@
 namespace roomba_rrt::navigation {
 
 PosePredictor::PosePredictor(double latency, double rate) {
-  util::require(std::isfinite(latency) && latency >= 0 && latency <= 1, "pose_latency",
-                "in [0, 1] s", latency);
+  util::requireInRange("pose_latency", latency, 0, kMaxLatency, "s");
   util::requirePositive("rate", rate);
   dt_ = 1.0 / rate;
   ticks_ = static_cast<int>(std::lround(latency * rate));

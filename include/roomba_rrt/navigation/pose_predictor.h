@@ -17,16 +17,16 @@ namespace roomba_rrt::navigation {
 /// lost command is predicted a few millimetres ahead at most (ticks × speed).
 class PosePredictor {
  public:
-  /// util::InvalidInput naming "pose_latency" unless 0 ≤ latency ≤ 1 s, or "rate" unless > 0.
-  /// The latency is rounded to whole ticks of 1 / rate.
+  static constexpr double kMaxLatency = 1.0;  ///< s
+
+  /// util::InvalidInput naming "pose_latency" unless 0 ≤ latency ≤ kMaxLatency, or "rate" unless
+  /// > 0. The latency is rounded to whole ticks of 1 / rate.
   PosePredictor(double latency, double rate);
 
   /// The pose `seen` driven forward along the commands of the last latency_ticks() ticks.
   robot::Pose2D predict(const robot::Pose2D& seen) const;
   /// The command sent this tick (the oldest one drops out).
   void sent(const robot::Velocity& cmd);
-  /// Forget the commands (the robot was stopped or moved by hand).
-  void reset() { sent_.clear(); }
 
   int latency_ticks() const { return ticks_; }
 
