@@ -3,8 +3,12 @@
 // BM_CoveragePlanFurnished is what a behaviour pays when it starts cleaning: sampling the world
 // (CoveragePlanner's constructor) and planning from the robot's pose. The counters report what
 // the plan achieves: the rows' share of the reachable floor and the plan's length against the
-// ideal (the reachable floor swept once by the robot's diameter).
+// ideal (the reachable floor swept once by the robot's diameter). BM_CoveragePlanWillowFull is
+// a whole shared map (skipped when ../shared/maps is not there).
 #include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <string>
 
 #include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/world/world.h"
@@ -39,6 +43,20 @@ void BM_CoveragePlanApartmentMap(benchmark::State& state) {
   planAndReport(state, world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml"));
 }
 BENCHMARK(BM_CoveragePlanApartmentMap)->Unit(benchmark::kMillisecond);
+
+// A whole office floor (../shared/maps/willow_full: 2,900 m² of floor, 5 M lattice points), as
+// `scripts/run clean --world willow_full.yaml` plans it: what a large map costs.
+void BM_CoveragePlanWillowFull(benchmark::State& state) {
+  const std::string yaml = ROOMBA_RRT_SHARED_MAPS "/willow_full.yaml";
+  if (!std::filesystem::exists(yaml)) {
+    state.SkipWithError(("no " + yaml).c_str());
+    return;
+  }
+  world::World world = world::loadWorld(yaml);
+  world.initial_pose = {-12.0, 0.0, 0.0};  // in the offices on the left
+  planAndReport(state, world);
+}
+BENCHMARK(BM_CoveragePlanWillowFull)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

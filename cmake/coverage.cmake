@@ -10,13 +10,14 @@ if(CATKIN_ENABLE_TESTING)
     LINK roomba_coverage_planning)
 endif()
 
-# coverage_bench: time to plan the furnished room's coverage (target ≤ 10 ms).
+# coverage_bench: time to plan the furnished room's coverage (target ≤ 10 ms), and a whole map.
 find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(coverage_bench bench/coverage_bench.cpp)
   target_link_libraries(coverage_bench roomba_coverage_planning benchmark::benchmark)
   target_compile_definitions(coverage_bench PRIVATE
-    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config"
+    ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
 endif()
 
 # The cleaning tree's leaves (config/roomba_coverage_tree.xml), run by navigation::NavBt beside the

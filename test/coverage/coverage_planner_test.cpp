@@ -311,6 +311,22 @@ TEST(CoveragePlanner, same_world_and_start_give_the_same_plan) {
   EXPECT_TRUE(samePlan(CoveragePlanner(world).plan(start), CoveragePlanner(world).plan(start)));
 }
 
+TEST(CoveragePlanner, a_plan_does_not_depend_on_what_was_planned_before) {
+  // The shortest paths keep their search records between searches (on a large map, clearing them
+  // for each transit was most of the planning time): nothing of one search may leak into the next.
+  const World room = furnishedRoom();
+  const World map = roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml");
+  const Point2 room_start{room.initial_pose.x, room.initial_pose.y};
+  const Point2 map_start{map.initial_pose.x, map.initial_pose.y};
+  const CoveragePlanner room_planner(room), map_planner(map);
+  const CoveragePlan room_first = room_planner.plan(room_start);
+  const CoveragePlan map_first = map_planner.plan(map_start);
+  EXPECT_GT(map_first.legs.size(), 10u);
+  EXPECT_TRUE(samePlan(room_planner.plan(room_start), room_first));  // after the map's searches
+  EXPECT_TRUE(samePlan(room_planner.plan(room_start), room_first));  // after its own
+  EXPECT_TRUE(samePlan(map_planner.plan(map_start), map_first));
+}
+
 TEST(CoveragePlanner, floor_above_a_sideboard_against_the_wall_is_swept_too) {
   // The cell widens where the sweep line passes the sideboard's top: its even rows may pass that
   // level by most of a swath and leave a strip along the sideboard; a row beside the step does not.
