@@ -600,6 +600,12 @@ const CoverageOptions& validated(const world::World& world, const CoverageOption
 }
 }  // namespace
 
+CoverageOptions cleaningOptions(const world::World& world) {
+  CoverageOptions options;
+  options.resolution = world.coverage_cell_size;
+  return options;
+}
+
 CoveragePlanner::CoveragePlanner(const world::World& world, const CoverageOptions& options)
     : options_(validated(world, options)), space_(world, options_.clearance, options_.resolution) {
   if (std::optional<world::World> open = withoutIslands(space_)) {

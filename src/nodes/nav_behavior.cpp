@@ -358,7 +358,8 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   util::requireInRange("~pose_latency", s.config.pose_latency, 0,
                        navigation::PosePredictor::kMaxLatency, "s");
   // The cleaning leaves plan in the same world (their planner is built only if the tree uses them).
-  s.config.more_leaves.push_back(coverage::coverageLeaves(s.world));
+  s.config.more_leaves.push_back(
+      coverage::coverageLeaves(s.world, coverage::cleaningOptions(s.world)));
   navigation::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
   using L =

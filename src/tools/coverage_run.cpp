@@ -55,9 +55,8 @@ double reachableCoverage(const sim::Simulator& simulator, const Cleaning& cleani
 }  // namespace
 
 Cleaning::Cleaning(const world::World& world, const behavior::RoombaParams& params) {
-  coverage::CoverageOptions options;
-  options.resolution = world.coverage_cell_size;
-  planner = std::make_shared<const coverage::CoveragePlanner>(world, options);
+  planner =
+      std::make_shared<const coverage::CoveragePlanner>(world, coverage::cleaningOptions(world));
   const coverage::CoveragePlan plan = planner->plan({world.initial_pose.x, world.initial_pose.y});
   reachable_area = plan.reachable_area;
   floor_area = plan.floor_area;

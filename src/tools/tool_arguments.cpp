@@ -64,6 +64,10 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
     world.origin = {box[0], box[1]};
     world.width = box[2] - box[0];
     world.height = box[3] - box[1];
+    if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
+      world.coverage_cell_size = world::defaultCoverageCellSize(
+          world.width, world.height, world.circles.size() + world.rectangles.size());
+    }
   }
   if (!pose.empty()) {
     const std::vector<double> xyt = parseNumbers("--pose", pose);

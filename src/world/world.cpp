@@ -199,7 +199,13 @@ World readWorld(const YAML::Node& root, const std::string& source) {
     }
   }
   top.read("step", world.step);
-  top.read("coverage_cell_size", world.coverage_cell_size);
+  world.coverage_cell_size_given = root.IsMap() && root["coverage_cell_size"];
+  if (world.coverage_cell_size_given) {
+    top.read("coverage_cell_size", world.coverage_cell_size);
+  } else {  // a large map still loads: with coarser cells
+    world.coverage_cell_size = defaultCoverageCellSize(
+        world.width, world.height, world.circles.size() + world.rectangles.size());
+  }
   top.read("command_timeout", world.command_timeout);
   top.read("real_time_factor", world.real_time_factor);
   top.finish();
@@ -257,6 +263,23 @@ void validateRobots(const World& world) {
 
 }  // namespace
 
+bool coverageGridFits(double width, double height, double cell_size, std::size_t furniture) {
+  // The coverage grid holds two bits per cell and tests every cell against every piece of
+  // furniture once at start: both must stay small.
+  const double cells = std::ceil(width / cell_size) * std::ceil(height / cell_size);
+  return cells <= WorldLimits::kMaxCoverageCells &&
+         cells * (1.0 + static_cast<double>(furniture)) <= WorldLimits::kMaxGridWork;
+}
+
+double defaultCoverageCellSize(double width, double height, std::size_t furniture) {
+  double cell = World{}.coverage_cell_size;
+  // At most 0.8 m (validate() accepts up to 1 m): a world that does not fit even then (a
+  // kilometre of room full of furniture, a size that is not finite) keeps it, for validate() to
+  // refuse with the numbers.
+  while (2 * cell <= 1.0 && !coverageGridFits(width, height, cell, furniture)) cell *= 2;
+  return cell;
+}
+
 void validate(const World& world) {
   using L = WorldLimits;
   requirePositive("room.width", world.width, L::kMaxRoomSize);
@@ -274,11 +297,9 @@ void validate(const World& world) {
     fail("furniture", "has " + std::to_string(furniture) + " pieces; at most " +
                           std::to_string(L::kMaxFurniture) + " are supported");
   }
-  // The coverage grid holds two bits per cell and tests every cell against every piece of
-  // furniture once at start: both must stay small.
-  const double cells = std::ceil(world.width / world.coverage_cell_size) *
-                       std::ceil(world.height / world.coverage_cell_size);
-  if (cells > L::kMaxCoverageCells || cells * (1.0 + furniture) > L::kMaxGridWork) {
+  if (!coverageGridFits(world.width, world.height, world.coverage_cell_size, furniture)) {
+    const double cells = std::ceil(world.width / world.coverage_cell_size) *
+                         std::ceil(world.height / world.coverage_cell_size);
     fail("coverage_cell_size",
          "(" + show(world.coverage_cell_size) + ") is too small for a " + show(world.width) +
              " x " + show(world.height) + " m room with " + std::to_string(furniture) +

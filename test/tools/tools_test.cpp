@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -184,6 +185,14 @@ TEST(ToolArguments, crop_keeps_a_region_of_the_world_whose_edges_become_walls) {
   EXPECT_NE(
       refusal([&] { loadToolWorld(apartment, "", "0,0,0.2,3"); }).find("wider than the robot"),
       std::string::npos);
+}
+
+TEST(ToolArguments, a_crop_of_a_large_map_gets_the_regions_coverage_cell) {
+  // A 100 m x 100 m map gets 5 cm cells (the grid's limit); a few rooms of it, the usual 2.5 cm.
+  const std::string map = ROOMBA_RRT_SHARED_MAPS "/nav2_bench_100by100_15.yaml";
+  if (!std::filesystem::exists(map)) GTEST_SKIP() << "no " << map;
+  EXPECT_EQ(loadToolWorld(map, "14,14").coverage_cell_size, 0.05);
+  EXPECT_EQ(loadToolWorld(map, "14,14", "10,10,17.5,17.5").coverage_cell_size, 0.025);
 }
 
 }  // namespace

@@ -116,6 +116,28 @@ TEST(World, sizes_that_the_coverage_grid_cannot_hold_are_named) {
             std::string::npos);
 }
 
+TEST(World, a_world_too_large_for_the_default_coverage_cell_gets_a_coarser_one) {
+  // Nav2's 100 m x 100 m benchmark map at 0.025 m would need 1.6e7 cells: the simulator refused
+  // it unless the user knew to set coverage_cell_size.
+  EXPECT_EQ(parseWorld("room: {width: 6.4, height: 4.8}").coverage_cell_size, 0.025);
+  EXPECT_EQ(parseWorld("room: {width: 100, height: 100}\ninitial_pose: {x: 50, y: 50}")
+                .coverage_cell_size,
+            0.05);
+  EXPECT_EQ(parseWorld("room: {width: 300, height: 300}\ninitial_pose: {x: 50, y: 50}")
+                .coverage_cell_size,
+            0.1);
+  EXPECT_FALSE(parseWorld("room: {width: 6.4, height: 4.8}").coverage_cell_size_given);
+  EXPECT_TRUE(parseWorld("coverage_cell_size: 0.05").coverage_cell_size_given);
+  // A cell the file sets is the user's: kept, and refused when too small.
+  EXPECT_NE(errorFor("room: {width: 100, height: 100}\ninitial_pose: {x: 50, y: 50}\n"
+                     "coverage_cell_size: 0.025")
+                .find("coverage_cell_size: (0.025) is too small"),
+            std::string::npos);
+  const std::string map = ROOMBA_RRT_SHARED_MAPS "/nav2_bench_100by100_15.yaml";
+  if (!std::filesystem::exists(map)) GTEST_SKIP() << "no " << map;
+  EXPECT_EQ(roomba_rrt::world::readWorldFile(map).coverage_cell_size, 0.05);
+}
+
 TEST(World, a_large_room_within_the_limits_loads) {
   const World world = parseWorld(
       "room: {width: 1000, height: 1000}\ncoverage_cell_size: 0.5\n"

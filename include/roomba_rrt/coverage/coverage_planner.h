@@ -84,6 +84,12 @@ struct CoverageOptions {
   double clearance = 0.01;
 };
 
+/// The options for cleaning `world`: the defaults on a lattice of the world's coverage cell, so
+/// the planner samples the floor on the grid the simulator measures the cleaned floor on (a
+/// large map's coarser cell: world::defaultCoverageCellSize). roomba_bt and roomba_coverage use
+/// it, so they plan alike.
+CoverageOptions cleaningOptions(const world::World& world);
+
 /// One leg of a plan.
 struct Leg {
   enum class Kind { kRow, kTransit };

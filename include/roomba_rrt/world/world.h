@@ -54,9 +54,14 @@ struct World {
   double step = 1.0 / 60.0;        ///< integration step, s
   robot::Pose2D initial_pose{3.2, 2.4, 0.0};
 
-  double coverage_cell_size = 0.025;  ///< edge of a coverage grid cell, m
-  double command_timeout = 0.5;       ///< node: stop when no command arrived for this long, s
-  double real_time_factor = 1.0;      ///< node: simulated seconds per wall-clock second
+  /// Edge of a coverage grid cell, m. A world file that does not set it gets
+  /// defaultCoverageCellSize(): this, or coarser for a world too large for it.
+  double coverage_cell_size = 0.025;
+  /// The world file set coverage_cell_size (false: the default chose it, and a tool that keeps
+  /// a region of the world chooses again for the region).
+  bool coverage_cell_size_given = false;
+  double command_timeout = 0.5;   ///< node: stop when no command arrived for this long, s
+  double real_time_factor = 1.0;  ///< node: simulated seconds per wall-clock second
 
   /// Named robots (`robots:` in YAML). Empty: one unnamed robot with the fields above, exactly
   /// the lab's simulation. When given, `initial_pose` is not used.
@@ -124,6 +129,14 @@ std::vector<RobotSpec> robotsOf(const World& world);
 /// too large for its limits, an initial pose that is not finite or puts the disc into a wall or
 /// furniture; for named robots also a bad or repeated name and two robots whose discs overlap.
 void validate(const World& world);
+
+/// Whether a coverage grid of `cell_size` over a width × height room with `furniture` pieces stays
+/// within WorldLimits (its cells, and the cell × furniture tests at start).
+bool coverageGridFits(double width, double height, double cell_size, std::size_t furniture);
+
+/// The coverage cell of a world whose file does not set one: World's default (0.025 m), doubled
+/// until the grid fits (coverageGridFits): 0.05 m for a 100 × 100 m map, 0.1 m up to 316 m.
+double defaultCoverageCellSize(double width, double height, std::size_t furniture);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
 /// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
