@@ -324,7 +324,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   Settings s;
   const std::string world_file =
       node_params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
-  s.world = world::loadWorld(world_file);
+  s.world = world::loadWorld(world_file, world::PoseSource::kElsewhere);  // the pose comes from tf
   s.clearance = finiteParam(node_params, "clearance", navigation::kDefaultClearance, 0.0);
   s.global_frame = node_params.get<std::string>("global_frame", s.global_frame);
   s.robot_frame = node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));

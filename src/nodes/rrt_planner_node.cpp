@@ -126,7 +126,9 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
       pnh.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   d.allow_unknown = pnh.get("allow_unknown", d.allow_unknown);
   if (!world_file.empty()) {
-    const world::World world = world::loadWorld(world_file);  // throws with the reason
+    // Throws with the reason. Its initial pose may be a wall (a map's (0, 0)): requests give
+    // their own start.
+    const world::World world = world::loadWorld(world_file, world::PoseSource::kElsewhere);
     d.room = planning::roomProblem(world);
     if (world.map) {
       // Scenario "map": the map alone. Its unknown cells are walls in the room too, so the room's

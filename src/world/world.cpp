@@ -280,7 +280,7 @@ double defaultCoverageCellSize(double width, double height, std::size_t furnitur
   return cell;
 }
 
-void validate(const World& world) {
+void validate(const World& world, PoseSource pose) {
   using L = WorldLimits;
   requirePositive("room.width", world.width, L::kMaxRoomSize);
   requirePositive("room.height", world.height, L::kMaxRoomSize);
@@ -333,7 +333,7 @@ void validate(const World& world) {
   }
   const robot::Pose2D& p = world.initial_pose;
   requireCoordinates("initial_pose", {{"x", p.x}, {"y", p.y}, {"theta", p.theta}});  // |v| ≤ 1e4
-  if (world.robots.empty() && penetrates(world, p.x, p.y)) {
+  if (pose == PoseSource::kWorldFile && world.robots.empty() && penetrates(world, p.x, p.y)) {
     fail("initial_pose",
          "(" + show(p.x) + ", " + show(p.y) +
              ") puts the robot's disc inside a wall or a piece of " +
@@ -384,10 +384,10 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
   return buildWorld(parseText(yaml_text, source), source);
 }
 
-World loadWorld(const std::string& yaml_path) {
+World loadWorld(const std::string& yaml_path, PoseSource pose) {
   World world = readWorldFile(yaml_path);
   try {
-    validate(world);
+    validate(world, pose);
   } catch (const InvalidInput& e) {
     throw e.in(yaml_path);
   }

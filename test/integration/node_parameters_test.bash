@@ -88,6 +88,28 @@ probe=rate expected=60.0 warning="~sed is not a parameter of this node (did you 
 probe=goal_bias expected=0.1 warning="~stepp is not a parameter of this node (did you mean ~step?)" \
   warns_and_writes_back rrt_planner _stepp:=0.3
 
+# A map whose initial pose is a wall (a map's (0, 0) often is): roomba_sim refuses it, but
+# roomba_bt and rrt_planner take the pose from tf and requests, and run (scripts/run --pose gives
+# the pose to roomba_sim alone).
+runs() {  # runs NODE ARGS...: still running after 3 s
+  rosparam delete "/$1" 2>/dev/null || true
+  rosrun roomba_rrt "$@" >"$work/out" 2>&1 &
+  local pid=$!
+  sleep 3
+  if kill -0 "$pid" 2>/dev/null; then
+    say "ok: $* runs"; kill -INT "$pid"; wait "$pid" || true
+  else
+    say "FAIL: $* stopped:"; cat "$work/out"; failures=$((failures + 1))
+  fi
+}
+printf 'map: %s\ninitial_pose: {x: -5.2, y: -3.7}\n' \
+  "$(rospack find roomba_rrt)/config/maps/apartment.yaml" >"$work/wall_start.yaml"
+refuses "initial_pose: (-5.2, -3.7) puts the robot's disc inside a wall" roomba_sim \
+  _world_file:="$work/wall_start.yaml"
+runs roomba_bt _world_file:="$work/wall_start.yaml" \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml" _planner:=in_process
+runs rrt_planner _world_file:="$work/wall_start.yaml"
+
 stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends it within 1 s
   rosparam delete "/$1" 2>/dev/null || true
   rosrun roomba_rrt "$@" >"$work/out" 2>&1 &

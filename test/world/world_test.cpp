@@ -138,6 +138,16 @@ TEST(World, a_world_too_large_for_the_default_coverage_cell_gets_a_coarser_one) 
   EXPECT_EQ(roomba_rrt::world::readWorldFile(map).coverage_cell_size, 0.05);
 }
 
+TEST(World, a_node_that_takes_the_pose_from_elsewhere_accepts_an_initial_pose_in_a_wall) {
+  World world = parseWorld("furniture: {circles: [{x: 1, y: 1, radius: 0.5}]}");
+  world.initial_pose = {1.0, 1.0, 0.0};
+  EXPECT_THROW(roomba_rrt::world::validate(world), std::invalid_argument);
+  EXPECT_NO_THROW(roomba_rrt::world::validate(world, roomba_rrt::world::PoseSource::kElsewhere));
+  world.initial_pose.x = 1e300;  // its coordinates are still checked
+  EXPECT_THROW(roomba_rrt::world::validate(world, roomba_rrt::world::PoseSource::kElsewhere),
+               std::invalid_argument);
+}
+
 TEST(World, a_large_room_within_the_limits_loads) {
   const World world = parseWorld(
       "room: {width: 1000, height: 1000}\ncoverage_cell_size: 0.5\n"

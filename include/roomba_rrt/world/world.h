@@ -123,12 +123,19 @@ inline bool penetrates(const World& world, double x, double y) {
 /// (name "") made of robot_radius, the speed limits and initial_pose.
 std::vector<RobotSpec> robotsOf(const World& world);
 
+/// Where a node takes the robot's pose from: the world file (roomba_sim, the tools), or elsewhere
+/// (tf and requests: roomba_bt and rrt_planner, which must not refuse a map whose (0, 0) is a wall
+/// when the simulator was given another pose).
+enum class PoseSource { kWorldFile, kElsewhere };
+
 /// Throws util::InvalidInput naming the first bad parameter by its path (e.g. "robot.radius: must
 /// be a finite number in (0, 10], got -1", "robots[1].name: repeats 'a'"): values outside
 /// WorldLimits, a room smaller than the robot, furniture with a non-positive size, a coverage grid
 /// too large for its limits, an initial pose that is not finite or puts the disc into a wall or
 /// furniture; for named robots also a bad or repeated name and two robots whose discs overlap.
-void validate(const World& world);
+/// The single robot's initial pose must be free only when the node takes the robot's pose from
+/// the world file (`pose`; its coordinates are checked either way).
+void validate(const World& world, PoseSource pose = PoseSource::kWorldFile);
 
 /// Whether a coverage grid of `cell_size` over a width × height room with `furniture` pieces stays
 /// within WorldLimits (its cells, and the cell × furniture tests at start).
@@ -142,7 +149,7 @@ double defaultCoverageCellSize(double width, double height, std::size_t furnitur
 /// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
 /// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
 /// of the wrong type, an unknown key or a world that fails validate().
-World loadWorld(const std::string& yaml_path);
+World loadWorld(const std::string& yaml_path, PoseSource pose = PoseSource::kWorldFile);
 
 /// loadWorld without validate(), for a caller that overrides values before it validates them
 /// itself (roomba_sim's private parameters: a map world's ~initial_pose). Still refuses what
