@@ -28,7 +28,8 @@ constexpr double kSlackTolerance = 1e-7;
 /// A*'s bookkeeping, kept between searches (one per thread): a lattice point's cost and parent
 /// count only when its stamp is the present search's. So a search costs what it visits, not the
 /// lattice's size: on willow_full (5 M points) clearing fresh arrays for each transit made
-/// planning the whole floor take 49 s.
+/// planning the whole floor take 47 s. The price: 16 bytes per lattice point of the largest
+/// lattice searched, kept for the thread's life (84 MB for all of willow_full).
 class SearchRecords {
  public:
   /// Starts a search over a lattice of `size` points: every point unreached.
