@@ -65,8 +65,7 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
     world.width = box[2] - box[0];
     world.height = box[3] - box[1];
     if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
-      world.coverage_cell_size = world::defaultCoverageCellSize(
-          world.width, world.height, world.circles.size() + world.rectangles.size());
+      world.coverage_cell_size = world::defaultCoverageCellSize(world);
     }
   }
   if (!pose.empty()) {

@@ -203,8 +203,7 @@ World readWorld(const YAML::Node& root, const std::string& source) {
   if (world.coverage_cell_size_given) {
     top.read("coverage_cell_size", world.coverage_cell_size);
   } else {  // a large map still loads: with coarser cells
-    world.coverage_cell_size = defaultCoverageCellSize(
-        world.width, world.height, world.circles.size() + world.rectangles.size());
+    world.coverage_cell_size = defaultCoverageCellSize(world);
   }
   top.read("command_timeout", world.command_timeout);
   top.read("real_time_factor", world.real_time_factor);
@@ -263,20 +262,21 @@ void validateRobots(const World& world) {
 
 }  // namespace
 
-bool coverageGridFits(double width, double height, double cell_size, std::size_t furniture) {
+bool coverageGridFits(const World& world, double cell_size) {
   // The coverage grid holds two bits per cell and tests every cell against every piece of
   // furniture once at start: both must stay small.
-  const double cells = std::ceil(width / cell_size) * std::ceil(height / cell_size);
+  const double cells = std::ceil(world.width / cell_size) * std::ceil(world.height / cell_size);
+  const double furniture = static_cast<double>(world.circles.size() + world.rectangles.size());
   return cells <= WorldLimits::kMaxCoverageCells &&
-         cells * (1.0 + static_cast<double>(furniture)) <= WorldLimits::kMaxGridWork;
+         cells * (1.0 + furniture) <= WorldLimits::kMaxGridWork;
 }
 
-double defaultCoverageCellSize(double width, double height, std::size_t furniture) {
+double defaultCoverageCellSize(const World& world) {
   double cell = World{}.coverage_cell_size;
   // At most 0.8 m (validate() accepts up to 1 m): a world that does not fit even then (a
   // kilometre of room full of furniture, a size that is not finite) keeps it, for validate() to
   // refuse with the numbers.
-  while (2 * cell <= 1.0 && !coverageGridFits(width, height, cell, furniture)) cell *= 2;
+  while (2 * cell <= 1.0 && !coverageGridFits(world, cell)) cell *= 2;
   return cell;
 }
 
@@ -297,7 +297,7 @@ void validate(const World& world, PoseSource pose) {
     fail("furniture", "has " + std::to_string(furniture) + " pieces; at most " +
                           std::to_string(L::kMaxFurniture) + " are supported");
   }
-  if (!coverageGridFits(world.width, world.height, world.coverage_cell_size, furniture)) {
+  if (!coverageGridFits(world, world.coverage_cell_size)) {
     const double cells = std::ceil(world.width / world.coverage_cell_size) *
                          std::ceil(world.height / world.coverage_cell_size);
     fail("coverage_cell_size",

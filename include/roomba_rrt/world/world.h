@@ -137,13 +137,13 @@ enum class PoseSource { kWorldFile, kElsewhere };
 /// the world file (`pose`; its coordinates are checked either way).
 void validate(const World& world, PoseSource pose = PoseSource::kWorldFile);
 
-/// Whether a coverage grid of `cell_size` over a width × height room with `furniture` pieces stays
-/// within WorldLimits (its cells, and the cell × furniture tests at start).
-bool coverageGridFits(double width, double height, double cell_size, std::size_t furniture);
+/// Whether a coverage grid of `cell_size` over the world's room stays within WorldLimits (its
+/// cells, and the cell × furniture tests at start).
+bool coverageGridFits(const World& world, double cell_size);
 
 /// The coverage cell of a world whose file does not set one: World's default (0.025 m), doubled
 /// until the grid fits (coverageGridFits): 0.05 m for a 100 × 100 m map, 0.1 m up to 316 m.
-double defaultCoverageCellSize(double width, double height, std::size_t furniture);
+double defaultCoverageCellSize(const World& world);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
 /// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
