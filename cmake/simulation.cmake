@@ -63,6 +63,9 @@ if(CATKIN_ENABLE_TESTING)
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/scripts_run_test.bash)
   set_tests_properties(scripts_run_test PROPERTIES
     ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 240)
+  # scripts/run's rviz view on a map: whole when small, zoomed in on the robot when large.
+  add_test(NAME rviz_map_view_test
+    COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/rviz_map_view_test.py)
   # Node parameters out of range stop the node naming them; Ctrl-C stops within 1 s.
   add_test(NAME node_parameters_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/node_parameters_test.bash)
