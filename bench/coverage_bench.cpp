@@ -3,12 +3,15 @@
 // BM_CoveragePlanFurnished is what a behaviour pays when it starts cleaning: sampling the world
 // (CoveragePlanner's constructor) and planning from the robot's pose. The counters report what
 // the plan achieves: the rows' share of the reachable floor and the plan's length against the
-// ideal (the reachable floor swept once by the robot's diameter). BM_CoveragePlanWillowFull is
-// a whole shared map (skipped when ../shared/maps is not there).
+// ideal (the reachable floor swept once by the robot's diameter). BM_CoveragePlanWillowFull and
+// BM_CoverageTouchUpWillowFull are a whole shared map (skipped when ../shared/maps is not there).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/world/world.h"
@@ -57,6 +60,39 @@ void BM_CoveragePlanWillowFull(benchmark::State& state) {
   planAndReport(state, world);
 }
 BENCHMARK(BM_CoveragePlanWillowFull)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The touch-up a robot plans once it has driven all the rows of the whole office floor (the
+// floor its disc swept along every leg, marked every 5 mm): roomba_bt stands still while it is
+// planned. Its transits to places no search can reach used to explore the whole floor, 26 s
+// in a real run; see FreeSpace::shortestPath.
+void BM_CoverageTouchUpWillowFull(benchmark::State& state) {
+  const std::string yaml = ROOMBA_RRT_SHARED_MAPS "/willow_full.yaml";
+  if (!std::filesystem::exists(yaml)) {
+    state.SkipWithError(("no " + yaml).c_str());
+    return;
+  }
+  const world::World world = world::loadWorld(yaml);
+  const coverage::CoveragePlanner planner(world, coverage::cleaningOptions(world));
+  const coverage::CoveragePlan plan = planner.plan({-12.0, 0.0});
+  std::vector<std::uint8_t> swept;
+  for (const coverage::Leg& leg : plan.legs) {
+    for (std::size_t s = 0; s + 1 < leg.points.size(); ++s) {
+      const coverage::Point2 a = leg.points[s], b = leg.points[s + 1];
+      const int n = 1 + static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 0.005);
+      for (int k = 0; k <= n; ++k) {
+        const double t = double(k) / n;
+        planner.markSwept(swept, {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+      }
+    }
+  }
+  coverage::CoveragePlan touch_up;
+  for (auto _ : state) {
+    touch_up = planner.touchUp(swept, plan.legs.back().points.back(), 0.012);
+    benchmark::DoNotOptimize(touch_up.legs.data());
+  }
+  state.counters["legs"] = static_cast<double>(touch_up.legs.size());
+}
+BENCHMARK(BM_CoverageTouchUpWillowFull)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

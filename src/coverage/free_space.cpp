@@ -88,6 +88,43 @@ FreeSpace::FreeSpace(const world::World& world, double clearance, double resolut
     }
     floor_[k] = classes_[k] != kBlocked || !world::penetrates(world_, kPointRadius, p.x, p.y);
   }
+  // The pieces: the runs of kFree points along each lattice row, joined (union-find) to the
+  // runs of the row below that touch them, diagonally included; each point then gets its run's
+  // root's number. Runs, not points, keep this a few per cent of the sampling.
+  struct Run {
+    int row, first, last;  // lattice row and columns
+    int parent;            // index of a run of the same piece; itself at the root
+  };
+  std::vector<Run> runs;
+  auto root = [&](int r) {
+    while (runs[r].parent != r) r = runs[r].parent = runs[runs[r].parent].parent;
+    return r;
+  };
+  std::size_t below = 0, above = 0;  // the row below's runs: [below, above)
+  for (int j = 0; j < height_; ++j) {
+    const std::size_t here = runs.size();
+    std::size_t q = below;  // the row below's first run that may touch the next run here
+    for (int i = 0; i < width_; ++i) {
+      if (classes_[index(i, j)] != kFree) continue;
+      const int first = i;
+      while (i + 1 < width_ && classes_[index(i + 1, j)] == kFree) ++i;
+      const int r = static_cast<int>(runs.size());
+      runs.push_back({j, first, i, r});
+      while (q < above && runs[q].last < first - 1) ++q;
+      for (std::size_t t = q; t < above && runs[t].first <= i + 1; ++t) {
+        const int a = root(r), b = root(static_cast<int>(t));
+        if (a != b) runs[std::max(a, b)].parent = std::min(a, b);
+      }
+    }
+    below = here;
+    above = runs.size();
+  }
+  pieces_.assign(size(), 0);
+  for (int r = 0; r < static_cast<int>(runs.size()); ++r) {
+    const auto piece = static_cast<std::uint32_t>(root(r)) + 1;
+    std::fill(pieces_.begin() + index(runs[r].first, runs[r].row),
+              pieces_.begin() + index(runs[r].last, runs[r].row) + 1, piece);
+  }
 }
 
 bool FreeSpace::segmentFree(const Point2& a, const Point2& b, double radius) const {
@@ -130,7 +167,7 @@ std::optional<int> FreeSpace::connect(const Point2& p, Class least) const {
 }
 
 std::optional<Polyline> FreeSpace::shortestPath(int from, int to) const {
-  if (at(from) != kFree || at(to) != kFree) return std::nullopt;
+  if (at(from) != kFree || at(to) != kFree || pieces_[from] != pieces_[to]) return std::nullopt;
   const double diagonal = h_ * std::sqrt(2.0);
   const int ti = column(to), tj = row(to);
   auto heuristic = [&](int k) {  // octile distance: exact on an empty 8-connected lattice

@@ -15,7 +15,9 @@
 using roomba_rrt::coverage::CoverageOptions;
 using roomba_rrt::coverage::CoveragePlan;
 using roomba_rrt::coverage::CoveragePlanner;
+using roomba_rrt::coverage::FreeSpace;
 using roomba_rrt::coverage::Leg;
+using roomba_rrt::coverage::Polyline;
 using roomba_rrt::geometry::Circle;
 using roomba_rrt::geometry::OccupancyGrid;
 using roomba_rrt::geometry::Point2;
@@ -279,6 +281,29 @@ TEST(CoveragePlanner, passage_the_disc_just_fits_through_is_crossed_and_both_sid
   const double floor = 6.4 * 4.8 - 0.2 * 4.4;
   EXPECT_GT(plan.reachable_area, 0.97 * floor);
   EXPECT_GE(rowCoverage(world, plan), 0.95);
+}
+
+TEST(FreeSpace, shortest_path_goes_round_a_wall_and_none_leads_into_a_closed_room) {
+  // The lab's room cut by a wall at x = 3.1..3.3: with a 0.5 m door at its top (y 4.3..4.8),
+  // the other side is one piece with this one, reached through the door; without it, two pieces.
+  auto point = [](const FreeSpace& space, double x, double y) {
+    const std::optional<int> k = space.connect({x, y}, FreeSpace::kFree);
+    EXPECT_TRUE(k) << x << ", " << y;
+    return k.value_or(0);
+  };
+  World world = emptyRoom();
+  world.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 4.3});
+  const FreeSpace door(world, 0.01, 0.025);
+  const std::optional<Polyline> path =
+      door.shortestPath(point(door, 1.0, 1.0), point(door, 5.5, 1.0));
+  ASSERT_TRUE(path);
+  EXPECT_GT(roomba_rrt::geometry::pathLength(*path), 8.0);  // up to the door and down: not 4.5
+  EXPECT_TRUE(std::any_of(path->begin(), path->end(), [](const Point2& p) { return p.y > 4.3; }));
+  world.rectangles.back().max_y = 4.8;  // the door closed
+  const FreeSpace closed(world, 0.01, 0.025);
+  EXPECT_FALSE(closed.shortestPath(point(closed, 1.0, 1.0), point(closed, 5.5, 1.0)));
+  EXPECT_TRUE(closed.shortestPath(point(closed, 1.0, 1.0), point(closed, 2.5, 4.0)));
+  EXPECT_TRUE(closed.shortestPath(point(closed, 5.5, 1.0), point(closed, 4.0, 4.0)));
 }
 
 TEST(CoveragePlanner, one_cell_wide_corridor_of_a_map_is_unreachable_and_never_crossed) {
