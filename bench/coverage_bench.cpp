@@ -63,7 +63,7 @@ BENCHMARK(BM_CoveragePlanWillowFull)->Unit(benchmark::kMillisecond)->Iterations(
 
 // The touch-up a robot plans once it has driven all the rows of the whole office floor (the
 // floor its disc swept along every leg, marked every 5 mm): roomba_bt stands still while it is
-// planned. Its transits to places no search can reach used to explore the whole floor, 26 s
+// planned. Its transits to places no search can reach used to explore the whole floor: 23-39 s
 // in a real run; see FreeSpace::shortestPath.
 void BM_CoverageTouchUpWillowFull(benchmark::State& state) {
   const std::string yaml = ROOMBA_RRT_SHARED_MAPS "/willow_full.yaml";
