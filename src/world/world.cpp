@@ -260,15 +260,23 @@ void validateRobots(const World& world) {
   }
 }
 
+/// The cells of a coverage grid of `cell_size` over the world's room.
+double coverageCells(const World& world, double cell_size) {
+  return std::ceil(world.width / cell_size) * std::ceil(world.height / cell_size);
+}
+
+std::size_t furnitureCount(const World& world) {
+  return world.circles.size() + world.rectangles.size();
+}
+
 }  // namespace
 
 bool coverageGridFits(const World& world, double cell_size) {
   // The coverage grid holds two bits per cell and tests every cell against every piece of
   // furniture once at start: both must stay small.
-  const double cells = std::ceil(world.width / cell_size) * std::ceil(world.height / cell_size);
-  const double furniture = static_cast<double>(world.circles.size() + world.rectangles.size());
+  const double cells = coverageCells(world, cell_size);
   return cells <= WorldLimits::kMaxCoverageCells &&
-         cells * (1.0 + furniture) <= WorldLimits::kMaxGridWork;
+         cells * (1.0 + static_cast<double>(furnitureCount(world))) <= WorldLimits::kMaxGridWork;
 }
 
 double defaultCoverageCellSize(const World& world) {
@@ -292,14 +300,13 @@ void validate(const World& world, PoseSource pose) {
   requirePositive("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
   requireRange("real_time_factor", world.real_time_factor, L::kMinRealTimeFactor,
                L::kMaxRealTimeFactor);
-  const std::size_t furniture = world.circles.size() + world.rectangles.size();
+  const std::size_t furniture = furnitureCount(world);
   if (furniture > L::kMaxFurniture) {
     fail("furniture", "has " + std::to_string(furniture) + " pieces; at most " +
                           std::to_string(L::kMaxFurniture) + " are supported");
   }
   if (!coverageGridFits(world, world.coverage_cell_size)) {
-    const double cells = std::ceil(world.width / world.coverage_cell_size) *
-                         std::ceil(world.height / world.coverage_cell_size);
+    const double cells = coverageCells(world, world.coverage_cell_size);
     fail("coverage_cell_size",
          "(" + show(world.coverage_cell_size) + ") is too small for a " + show(world.width) +
              " x " + show(world.height) + " m room with " + std::to_string(furniture) +
