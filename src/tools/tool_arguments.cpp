@@ -54,19 +54,7 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
   if (!crop.empty()) {
     const std::vector<double> box = parseNumbers("--crop", crop);
     if (box.size() != 4) bad("--crop", "expected X0,Y0,X1,Y1, got '" + crop + "'");
-    const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
-    if (!(box[0] >= world.origin.x && box[1] >= world.origin.y && box[2] <= x1 && box[3] <= y1 &&
-          box[2] - box[0] > 2 * world.robot_radius && box[3] - box[1] > 2 * world.robot_radius)) {
-      bad("--crop", "must lie within the world (" + util::show(world.origin.x) + ", " +
-                        util::show(world.origin.y) + ") to (" + util::show(x1) + ", " +
-                        util::show(y1) + ") and be wider than the robot, got '" + crop + "'");
-    }
-    world.origin = {box[0], box[1]};
-    world.width = box[2] - box[0];
-    world.height = box[3] - box[1];
-    if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
-      world.coverage_cell_size = world::defaultCoverageCellSize(world);
-    }
+    world = world::cropped(world, {box[0], box[1], box[2], box[3]}, "--crop");
   }
   if (!pose.empty()) {
     const std::vector<double> xyt = parseNumbers("--pose", pose);

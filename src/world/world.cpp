@@ -391,6 +391,40 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
   return buildWorld(parseText(yaml_text, source), source);
 }
 
+World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius) {
+  World world;
+  const geometry::Rectangle extent = grid->extent();
+  world.origin = {extent.min_x, extent.min_y};
+  world.width = extent.max_x - extent.min_x;
+  world.height = extent.max_y - extent.min_y;
+  world.initial_pose = {0.0, 0.0, 0.0};
+  world.map = std::move(grid);
+  world.robot_radius = robot_radius;
+  world.coverage_cell_size = defaultCoverageCellSize(world);
+  return world;
+}
+
+World cropped(World world, const geometry::Rectangle& region, const std::string& field) {
+  const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
+  const geometry::Rectangle& r = region;
+  if (!(r.min_x >= world.origin.x && r.min_y >= world.origin.y && r.max_x <= x1 && r.max_y <= y1 &&
+        r.max_x - r.min_x > 2 * world.robot_radius && r.max_y - r.min_y > 2 * world.robot_radius)) {
+    throw InvalidInput(field, "must lie within the world (" + util::show(world.origin.x) + ", " +
+                                  util::show(world.origin.y) + ") to (" + util::show(x1) + ", " +
+                                  util::show(y1) +
+                                  ") and be wider and higher than the robot, got (" +
+                                  util::show(r.min_x) + ", " + util::show(r.min_y) + ") to (" +
+                                  util::show(r.max_x) + ", " + util::show(r.max_y) + ")");
+  }
+  world.origin = {r.min_x, r.min_y};
+  world.width = r.max_x - r.min_x;
+  world.height = r.max_y - r.min_y;
+  if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
+    world.coverage_cell_size = defaultCoverageCellSize(world);
+  }
+  return world;
+}
+
 World loadWorld(const std::string& yaml_path, PoseSource pose) {
   World world = readWorldFile(yaml_path);
   try {

@@ -145,6 +145,17 @@ bool coverageGridFits(const World& world, double cell_size);
 /// until the grid fits (coverageGridFits): 0.05 m for a 100 × 100 m map, 0.1 m up to 316 m.
 double defaultCoverageCellSize(const World& world);
 
+/// The world a map makes on its own (a map received on /map): the room is the grid's extent,
+/// its occupied and unknown cells are walls, the robot has `robot_radius` and the other
+/// defaults, and the coverage cell is defaultCoverageCellSize(). Not validated.
+World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius);
+
+/// `world` cut to `region` (m): its edges become walls (a large map cut to the rooms to clean),
+/// and the coverage cell is chosen again for it unless the world file set it. Throws
+/// util::InvalidInput naming `field` when the region is not finite, does not lie within the
+/// room or is not wider and higher than the robot.
+World cropped(World world, const geometry::Rectangle& region, const std::string& field);
+
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
 /// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
 /// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
