@@ -30,3 +30,15 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(coverage_leaves_test test/coverage/coverage_leaves_test.cpp
     LINK roomba_coverage_core)
 endif()
+
+# coverage_planner: the coverage planner as a ROS service (~plan_coverage, roomba_rrt/PlanCoverage)
+# in ~world_file's world or on /map; coverage_ros turns requests and plans into messages.
+add_executable(coverage_planner src/nodes/coverage_planner_node.cpp src/nodes/coverage_ros.cpp)
+target_link_libraries(coverage_planner roomba_coverage_planning roomba_node_common)
+add_dependencies(coverage_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+
+if(CATKIN_ENABLE_TESTING)
+  roomba_rrt_gtest(coverage_ros_test test/nodes/coverage_ros_test.cpp src/nodes/coverage_ros.cpp
+    LINK roomba_coverage_planning roomba_node_common ROS)
+  add_rostest(test/coverage/plan_coverage.test DEPENDENCIES coverage_planner roomba_sim)
+endif()

@@ -48,6 +48,14 @@ if(ROOMBA_RRT_SANITIZE)
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(plan_path_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
+  # The coverage_planner node's own request conversion (src/nodes/coverage_ros.cpp) and plan.
+  roomba_rrt_fuzzer(plan_coverage_fuzzer src/nodes/coverage_ros.cpp)
+  target_include_directories(plan_coverage_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
+  target_link_libraries(plan_coverage_fuzzer roomba_coverage_planning ${catkin_LIBRARIES})
+  target_compile_definitions(plan_coverage_fuzzer PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+  add_dependencies(plan_coverage_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
   # The planning unit tests on that library (scripts/fuzz --unit).
   if(TARGET planning_core_test)
     get_target_property(RR_PLANNING_TESTS planning_core_test SOURCES)

@@ -12,14 +12,12 @@
 // doc/planning.md.
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <nav_msgs/GetPlan.h>
@@ -44,6 +42,7 @@
 #include "plan_slots.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
+#include "shutdown_grace.h"
 
 namespace roomba_rrt::planner_node {
 namespace {
@@ -458,10 +457,6 @@ class RrtPlannerNode {
 }  // namespace
 }  // namespace roomba_rrt::planner_node
 
-namespace {
-constexpr double kShutdownGrace = 0.5;  // s a running plan may delay the exit after Ctrl-C
-}  // namespace
-
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rrt_planner");
   ros::NodeHandle pnh("~");
@@ -472,18 +467,9 @@ int main(int argc, char** argv) {
     params.warnUnknown();
     // Several threads: each request is planned in its own callback, so a long plan leaves the
     // other threads free to accept and answer further requests. Two threads more than plans may
-    // run at once answer "busy" while every planning thread is taken.
-    ros::AsyncSpinner spinner(node.planThreads() + 2);
-    spinner.start();
-    ros::waitForShutdown();
-    // A plan cannot be interrupted from outside: do not let one (up to minutes long) hold up
-    // Ctrl-C. The spinner's destructor waits for its callbacks; give them kShutdownGrace.
-    std::thread([code = master_watch.exitCode()] {
-      std::this_thread::sleep_for(std::chrono::duration<double>(kShutdownGrace));
-      ROS_WARN("rrt_planner: a plan was still running %.1f s after shutdown; exiting without it",
-               kShutdownGrace);
-      std::_Exit(code);
-    }).detach();
+    // run at once answer "busy" while every planning thread is taken. A plan (up to minutes
+    // long) does not hold up Ctrl-C.
+    roomba_rrt::nodes::spinWithShutdownGrace(node.planThreads() + 2, master_watch, "rrt_planner");
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM("rrt_planner: " << e.what());
     return 1;

@@ -11,13 +11,14 @@ Each ```bash block of the documentation is preceded by a marker that says how it
                                        it is only checked
 
 SETUP: `none` (no master), `master` (roscore, /use_sim_time true), `all` (roomba_sim in the
-furnished room at real-time factor 5, roomba_fsm, rrt_planner), `planner` (rrt_planner), `nav`
+furnished room at real-time factor 5, roomba_fsm, rrt_planner), `planner` (rrt_planner and
+coverage_planner in the lab's room, as `scripts/run planner`), `nav`
 (roomba_sim and rrt_planner in the furnished room, roomba_bt with the navigation tree).
 
 Every block, live or static, is checked: the executables it names exist (`rosrun roomba_rrt X`,
 `devel/lib/roomba_rrt/X`, `scripts/X`), their `--flags` are in their usage text, node parameters
 (`_name:=`) are read by the node, files (`$(rospack find roomba_rrt)/...`, `config/...`) exist,
-rostest files exist, and `plan_path` requests name only fields of PlanPath.srv. A bash block
+rostest files exist, and `plan_path` and `plan_coverage` requests name only fields of their .srv. A bash block
 without a marker fails the test, so a new command cannot slip in untested.
 
 Usage (ctest runs it): doc_commands_test.py REPO_ROOT DEVEL_DIR   (a ROS master URI on a free
@@ -51,8 +52,12 @@ class Doc:
         self.node_sources = "".join(
             open(f, encoding="utf-8").read()
             for f in glob.glob(os.path.join(root, "src", "nodes", "*.*")))
-        srv = open(os.path.join(root, "srv", "PlanPath.srv"), encoding="utf-8").read()
-        self.plan_fields = set(re.findall(r"^\S+\s+(\w+)", srv.split("---")[0], re.M))
+        self.request_fields = {}  # service -> (srv file, its request's fields)
+        for service, name in (("/rrt_planner/plan_path", "PlanPath"),
+                              ("/coverage_planner/plan_coverage", "PlanCoverage")):
+            srv = open(os.path.join(root, "srv", name + ".srv"), encoding="utf-8").read()
+            self.request_fields[service] = (
+                name + ".srv", set(re.findall(r"^\S+\s+(\w+)", srv.split("---")[0], re.M)))
 
     def fail(self, where, message):
         self.failures.append(f"{where}: {message}")
@@ -137,18 +142,19 @@ class Doc:
                         f'"{first}"' not in self.node_sources:
                     self.fail(where, f"{name} _{m.group(1)}: no node reads that parameter")
 
-    def check_plan_request(self, where, request):
+    def check_request(self, where, service, request):
+        srv, fields = self.request_fields[service]
         try:
             data = yaml.safe_load(request)
         except yaml.YAMLError as e:
-            self.fail(where, f"plan_path request is not YAML: {e}")
+            self.fail(where, f"{service} request is not YAML: {e}")
             return
         if not isinstance(data, dict):
-            self.fail(where, "plan_path request is not a mapping")
+            self.fail(where, f"{service} request is not a mapping")
             return
         for key in data:
-            if key not in self.plan_fields:
-                self.fail(where, f"plan_path request: no field '{key}' in PlanPath.srv")
+            if key not in fields:
+                self.fail(where, f"{service} request: no field '{key}' in {srv}")
 
     def check_command(self, where, command):
         for rel in re.findall(r"\$\(rospack find roomba_rrt\)/([\w./-]+)", command):
@@ -194,8 +200,9 @@ class Doc:
         elif head == "rostest" and len(args) >= 2:
             if not glob.glob(os.path.join(self.root, "test", "**", args[1]), recursive=True):
                 self.fail(where, f"rostest {args[1]}: no such file under test/")
-        elif head == "rosservice" and args[:2] == ["call", "/rrt_planner/plan_path"]:
-            self.check_plan_request(where, args[2] if len(args) > 2 else "{}")
+        elif head == "rosservice" and args[:1] == ["call"] and args[1:2] and \
+                args[1] in self.request_fields:
+            self.check_request(where, args[1], args[2] if len(args) > 2 else "{}")
         elif head in ("rosparam",) and args[:1] == ["load"] and len(args) > 1:
             if not os.path.exists(os.path.join(self.root, args[1])):
                 self.fail(where, f"{args[1]}: no such file")
@@ -209,7 +216,7 @@ class Doc:
             "master": [],
             "all": [["roomba_sim", f"_world_file:={furnished}", "_real_time_factor:=5"],
                     ["roomba_fsm"], ["rrt_planner"]],
-            "planner": [["rrt_planner"]],
+            "planner": [["rrt_planner"], ["coverage_planner"]],
             "nav": [["roomba_sim", f"_world_file:={furnished}", "_real_time_factor:=5"],
                     ["rrt_planner", f"_world_file:={furnished}"],
                     ["roomba_bt", "_tree_file:=" +
@@ -242,7 +249,7 @@ class Doc:
         for args in nodes:
             procs.append(launch([os.path.join(self.bin, args[0])] + args[1:], args[0]))
         expected = {"all": ["/roomba_sim", "/roomba_fsm", "/rrt_planner"],
-                    "planner": ["/rrt_planner"],
+                    "planner": ["/rrt_planner", "/coverage_planner"],
                     "nav": ["/roomba_sim", "/rrt_planner", "/roomba_bt"]}.get(setup, [])
         deadline = time.time() + 30
         while expected and time.time() < deadline:

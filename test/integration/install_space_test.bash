@@ -60,7 +60,7 @@ for exe in "$work"/install/lib/roomba_rrt/*; do
     fail "$(basename "$exe") misses a library"
   fi
 done
-for exe in roomba_sim roomba_fsm roomba_bt rrt_planner roomba_teleop roomba_coverage \
+for exe in roomba_sim roomba_fsm roomba_bt rrt_planner coverage_planner roomba_teleop roomba_coverage \
   roomba_nav_eval rrt_monte_carlo rrt_plot; do
   [ -x "$work/install/lib/roomba_rrt/$exe" ] || fail "$exe is not installed"
 done

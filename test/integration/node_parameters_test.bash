@@ -37,6 +37,9 @@ refuses "~pose_latency: must be in [0, 1] s, got 5" roomba_bt _pose_latency:=5 \
 refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1
+refuses "~clearance: must be in [0, 0.17] m, got -1" coverage_planner _clearance:=-1
+refuses "~robot_radius: must be in [0.001, 10] m, got 0" coverage_planner _robot_radius:=0
+refuses "not a regular file" coverage_planner _world_file:=/tmp
 
 # Issue 22, item 3: a value of the wrong type is refused naming the parameter (never the default).
 refuses "~rate: must be a number, got 'fast' (a string)" roomba_fsm _rate:=fast
@@ -87,6 +90,8 @@ probe=rate expected=60.0 warning="~sed is not a parameter of this node (did you 
   warns_and_writes_back roomba_fsm _sed:=3
 probe=goal_bias expected=0.1 warning="~stepp is not a parameter of this node (did you mean ~step?)" \
   warns_and_writes_back rrt_planner _stepp:=0.3
+probe=clearance expected=0.01 warning="~clearence is not a parameter of this node (did you mean ~clearance?)" \
+  warns_and_writes_back coverage_planner _clearence:=0.02
 
 # A map whose initial pose is a wall (a map's (0, 0) often is): roomba_sim refuses it, but
 # roomba_bt and rrt_planner take the pose from tf and requests, and run (scripts/run --pose gives
@@ -120,6 +125,11 @@ stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends 
       "{scenario: 'a', algorithm: 'rrt_star', max_iterations: 5000000}" >/dev/null 2>&1 &
     sleep 1
   fi
+  if [ "$1" = coverage_planner ]; then  # likewise a whole building's coverage plan (seconds)
+    timeout 20 rosservice call /coverage_planner/plan_coverage "{start: {x: -12.0, y: 0.1}}" \
+      >/dev/null 2>&1 &
+    sleep 1
+  fi
   if [ "$1" = roomba_sim ] && ! timeout 5 rosservice call /roomba_sim/reset >/dev/null; then
     say "FAIL: $* does not answer ~reset"; failures=$((failures + 1))
   fi
@@ -137,4 +147,10 @@ stops_quickly roomba_sim _real_time_factor:=1e-4
 stops_quickly roomba_sim _real_time_factor:=100
 stops_quickly roomba_fsm _rate:=1000
 stops_quickly rrt_planner
+willow=$root/../shared/maps/willow_full.yaml  # planned in 6 s; the package's own worlds in ms
+if [ -f "$willow" ]; then
+  stops_quickly coverage_planner _world_file:="$willow"
+else
+  stops_quickly coverage_planner
+fi
 [ "$failures" = 0 ] && say PASS || { say "$failures failures"; exit 1; }

@@ -1,0 +1,146 @@
+#include "coverage_ros.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <roomba_rrt/util/invalid_input.h>
+#include <roomba_rrt/util/require.h>
+
+#include "message_parts.h"
+
+namespace roomba_rrt::coverage_node {
+namespace {
+
+/// The world the request names, cut to its region and with its robot, or util::InvalidInput.
+world::World requestedWorld(const PlanCoverage::Request& r, const CoverageDefaults& d) {
+  std::shared_ptr<const world::World> source;
+  if (r.world.empty() || r.world == "room") {
+    source = d.room;
+  } else if (r.world == "map") {
+    source = d.map;
+    if (!source) throw util::InvalidInput("world", "no map has arrived on ~map_topic yet");
+  } else {
+    throw util::InvalidInput("world", "must be \"room\", \"map\" or \"\", got \"" + r.world + "\"");
+  }
+  world::World w = *source;
+  if (r.robot_radius != 0) {
+    util::requireInRange("robot_radius", r.robot_radius, 1e-3, world::WorldLimits::kMaxRobotRadius,
+                         "m");
+    w.robot_radius = r.robot_radius;
+  }
+  if (r.x_min != 0 || r.x_max != 0 || r.y_min != 0 || r.y_max != 0) {
+    w = world::cropped(std::move(w), {r.x_min, r.y_min, r.x_max, r.y_max}, "x_min..y_max");
+  }
+  try {
+    world::validate(w, world::PoseSource::kElsewhere);
+  } catch (const util::InvalidInput& e) {  // ~world_file's world was valid: the request's fault
+    const std::string field = r.robot_radius != 0 ? "robot_radius" : "x_min..y_max";
+    throw util::InvalidInput(field, "the world is not valid with it: " + std::string(e.what()));
+  }
+  return w;
+}
+
+/// The planner's options: the world's cleaning options with the request's clearance and swath.
+coverage::CoverageOptions requestedOptions(const PlanCoverage::Request& r,
+                                           const CoverageDefaults& d, const world::World& w) {
+  coverage::CoverageOptions o = coverage::cleaningOptions(w);
+  if (w.robot_radius < o.resolution) {  // the lattice the world's floor is sampled on
+    throw util::InvalidInput("robot_radius", "must be at least the world's lattice edge (" +
+                                                 util::show(o.resolution) + " m), got " +
+                                                 util::show(w.robot_radius));
+  }
+  o.clearance = r.clearance != 0 ? r.clearance : d.clearance;
+  if (r.clearance != 0) util::requireInRange("clearance", r.clearance, 0.0, w.robot_radius, "m");
+  // The Roomba's 0.33 m for its 0.17 m radius: 1 cm of overlap between neighbouring strips.
+  o.swath = r.swath != 0 ? r.swath : std::max(2 * w.robot_radius - 0.01, 2 * o.resolution);
+  return o;
+}
+
+}  // namespace
+
+nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::string& frame_id,
+                             const ros::Time& stamp, std::vector<std::uint32_t>* row_starts) {
+  std::vector<coverage::Point2> points;
+  for (const coverage::Leg& leg : plan.legs) {
+    for (std::size_t k = 0; k < leg.points.size(); ++k) {
+      const coverage::Point2& p = leg.points[k];
+      const bool joins = !points.empty() && points.back().x == p.x && points.back().y == p.y;
+      if (k == 0 && leg.kind == coverage::Leg::Kind::kRow && row_starts) {
+        row_starts->push_back(
+            static_cast<std::uint32_t>(joins ? points.size() - 1 : points.size()));
+      }
+      if (!joins) points.push_back(p);
+    }
+  }
+  nav_msgs::Path path;
+  path.header.frame_id = frame_id;
+  path.header.stamp = stamp;
+  double yaw = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (k + 1 < points.size()) {  // the last pose keeps the heading it arrives with
+      yaw = std::atan2(points[k + 1].y - points[k].y, points[k + 1].x - points[k].x);
+    }
+    geometry_msgs::PoseStamped pose;
+    pose.header = path.header;
+    pose.pose.position.x = points[k].x;
+    pose.pose.position.y = points[k].y;
+    pose.pose.orientation = nodes::yawToQuaternion(yaw);
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
+                                    const CoverageDefaults& defaults, const ros::Time& stamp) {
+  PlanCoverage::Response response;
+  response.path.header.frame_id = defaults.frame_id;
+  response.path.header.stamp = stamp;
+  try {
+    util::requireFinite("start.x", request.start.x);
+    util::requireFinite("start.y", request.start.y);
+    const world::World world = requestedWorld(request, defaults);
+    const coverage::CoverageOptions options = requestedOptions(request, defaults, world);
+    const auto started = std::chrono::steady_clock::now();
+    const coverage::CoveragePlanner planner(world, options);  // InvalidInput naming an option
+    const coverage::Point2 start{request.start.x, request.start.y};
+    const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
+    if (!(start.x >= world.origin.x && start.x <= x1 && start.y >= world.origin.y &&
+          start.y <= y1)) {
+      throw util::InvalidInput("start", "must lie in the world (" + util::show(world.origin.x) +
+                                            ", " + util::show(world.origin.y) + ") to (" +
+                                            util::show(x1) + ", " + util::show(y1) + ")");
+    }
+    const coverage::CoveragePlan plan = planner.plan(start);
+    response.planning_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    response.floor_area = plan.floor_area;
+    response.reachable_area = plan.reachable_area;
+    response.unreachable_area = plan.unreachable_area;
+    response.swept_area = plan.swept_area;
+    response.cells = plan.cells;
+    if (plan.reachable_area == 0) {
+      throw util::InvalidInput("start",
+                               "the robot's disc does not fit there (a wall, furniture "
+                               "or a blocked cell)");
+    }
+    if (plan.legs.empty()) {
+      throw util::InvalidInput("start",
+                               "the robot cannot drive from there to any point that "
+                               "keeps the clearance (" +
+                                   util::show(options.clearance) + " m)");
+    }
+    response.path = toPathMessage(plan, defaults.frame_id, stamp, &response.row_starts);
+    response.length = plan.length();
+    response.row_length = plan.rowLength();
+    response.success = true;
+  } catch (const util::InvalidInput& e) {
+    response.success = false;
+    response.message = e.what();
+  }
+  return response;
+}
+
+}  // namespace roomba_rrt::coverage_node

@@ -1,0 +1,24 @@
+#include "shutdown_grace.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <thread>
+
+#include <ros/ros.h>
+
+namespace roomba_rrt::nodes {
+
+void spinWithShutdownGrace(unsigned threads, const MasterWatch& watch, const std::string& node) {
+  ros::AsyncSpinner spinner(threads);
+  spinner.start();
+  ros::waitForShutdown();
+  // The spinner's destructor waits for its callbacks: give them kShutdownGrace.
+  std::thread([code = watch.exitCode(), node] {
+    std::this_thread::sleep_for(std::chrono::duration<double>(kShutdownGrace));
+    ROS_WARN("%s: a request was still being served %.1f s after shutdown; exiting without it",
+             node.c_str(), kShutdownGrace);
+    std::_Exit(code);
+  }).detach();
+}
+
+}  // namespace roomba_rrt::nodes

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""coverage_planner's ~plan_coverage through a real master (test/coverage/plan_coverage.test)."""
+import math
+import threading
+import unittest
+
+import rospy
+import rosunit
+from nav_msgs.msg import Path
+from roomba_rrt.srv import PlanCoverage, PlanCoverageRequest
+
+SERVICE = "/coverage_planner/plan_coverage"
+
+
+def request(x, y, **fields):
+    r = PlanCoverageRequest()
+    r.start.x, r.start.y = x, y
+    for name, value in fields.items():
+        setattr(r, name, value)
+    return r
+
+
+def length(path):
+    points = [(p.pose.position.x, p.pose.position.y) for p in path.poses]
+    return sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
+
+
+class PlanCoverageTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("plan_coverage_test")
+        rospy.wait_for_service(SERVICE, timeout=30)
+        cls.plan = rospy.ServiceProxy(SERVICE, PlanCoverage)
+        cls.lock = threading.Lock()
+        cls.published = []
+        rospy.Subscriber("/coverage_planner/coverage_path", Path, cls.on_path, queue_size=10)
+
+    @classmethod
+    def on_path(cls, msg):
+        with cls.lock:
+            cls.published.append(msg)
+
+    def test_the_room_is_planned_and_the_plan_latched_for_rviz(self):
+        r = self.plan(request(1.0, 1.0))
+        self.assertTrue(r.success, r.message)
+        self.assertEqual(r.path.header.frame_id, "map")
+        self.assertGreater(len(r.row_starts), 10)
+        self.assertAlmostEqual(length(r.path), r.length, places=6)
+        first = r.path.poses[0].pose.position
+        self.assertEqual((first.x, first.y), (1.0, 1.0))
+        for pose in r.path.poses:  # the furnished room: 6.4 m x 4.8 m, the disc inside its walls
+            self.assertTrue(0.17 <= pose.pose.position.x <= 6.4 - 0.17)
+            self.assertTrue(0.17 <= pose.pose.position.y <= 4.8 - 0.17)
+        self.assertGreater(r.reachable_area, 25)
+        deadline = rospy.get_time() + 10
+        while rospy.get_time() < deadline and not rospy.is_shutdown():
+            with self.lock:
+                if any(len(p.poses) == len(r.path.poses) for p in self.published):
+                    break
+            rospy.sleep(0.1)
+        with self.lock:
+            self.assertTrue(any(len(p.poses) == len(r.path.poses) for p in self.published))
+
+    def test_the_map_on_slash_map_is_planned(self):
+        r = self.plan(request(0.0, 0.0, world="map"))
+        deadline = rospy.get_time() + 20
+        while r.message.startswith("world: no map") and rospy.get_time() < deadline:
+            rospy.sleep(0.2)  # roomba_sim has not published it yet
+            r = self.plan(request(0.0, 0.0, world="map"))
+        self.assertTrue(r.success, r.message)
+        # The apartment's rooms lie on both sides of x = 0; the furnished room only at x >= 0.
+        self.assertTrue(any(p.pose.position.x < -1.0 for p in r.path.poses))
+        self.assertGreater(r.unreachable_area, 0)
+
+    def test_bad_requests_name_their_field_and_the_node_plans_on(self):
+        for bad, field in [(request(1.3, 3.5), "start"),  # in the round table
+                           (request(float("nan"), 1.0), "start.x"),
+                           (request(1.0, 1.0, world="moon"), "world"),
+                           (request(1.0, 1.0, x_max=1e308, y_max=1.0), "x_min..y_max"),
+                           (request(1.0, 1.0, swath=5.0), "swath"),
+                           (request(1.0, 1.0, robot_radius=-1.0), "robot_radius")]:
+            r = self.plan(bad)
+            self.assertFalse(r.success, field)
+            self.assertTrue(r.message.startswith(field + ": "), r.message)
+            self.assertEqual(len(r.path.poses), 0)
+        self.assertTrue(self.plan(request(1.0, 1.0)).success)
+
+
+if __name__ == "__main__":
+    rosunit.unitrun("roomba_rrt", "plan_coverage", PlanCoverageTest)
