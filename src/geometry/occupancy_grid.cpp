@@ -29,6 +29,25 @@ std::pair<double, double> clipToBand(double ax, double bx, double lo, double hi)
 
 }  // namespace
 
+Rectangle OccupancyGrid::knownExtent() const {
+  int min_i = width, max_i = -1, min_j = height, max_j = -1;
+  for (int j = 0; j < height; ++j) {
+    const std::int8_t* row = cells.data() + static_cast<std::size_t>(j) * width;
+    int first = 0;
+    while (first < width && row[first] == kUnknown) ++first;
+    if (first == width) continue;
+    int last = width - 1;
+    while (row[last] == kUnknown) --last;
+    min_i = std::min(min_i, first);
+    max_i = std::max(max_i, last);
+    min_j = std::min(min_j, j);
+    max_j = j;
+  }
+  if (max_j < 0) return extent();
+  return {origin.x + min_i * resolution, origin.y + min_j * resolution,
+          origin.x + (max_i + 1) * resolution, origin.y + (max_j + 1) * resolution};
+}
+
 double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reach,
                          bool unknown_is_free) {
   double best_sq = reach * reach;

@@ -101,8 +101,16 @@ void readList(Section& parent, const std::string& key, std::vector<Item>& items,
   }
 }
 
+/// The room a map makes: its known part (OccupancyGrid::knownExtent()), its edges walls.
+void roomOfMap(const geometry::OccupancyGrid& grid, World& world) {
+  const geometry::Rectangle known = grid.knownExtent();
+  world.origin = {known.min_x, known.min_y};
+  world.width = known.max_x - known.min_x;
+  world.height = known.max_y - known.min_y;
+}
+
 /// The map named by `map:` (relative to the world file's folder): its grid, and the room it
-/// makes (origin and size = its extent). The initial pose defaults to the map's origin (0, 0).
+/// makes (its known part). The initial pose defaults to the map's origin (0, 0).
 void readMap(const YAML::Node& node, const std::string& source, World& world) {
   if (!node.IsScalar() || node.Scalar().empty()) fail("map", "must be a map_server YAML file");
   std::filesystem::path file = node.Scalar();
@@ -116,10 +124,7 @@ void readMap(const YAML::Node& node, const std::string& source, World& world) {
     // "map: apartment.yaml: resolution: must be ...": the world's key, then the map's own.
     throw InvalidInput("map", e.what());
   }
-  const geometry::Rectangle extent = map.grid.extent();
-  world.origin = map.origin;
-  world.width = extent.max_x - extent.min_x;
-  world.height = extent.max_y - extent.min_y;
+  roomOfMap(map.grid, world);
   world.initial_pose = {0.0, 0.0, 0.0};
   world.map_file = file.string();
   world.map = std::make_shared<const geometry::OccupancyGrid>(std::move(map.grid));
@@ -393,10 +398,7 @@ World parseWorld(const std::string& yaml_text, const std::string& source) {
 
 World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius) {
   World world;
-  const geometry::Rectangle extent = grid->extent();
-  world.origin = {extent.min_x, extent.min_y};
-  world.width = extent.max_x - extent.min_x;
-  world.height = extent.max_y - extent.min_y;
+  roomOfMap(*grid, world);
   world.initial_pose = {0.0, 0.0, 0.0};
   world.map = std::move(grid);
   world.robot_radius = robot_radius;
@@ -405,20 +407,29 @@ World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot
 }
 
 World cropped(World world, const geometry::Rectangle& region, const std::string& field) {
-  const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
+  // A map's whole extent may be named (its unknown border too); what is kept is the room's part.
+  const geometry::Rectangle room{world.origin.x, world.origin.y, world.origin.x + world.width,
+                                 world.origin.y + world.height};
+  const geometry::Rectangle world_box = world.map ? world.map->extent() : room;
   const geometry::Rectangle& r = region;
-  if (!(r.min_x >= world.origin.x && r.min_y >= world.origin.y && r.max_x <= x1 && r.max_y <= y1 &&
-        r.max_x - r.min_x > 2 * world.robot_radius && r.max_y - r.min_y > 2 * world.robot_radius)) {
-    throw InvalidInput(field, "must lie within the world (" + util::show(world.origin.x) + ", " +
-                                  util::show(world.origin.y) + ") to (" + util::show(x1) + ", " +
-                                  util::show(y1) +
-                                  ") and be wider and higher than the robot, got (" +
-                                  util::show(r.min_x) + ", " + util::show(r.min_y) + ") to (" +
-                                  util::show(r.max_x) + ", " + util::show(r.max_y) + ")");
+  const geometry::Rectangle kept{std::max(r.min_x, room.min_x), std::max(r.min_y, room.min_y),
+                                 std::min(r.max_x, room.max_x), std::min(r.max_y, room.max_y)};
+  if (!(r.min_x >= world_box.min_x && r.min_y >= world_box.min_y && r.max_x <= world_box.max_x &&
+        r.max_y <= world_box.max_y && kept.max_x - kept.min_x > 2 * world.robot_radius &&
+        kept.max_y - kept.min_y > 2 * world.robot_radius)) {
+    throw InvalidInput(field, "must lie within the world (" + util::show(world_box.min_x) + ", " +
+                                  util::show(world_box.min_y) + ") to (" +
+                                  util::show(world_box.max_x) + ", " + util::show(world_box.max_y) +
+                                  ") and keep a part of its room (" + util::show(room.min_x) +
+                                  ", " + util::show(room.min_y) + ") to (" +
+                                  util::show(room.max_x) + ", " + util::show(room.max_y) +
+                                  ") wider and higher than the robot, got (" + util::show(r.min_x) +
+                                  ", " + util::show(r.min_y) + ") to (" + util::show(r.max_x) +
+                                  ", " + util::show(r.max_y) + ")");
   }
-  world.origin = {r.min_x, r.min_y};
-  world.width = r.max_x - r.min_x;
-  world.height = r.max_y - r.min_y;
+  world.origin = {kept.min_x, kept.min_y};
+  world.width = kept.max_x - kept.min_x;
+  world.height = kept.max_y - kept.min_y;
   if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
     world.coverage_cell_size = defaultCoverageCellSize(world);
   }

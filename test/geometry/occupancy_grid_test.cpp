@@ -36,6 +36,29 @@ TEST(OccupancyGrid, cells_are_row_major_from_the_bottom_and_squares_tile_the_ext
   EXPECT_FALSE(grid.blocked(1, 1));
 }
 
+TEST(OccupancyGrid, the_known_extent_is_what_was_mapped_without_the_unknown_border) {
+  const OccupancyGrid grid = gridFrom({"??????",  //
+                                       "???#??",  //
+                                       "?#..??",  //
+                                       "??.???",  //
+                                       "??????"},
+                                      0.5, {-1.0, 2.0});
+  const Rectangle known = grid.knownExtent();  // columns 1..3, rows 1..3 from the bottom
+  EXPECT_DOUBLE_EQ(known.min_x, -0.5);
+  EXPECT_DOUBLE_EQ(known.max_x, 1.0);
+  EXPECT_DOUBLE_EQ(known.min_y, 2.5);
+  EXPECT_DOUBLE_EQ(known.max_y, 4.0);
+  const OccupancyGrid unknown = gridFrom({"???", "???"}, 0.5, {-1.0, 2.0});
+  const Rectangle all = unknown.knownExtent();  // nothing mapped: the whole grid
+  EXPECT_DOUBLE_EQ(all.min_x, -1.0);
+  EXPECT_DOUBLE_EQ(all.max_x, 0.5);
+  EXPECT_DOUBLE_EQ(all.min_y, 2.0);
+  EXPECT_DOUBLE_EQ(all.max_y, 3.0);
+  const Rectangle whole = gridFrom({"#.", ".."}).knownExtent();
+  EXPECT_DOUBLE_EQ(whole.max_x, 0.2);
+  EXPECT_DOUBLE_EQ(whole.max_y, 0.2);
+}
+
 TEST(OccupancyGrid, distance_to_blocked_equals_brute_force_over_every_square) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> cell(0, 9);

@@ -100,6 +100,32 @@ TEST_F(MapWorld, a_map_yaml_is_a_world_whose_room_is_the_map) {
   }
 }
 
+TEST_F(MapWorld, a_slam_maps_unknown_border_is_not_part_of_the_room) {
+  // The room of roomWithAWall() in an image four times as wide and three times as high, the rest
+  // unknown, as gmapping saves a flat in its 4000 x 4000 cells.
+  std::vector<std::string> rows(90, std::string(160, '?'));
+  const std::vector<std::string> room = roomWithAWall();
+  for (std::size_t j = 0; j < room.size(); ++j) rows[40 + j].replace(70, 40, room[j]);
+  draw(rows);  // origin (-1, -0.5): the room's cells 70..109 x 20..49 (rows from the bottom)
+  const world::World w =
+      world::loadWorld(write("w.yaml", "map: m.yaml\ninitial_pose: {x: 3.2, y: 1.6, theta: 0}\n"));
+  EXPECT_DOUBLE_EQ(w.origin.x, -1.0 + 70 * 0.05);
+  EXPECT_DOUBLE_EQ(w.origin.y, -0.5 + 20 * 0.05);
+  EXPECT_NEAR(w.width, 2.0, 1e-12);
+  EXPECT_NEAR(w.height, 1.5, 1e-12);
+  EXPECT_EQ(w.coverage_cell_size, 0.025);  // the room's, not the image's 8 m x 4.5 m
+  // The whole image can still be named when cutting a region; what is kept is the room's part.
+  const world::World part = world::cropped(w, {-1.0, -0.5, 3.5, 1.5}, "--crop");
+  EXPECT_DOUBLE_EQ(part.origin.x, w.origin.x);
+  EXPECT_NEAR(part.origin.x + part.width, 3.5, 1e-12);
+  EXPECT_NEAR(part.origin.y + part.height, 1.5, 1e-12);
+  EXPECT_THROW(world::cropped(w, {-1.0, -0.5, 2.0, 0.4}, "--crop"), util::InvalidInput);
+  // Driving: the same walls as the room alone (its inner wall at its column 20).
+  sim::Simulator sim(w);
+  for (int i = 0; i < 120; ++i) sim.step({0.5, 0.0});
+  EXPECT_NEAR(sim.pose().x, w.origin.x + 20 * 0.05 - w.robot_radius, 1e-9);
+}
+
 TEST_F(MapWorld, driving_into_a_wall_of_cells_stops_exactly_at_its_face_with_both_switches) {
   draw(roomWithAWall());
   const world::World w =

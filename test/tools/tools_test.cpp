@@ -182,9 +182,10 @@ TEST(ToolArguments, crop_keeps_a_region_of_the_world_whose_edges_become_walls) {
               loadToolWorld(apartment, "", "-1000,0,4,3");
             }).find("--crop: must lie within the world"),
             std::string::npos);
-  EXPECT_NE(
-      refusal([&] { loadToolWorld(apartment, "", "0,0,0.2,3"); }).find("wider than the robot"),
-      std::string::npos);
+  EXPECT_NE(refusal([&] {
+              loadToolWorld(apartment, "", "0,0,0.2,3");
+            }).find("wider and higher than the robot"),
+            std::string::npos);
 }
 
 TEST(ToolArguments, a_crop_of_a_large_map_gets_the_regions_coverage_cell) {

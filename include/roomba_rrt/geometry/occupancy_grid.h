@@ -47,6 +47,10 @@ struct OccupancyGrid {
   Rectangle extent() const {
     return {origin.x, origin.y, origin.x + width * resolution, origin.y + height * resolution};
   }
+  /// The rectangle of the cells that are known (free or occupied): what was mapped, without the
+  /// unknown border a SLAM map has round it (gmapping's 4000 × 4000 cells for a flat). The whole
+  /// extent when no cell is known.
+  Rectangle knownExtent() const;
   /// The column and row holding `p` (possibly outside the grid: negative or ≥ width / height).
   int column(double x) const { return static_cast<int>(std::floor((x - origin.x) / resolution)); }
   int row(double y) const { return static_cast<int>(std::floor((y - origin.y) / resolution)); }

@@ -37,12 +37,14 @@ struct RobotSpec {
 struct World {
   double width = 6.4;   ///< walls at x = origin.x and x = origin.x + width
   double height = 4.8;  ///< walls at y = origin.y and y = origin.y + height
-  /// The room's lower-left corner: (0, 0) for a room of the world file; the map's origin when
-  /// the world is a map (its walls are then the map's edges).
+  /// The room's lower-left corner: (0, 0) for a room of the world file; when the world is a map,
+  /// the corner of its known part (the room's walls are then the edges of what was mapped).
   geometry::Point2 origin;
   /// A map (a map_server YAML: `map:` in the world file, or the world file itself): its
   /// occupied and unknown cells are walls, exactly (the disc against each cell's square), and
-  /// its extent is the room. Copies of the world share the grid.
+  /// its known part (OccupancyGrid::knownExtent: the cells that are free or occupied, without
+  /// the unknown border a SLAM map has round them) is the room. Copies of the world share the
+  /// grid.
   std::shared_ptr<const geometry::OccupancyGrid> map;
   std::string map_file;  ///< the map's YAML, "" without a map
   std::vector<Circle> circles;
@@ -145,15 +147,17 @@ bool coverageGridFits(const World& world, double cell_size);
 /// until the grid fits (coverageGridFits): 0.05 m for a 100 × 100 m map, 0.1 m up to 316 m.
 double defaultCoverageCellSize(const World& world);
 
-/// The world a map makes on its own (a map received on /map): the room is the grid's extent,
-/// its occupied and unknown cells are walls, the robot has `robot_radius` and the other
-/// defaults, and the coverage cell is defaultCoverageCellSize(). Not validated.
+/// The world a map makes on its own (a map received on /map): the room is the grid's known
+/// part (as for a map file), its occupied and unknown cells are walls, the robot has
+/// `robot_radius` and the other defaults, and the coverage cell is defaultCoverageCellSize().
+/// Not validated.
 World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius);
 
 /// `world` cut to `region` (m): its edges become walls (a large map cut to the rooms to clean),
 /// and the coverage cell is chosen again for it unless the world file set it. Throws
 /// util::InvalidInput naming `field` when the region is not finite, does not lie within the
-/// room or is not wider and higher than the robot.
+/// room (a map's whole extent, unknown border included), or keeps a part of the room no wider
+/// and higher than the robot.
 World cropped(World world, const geometry::Rectangle& region, const std::string& field);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
