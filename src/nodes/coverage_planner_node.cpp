@@ -5,9 +5,9 @@
 // Serves ~plan_coverage (roomba_rrt/PlanCoverage) in ~world_file's world (the simulator's room,
 // or a map_server map) or, with world "map", on the latest map on ~map_topic (/map: from
 // roomba_sim, map_server, a SLAM node or a bag); after every plan publishes it on ~coverage_path
-// (latched nav_msgs/Path) for rviz. Requests are answered one after the other: a room plans in
-// milliseconds, a whole building's map in seconds. Parameters and examples: doc/nodes.md,
-// "coverage_planner".
+// (latched nav_msgs/Path) and its rows and transits on ~coverage_markers (latched MarkerArray)
+// for rviz. Requests are answered one after the other: a room plans in milliseconds, a whole
+// building's map in seconds. Parameters and examples: doc/nodes.md, "coverage_planner".
 #include <algorithm>
 #include <memory>
 #include <string>
@@ -45,6 +45,7 @@ class CoveragePlannerNode {
     defaults_.frame_id = params.get<std::string>("frame_id", "map");
     const std::string map_topic = params.get<std::string>("map_topic", "/map");
     path_pub_ = pnh.advertise<nav_msgs::Path>("coverage_path", 1, true);
+    markers_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("coverage_markers", 1, true);
     if (!map_topic.empty()) {
       map_sub_ = pnh.subscribe(map_topic, 1, &CoveragePlannerNode::onMap, this);
     }
@@ -55,9 +56,11 @@ class CoveragePlannerNode {
 
  private:
   bool plan(PlanCoverage::Request& request, PlanCoverage::Response& response) {
-    response = planCoverage(request, defaults_, ros::Time::now());
+    world::World planned_in;
+    response = planCoverage(request, defaults_, ros::Time::now(), &planned_in);
     if (response.success) {
       path_pub_.publish(response.path);
+      markers_pub_.publish(toMarkers(response, &planned_in));
       ROS_INFO("coverage_planner: %zu rows, %.1f m, %.1f m² reachable, in %.3f s",
                response.row_starts.size(), response.length, response.reachable_area,
                response.planning_time);
@@ -84,6 +87,7 @@ class CoveragePlannerNode {
   CoverageDefaults defaults_;
   double map_robot_radius_ = 0;
   ros::Publisher path_pub_;
+  ros::Publisher markers_pub_;
   ros::Subscriber map_sub_;
   ros::ServiceServer service_;
 };

@@ -59,6 +59,43 @@ coverage::CoverageOptions requestedOptions(const PlanCoverage::Request& r,
   return o;
 }
 
+/// The room's walls and its furniture, flat below the plan.
+void addWorld(const world::World& w, const std::string& frame, const ros::Time& stamp,
+              visualization_msgs::MarkerArray& array) {
+  using visualization_msgs::Marker;
+  const std_msgs::ColorRGBA grey = nodes::color(0.35f, 0.35f, 0.35f);
+  Marker room = nodes::makeMarker(frame, stamp, "room", 0, Marker::LINE_STRIP, grey);
+  room.scale.x = 0.03;
+  const double x0 = w.origin.x, y0 = w.origin.y, x1 = x0 + w.width, y1 = y0 + w.height;
+  for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}) {
+    geometry_msgs::Point p;
+    p.x = x;
+    p.y = y;
+    room.points.push_back(p);
+  }
+  array.markers.push_back(room);
+  int id = 0;
+  for (const geometry::Circle& c : w.circles) {
+    Marker m = nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CYLINDER, grey);
+    m.pose.position.x = c.center.x;
+    m.pose.position.y = c.center.y;
+    m.pose.position.z = -0.05;
+    m.scale.x = m.scale.y = 2 * c.radius;
+    m.scale.z = 0.1;
+    array.markers.push_back(m);
+  }
+  for (const geometry::Rectangle& r : w.rectangles) {
+    Marker m = nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CUBE, grey);
+    m.pose.position.x = 0.5 * (r.min_x + r.max_x);
+    m.pose.position.y = 0.5 * (r.min_y + r.max_y);
+    m.pose.position.z = -0.05;
+    m.scale.x = r.max_x - r.min_x;
+    m.scale.y = r.max_y - r.min_y;
+    m.scale.z = 0.1;
+    array.markers.push_back(m);
+  }
+}
+
 }  // namespace
 
 nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::string& frame_id,
@@ -93,8 +130,49 @@ nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::stri
   return path;
 }
 
+visualization_msgs::MarkerArray toMarkers(const PlanCoverage::Response& answer,
+                                          const world::World* world) {
+  using visualization_msgs::Marker;
+  const std::string& frame = answer.path.header.frame_id;
+  const ros::Time& stamp = answer.path.header.stamp;
+  visualization_msgs::MarkerArray array;
+  array.markers.push_back(nodes::deleteAllMarker(frame, stamp));
+  const auto& poses = answer.path.poses;
+  if (poses.empty()) return array;
+  Marker rows = nodes::makeMarker(frame, stamp, "rows", 0, Marker::LINE_LIST,
+                                  nodes::color(0.0f, 0.6f, 0.25f));
+  rows.scale.x = 0.04;
+  Marker transits = nodes::makeMarker(frame, stamp, "transits", 0, Marker::LINE_LIST,
+                                      nodes::color(1.0f, 0.55f, 0.0f, 0.9f));
+  transits.scale.x = 0.015;
+  Marker starts = nodes::makeMarker(frame, stamp, "row_starts", 0, Marker::POINTS,
+                                    nodes::color(0.0f, 0.35f, 0.15f));
+  starts.scale.x = starts.scale.y = 0.07;
+  std::vector<bool> row(poses.size(), false);  // row[k]: poses k and k + 1 are a row's ends
+  for (const std::uint32_t k : answer.row_starts) {
+    if (k + 1 < poses.size()) row[k] = true;
+  }
+  for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
+    Marker& line = row[k] ? rows : transits;
+    line.points.push_back(poses[k].pose.position);
+    line.points.push_back(poses[k + 1].pose.position);
+    if (row[k]) starts.points.push_back(poses[k].pose.position);
+  }
+  Marker start =
+      nodes::makeMarker(frame, stamp, "start", 0, Marker::SPHERE, nodes::color(0.1f, 0.7f, 0.1f));
+  start.pose.position = poses.front().pose.position;
+  start.scale.x = start.scale.y = start.scale.z = 0.15;
+  array.markers.push_back(start);
+  for (Marker* m : {&rows, &transits, &starts}) {
+    if (!m->points.empty()) array.markers.push_back(std::move(*m));
+  }
+  if (world != nullptr) addWorld(*world, frame, stamp, array);
+  return array;
+}
+
 PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
-                                    const CoverageDefaults& defaults, const ros::Time& stamp) {
+                                    const CoverageDefaults& defaults, const ros::Time& stamp,
+                                    world::World* planned_in) {
   PlanCoverage::Response response;
   response.path.header.frame_id = defaults.frame_id;
   response.path.header.stamp = stamp;
@@ -102,6 +180,7 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
     util::requireFinite("start.x", request.start.x);
     util::requireFinite("start.y", request.start.y);
     const world::World world = requestedWorld(request, defaults);
+    if (planned_in != nullptr) *planned_in = world;
     const coverage::CoverageOptions options = requestedOptions(request, defaults, world);
     const auto started = std::chrono::steady_clock::now();
     const coverage::CoveragePlanner planner(world, options);  // InvalidInput naming an option

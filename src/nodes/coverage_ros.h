@@ -8,6 +8,7 @@
 #include <string>
 
 #include <ros/time.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/PlanCoverage.h>
 #include <roomba_rrt/coverage/coverage_planner.h>
@@ -29,13 +30,25 @@ struct CoverageDefaults {
 /// ("start: ...", "x_min..y_max: ...", "swath: ..."). Never throws on bad input. Plans from
 /// scratch (sampling the world) at each call: a few milliseconds for a room, seconds for a
 /// whole building's map.
+/// `planned_in` (optional) gets the world the plan was made in (the request's world, region and
+/// robot), when the request is valid.
 PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
-                                    const CoverageDefaults& defaults, const ros::Time& stamp);
+                                    const CoverageDefaults& defaults, const ros::Time& stamp,
+                                    world::World* planned_in = nullptr);
 
 /// The plan's legs as one path in `frame_id`: each transit's and row's points in order (the
 /// point where one leg meets the next once), each pose facing along the path; `row_starts` gets
 /// the index of each row's first pose.
 nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::string& frame_id,
                              const ros::Time& stamp, std::vector<std::uint32_t>* row_starts);
+
+/// The answer drawn for rviz (after a DELETEALL): the rows (ns `rows`, one LINE_LIST, green),
+/// the transits between them (ns `transits`, one LINE_LIST, orange, thinner), each row's start
+/// (ns `row_starts`, POINTS) and the start (ns `start`, a sphere); with `world` (the one it was
+/// planned in) also its room's walls (ns `room`, LINE_STRIP) and furniture (ns `furniture`, flat
+/// grey cylinders and boxes; a map's cells are rviz's Map display's). Nothing but the DELETEALL
+/// for an answer without a path.
+visualization_msgs::MarkerArray toMarkers(const PlanCoverage::Response& answer,
+                                          const world::World* world = nullptr);
 
 }  // namespace roomba_rrt::coverage_node

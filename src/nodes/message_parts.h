@@ -40,6 +40,17 @@ inline visualization_msgs::Marker makeMarker(const std::string& frame_id, const 
   return m;
 }
 
+/// The marker that clears every marker its display shows: the first of a MarkerArray that
+/// replaces what was drawn before.
+inline visualization_msgs::Marker deleteAllMarker(const std::string& frame_id,
+                                                  const ros::Time& stamp) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame_id;
+  m.header.stamp = stamp;
+  m.action = visualization_msgs::Marker::DELETEALL;
+  return m;
+}
+
 /// A rotation by `yaw` about z.
 inline geometry_msgs::Quaternion yawToQuaternion(double yaw) {
   geometry_msgs::Quaternion q;

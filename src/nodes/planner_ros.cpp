@@ -9,6 +9,7 @@ namespace roomba_rrt::planner_node {
 namespace {
 
 using nodes::color;
+using nodes::deleteAllMarker;
 using nodes::makeMarker;
 using planning::Point2;
 using visualization_msgs::Marker;
@@ -266,11 +267,7 @@ void fillResponse(const planning::PlanResult& result, const std::string& frame_i
 visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::string& frame_id,
                                           const ros::Time& stamp) {
   visualization_msgs::MarkerArray array;
-  Marker clear;
-  clear.header.frame_id = frame_id;
-  clear.header.stamp = stamp;
-  clear.action = Marker::DELETEALL;
-  array.markers.push_back(clear);
+  array.markers.push_back(deleteAllMarker(frame_id, stamp));
 
   const planning::Problem& problem = *scene.problem;
   array.markers.push_back(boundsMarker(

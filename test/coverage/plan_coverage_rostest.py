@@ -8,6 +8,7 @@ import rospy
 import rosunit
 from nav_msgs.msg import Path
 from roomba_rrt.srv import PlanCoverage, PlanCoverageRequest
+from visualization_msgs.msg import MarkerArray
 
 SERVICE = "/coverage_planner/plan_coverage"
 
@@ -33,12 +34,20 @@ class PlanCoverageTest(unittest.TestCase):
         cls.plan = rospy.ServiceProxy(SERVICE, PlanCoverage)
         cls.lock = threading.Lock()
         cls.published = []
+        cls.markers = []
         rospy.Subscriber("/coverage_planner/coverage_path", Path, cls.on_path, queue_size=10)
+        rospy.Subscriber("/coverage_planner/coverage_markers", MarkerArray, cls.on_markers,
+                         queue_size=10)
 
     @classmethod
     def on_path(cls, msg):
         with cls.lock:
             cls.published.append(msg)
+
+    @classmethod
+    def on_markers(cls, msg):
+        with cls.lock:
+            cls.markers.append(msg)
 
     def test_the_room_is_planned_and_the_plan_latched_for_rviz(self):
         r = self.plan(request(1.0, 1.0))
@@ -60,6 +69,17 @@ class PlanCoverageTest(unittest.TestCase):
             rospy.sleep(0.1)
         with self.lock:
             self.assertTrue(any(len(p.poses) == len(r.path.poses) for p in self.published))
+        # rviz's markers: this plan's rows, a line from each row start to the next pose.
+        expected = [r.path.poses[k].pose.position for k in r.row_starts]
+
+        def drawn():
+            with self.lock:
+                return any(m.ns == "rows" and m.points[::2] == expected
+                           for array in self.markers for m in array.markers)
+        deadline = rospy.get_time() + 10
+        while rospy.get_time() < deadline and not drawn() and not rospy.is_shutdown():
+            rospy.sleep(0.1)
+        self.assertTrue(drawn())
 
     def test_the_map_on_slash_map_is_planned(self):
         r = self.plan(request(0.0, 0.0, world="map"))

@@ -139,8 +139,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzedDataProvider in(data, size);
     request = makeRequest(in);
   }
+  world::World planned_in;
   const PlanCoverage::Response r =
-      roomba_rrt::coverage_node::planCoverage(request, defaults, ros::Time(1));
+      roomba_rrt::coverage_node::planCoverage(request, defaults, ros::Time(1), &planned_in);
   if (!r.success) {
     require(namesAField(r.message), "a refusal that names no field of the request");
     require(r.path.poses.empty() && r.row_starts.empty(), "a refusal with a path");
@@ -159,5 +160,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   require(std::isfinite(r.length) && std::isfinite(r.reachable_area) && r.reachable_area > 0,
           "a non-finite length or area");
+  std::size_t row_points = 0;  // what rviz draws: the rows' ends
+  for (const auto& m : roomba_rrt::coverage_node::toMarkers(r, &planned_in).markers) {
+    if (m.ns == "rows") row_points = m.points.size();
+  }
+  require(row_points == 2 * r.row_starts.size(), "rviz's rows are not the answer's");
   return 0;
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -86,6 +87,55 @@ TEST(CoverageRos, the_furnished_room_is_covered_by_rows_a_disc_can_drive) {
     rows += std::hypot(b.x - a.x, b.y - a.y);
   }
   EXPECT_NEAR(rows, r.row_length, 1e-6);
+}
+
+TEST(CoverageRos, rviz_draws_the_rows_and_the_transits_apart) {
+  using visualization_msgs::Marker;
+  const PlanCoverage::Response r = planCoverage(from(1.0, 1.0), furnished(), ros::Time(3));
+  ASSERT_TRUE(r.success) << r.message;
+  const visualization_msgs::MarkerArray array = toMarkers(r);
+  ASSERT_FALSE(array.markers.empty());
+  EXPECT_EQ(array.markers.front().action, Marker::DELETEALL);
+  std::map<std::string, const Marker*> by_ns;
+  for (std::size_t i = 1; i < array.markers.size(); ++i) {
+    by_ns[array.markers[i].ns] = &array.markers[i];
+    EXPECT_EQ(array.markers[i].header.frame_id, "map");
+    EXPECT_EQ(array.markers[i].header.stamp, ros::Time(3));
+  }
+  ASSERT_TRUE(by_ns.count("rows") && by_ns.count("transits") && by_ns.count("row_starts") &&
+              by_ns.count("start"));
+  const Marker& rows = *by_ns["rows"];
+  ASSERT_EQ(rows.points.size(), 2 * r.row_starts.size());
+  for (std::size_t i = 0; i < r.row_starts.size(); ++i) {  // each row's two ends, in order
+    EXPECT_EQ(rows.points[2 * i], r.path.poses[r.row_starts[i]].pose.position);
+    EXPECT_EQ(rows.points[2 * i + 1], r.path.poses[r.row_starts[i] + 1].pose.position);
+  }
+  // Every other step of the path is a transit's.
+  EXPECT_EQ(by_ns["transits"]->points.size(), 2 * (r.path.poses.size() - 1 - r.row_starts.size()));
+  EXPECT_EQ(by_ns["row_starts"]->points.size(), r.row_starts.size());
+  EXPECT_EQ(by_ns["start"]->pose.position, r.path.poses.front().pose.position);
+  EXPECT_EQ(by_ns.count("room"), 0u);  // without the world
+  // With the world it was planned in: its walls and its five pieces of furniture.
+  world::World planned_in;
+  const PlanCoverage::Response again =
+      planCoverage(from(1.0, 1.0), furnished(), ros::Time(3), &planned_in);
+  const visualization_msgs::MarkerArray drawn = toMarkers(again, &planned_in);
+  int furniture = 0;
+  const Marker* room = nullptr;
+  for (const Marker& m : drawn.markers) {
+    furniture += m.ns == "furniture";
+    if (m.ns == "room") room = &m;
+  }
+  EXPECT_EQ(furniture, 5);
+  ASSERT_NE(room, nullptr);
+  ASSERT_EQ(room->points.size(), 5u);
+  EXPECT_DOUBLE_EQ(room->points[2].x, 6.4);
+  EXPECT_DOUBLE_EQ(room->points[2].y, 4.8);
+  // A refusal clears what the last plan drew, and draws nothing.
+  const visualization_msgs::MarkerArray none =
+      toMarkers(planCoverage(from(1.3, 3.5), furnished(), ros::Time(4)));
+  ASSERT_EQ(none.markers.size(), 1u);
+  EXPECT_EQ(none.markers.front().action, Marker::DELETEALL);
 }
 
 TEST(CoverageRos, each_pose_faces_the_next) {
