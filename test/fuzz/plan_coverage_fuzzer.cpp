@@ -10,16 +10,17 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
 
 #include "../../src/nodes/coverage_ros.h"
+#include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
 
 namespace {
+
+namespace fuzz = roomba_rrt::fuzz;
 
 using roomba_rrt::PlanCoverage;
 namespace world = roomba_rrt::world;
@@ -42,14 +43,7 @@ double pickDouble(FuzzedDataProvider& in) {
                                     std::numeric_limits<double>::infinity(),
                                     -std::numeric_limits<double>::infinity(),
                                     std::numeric_limits<double>::quiet_NaN()};
-  switch (in.ConsumeIntegralInRange(0, 3)) {
-    case 0:
-      return in.PickValueInArray(kSpecial);
-    case 1:
-      return in.ConsumeFloatingPoint<double>();
-    default:
-      return in.ConsumeFloatingPointInRange(-6.0, 8.0);
-  }
+  return fuzz::pickDouble(in, kSpecial, -6.0, 8.0);
 }
 
 PlanCoverage::Request makeRequest(FuzzedDataProvider& in) {
@@ -100,12 +94,7 @@ PlanCoverage::Request parseRequest(const std::string& text) {
   return r;
 }
 
-void require(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "plan_coverage_fuzzer: check failed: %s\n", what);
-    std::abort();
-  }
-}
+void require(bool ok, const char* what) { fuzz::require(ok, "plan_coverage_fuzzer", what); }
 
 bool namesAField(const std::string& message) {
   for (const char* field : {"world", "start", "start.x", "start.y", "x_min..y_max", "robot_radius",

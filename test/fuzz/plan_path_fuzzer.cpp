@@ -14,18 +14,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <string>
 
 #include "../../src/nodes/make_plan_ros.h"
 #include "../../src/nodes/planner_ros.h"
+#include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/scenarios.h"
 
 namespace {
+
+namespace fuzz = roomba_rrt::fuzz;
 
 using roomba_rrt::PlanPath;
 namespace planning = roomba_rrt::planning;
@@ -51,14 +52,7 @@ double pickDouble(FuzzedDataProvider& in) {
                                     std::numeric_limits<double>::infinity(),
                                     -std::numeric_limits<double>::infinity(),
                                     std::numeric_limits<double>::quiet_NaN()};
-  switch (in.ConsumeIntegralInRange(0, 3)) {
-    case 0:
-      return in.PickValueInArray(kSpecial);
-    case 1:
-      return in.ConsumeFloatingPoint<double>();
-    default:
-      return in.ConsumeFloatingPointInRange(-2.0, 12.0);
-  }
+  return fuzz::pickDouble(in, kSpecial, -2.0, 12.0);
 }
 
 std::string pickName(FuzzedDataProvider& in, std::initializer_list<const char*> names) {
@@ -144,12 +138,7 @@ PlanPath::Request parseRequest(const std::string& text, bool* make_plan) {
   return r;
 }
 
-void require(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "plan_path_fuzzer: check failed: %s\n", what);
-    std::abort();
-  }
-}
+void require(bool ok, const char* what) { fuzz::require(ok, "plan_path_fuzzer", what); }
 
 }  // namespace
 
