@@ -64,35 +64,17 @@ void addWorld(const world::World& w, const std::string& frame, const ros::Time& 
               visualization_msgs::MarkerArray& array) {
   using visualization_msgs::Marker;
   const std_msgs::ColorRGBA grey = nodes::color(0.35f, 0.35f, 0.35f);
-  Marker room = nodes::makeMarker(frame, stamp, "room", 0, Marker::LINE_STRIP, grey);
-  room.scale.x = 0.03;
-  const double x0 = w.origin.x, y0 = w.origin.y, x1 = x0 + w.width, y1 = y0 + w.height;
-  for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}) {
-    geometry_msgs::Point p;
-    p.x = x;
-    p.y = y;
-    room.points.push_back(p);
-  }
-  array.markers.push_back(room);
+  array.markers.push_back(
+      nodes::outline({w.origin.x, w.origin.y, w.origin.x + w.width, w.origin.y + w.height},
+                     nodes::makeMarker(frame, stamp, "room", 0, Marker::LINE_STRIP, grey), 0.03));
   int id = 0;
   for (const geometry::Circle& c : w.circles) {
-    Marker m = nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CYLINDER, grey);
-    m.pose.position.x = c.center.x;
-    m.pose.position.y = c.center.y;
-    m.pose.position.z = -0.05;
-    m.scale.x = m.scale.y = 2 * c.radius;
-    m.scale.z = 0.1;
-    array.markers.push_back(m);
+    array.markers.push_back(nodes::flatFurniture(
+        c, nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CYLINDER, grey)));
   }
   for (const geometry::Rectangle& r : w.rectangles) {
-    Marker m = nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CUBE, grey);
-    m.pose.position.x = 0.5 * (r.min_x + r.max_x);
-    m.pose.position.y = 0.5 * (r.min_y + r.max_y);
-    m.pose.position.z = -0.05;
-    m.scale.x = r.max_x - r.min_x;
-    m.scale.y = r.max_y - r.min_y;
-    m.scale.z = 0.1;
-    array.markers.push_back(m);
+    array.markers.push_back(nodes::flatFurniture(
+        r, nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CUBE, grey)));
   }
 }
 
@@ -182,8 +164,7 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
     const world::World world = requestedWorld(request, defaults);
     if (planned_in != nullptr) *planned_in = world;
     const coverage::CoverageOptions options = requestedOptions(request, defaults, world);
-    const auto started = std::chrono::steady_clock::now();
-    const coverage::CoveragePlanner planner(world, options);  // InvalidInput naming an option
+    // Checked before the planner samples the world (seconds on a whole building's map).
     const coverage::Point2 start{request.start.x, request.start.y};
     const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
     if (!(start.x >= world.origin.x && start.x <= x1 && start.y >= world.origin.y &&
@@ -192,6 +173,8 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
                                             ", " + util::show(world.origin.y) + ") to (" +
                                             util::show(x1) + ", " + util::show(y1) + ")");
     }
+    const auto started = std::chrono::steady_clock::now();
+    const coverage::CoveragePlanner planner(world, options);  // InvalidInput naming an option
     const coverage::CoveragePlan plan = planner.plan(start);
     response.planning_time =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -1,5 +1,6 @@
-// Small message parts every node builds the same way: a colour, an rviz marker's common fields, a
-// yaw as a quaternion and back. Header-only, so each node and its conversion tests just include it.
+// Small message parts every node builds the same way: a colour, an rviz marker's common fields,
+// furniture and walls drawn flat, a yaw as a quaternion and back. Header-only, so each node and
+// its conversion tests just include it.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <ros/time.h>
 #include <std_msgs/ColorRGBA.h>
 #include <visualization_msgs/Marker.h>
+
+#include "roomba_rrt/geometry/geometry.h"
 
 namespace roomba_rrt::nodes {
 
@@ -49,6 +52,49 @@ inline visualization_msgs::Marker deleteAllMarker(const std::string& frame_id,
   m.header.stamp = stamp;
   m.action = visualization_msgs::Marker::DELETEALL;
   return m;
+}
+
+/// A piece of furniture drawn flat just below what is planned round it: `base` (a CYLINDER with
+/// its frame, namespace, id and colour) as a 10 cm thick disc of the circle, 5 cm down.
+inline visualization_msgs::Marker flatFurniture(const geometry::Circle& circle,
+                                                visualization_msgs::Marker base) {
+  base.pose.position.x = circle.center.x;
+  base.pose.position.y = circle.center.y;
+  base.pose.position.z = -0.05;
+  base.scale.x = base.scale.y = 2.0 * circle.radius;
+  base.scale.z = 0.1;
+  return base;
+}
+
+/// The same for a rectangle: `base` a CUBE, drawn as a 10 cm thick box of it, 5 cm down.
+inline visualization_msgs::Marker flatFurniture(const geometry::Rectangle& box,
+                                                visualization_msgs::Marker base) {
+  base.pose.position.x = 0.5 * (box.min_x + box.max_x);
+  base.pose.position.y = 0.5 * (box.min_y + box.max_y);
+  base.pose.position.z = -0.05;
+  base.scale.x = box.max_x - box.min_x;
+  base.scale.y = box.max_y - box.min_y;
+  base.scale.z = 0.1;
+  return base;
+}
+
+/// The rectangle's outline (walls, sampling bounds): `base` a LINE_STRIP of `width` through its
+/// four corners and back to the first.
+inline visualization_msgs::Marker outline(const geometry::Rectangle& box,
+                                          visualization_msgs::Marker base, double width) {
+  base.scale.x = width;
+  const double corners[][2] = {{box.min_x, box.min_y},
+                               {box.max_x, box.min_y},
+                               {box.max_x, box.max_y},
+                               {box.min_x, box.max_y},
+                               {box.min_x, box.min_y}};
+  for (const auto& corner : corners) {
+    geometry_msgs::Point p;
+    p.x = corner[0];
+    p.y = corner[1];
+    base.points.push_back(p);
+  }
+  return base;
 }
 
 /// A rotation by `yaw` about z.

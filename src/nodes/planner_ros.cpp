@@ -10,7 +10,9 @@ namespace {
 
 using nodes::color;
 using nodes::deleteAllMarker;
+using nodes::flatFurniture;
 using nodes::makeMarker;
+using nodes::outline;
 using planning::Point2;
 using visualization_msgs::Marker;
 
@@ -181,18 +183,6 @@ std::string checkPlanningTimeLimit(const PlanPath::Request& r, const NodeDefault
   return out.str();
 }
 
-Marker boundsMarker(const planning::Bounds& b, const Marker& base) {
-  Marker m = base;
-  m.scale.x = 0.04;  // line width
-  const Point2 corners[] = {{b.x_min, b.y_min},
-                            {b.x_max, b.y_min},
-                            {b.x_max, b.y_max},
-                            {b.x_min, b.y_max},
-                            {b.x_min, b.y_min}};
-  for (const Point2& corner : corners) m.points.push_back(toPointMsg(corner));
-  return m;
-}
-
 Marker sphereMarker(const Point2& at, const Marker& base) {
   Marker m = base;
   m.pose.position = toPointMsg(at);
@@ -270,28 +260,20 @@ visualization_msgs::MarkerArray toMarkers(const MarkerScene& scene, const std::s
   array.markers.push_back(deleteAllMarker(frame_id, stamp));
 
   const planning::Problem& problem = *scene.problem;
-  array.markers.push_back(boundsMarker(
-      problem.bounds,
-      makeMarker(frame_id, stamp, "bounds", 0, Marker::LINE_STRIP, color(0.1f, 0.1f, 0.1f))));
+  const planning::Bounds& b = problem.bounds;
+  array.markers.push_back(outline(
+      {b.x_min, b.y_min, b.x_max, b.y_max},
+      makeMarker(frame_id, stamp, "bounds", 0, Marker::LINE_STRIP, color(0.1f, 0.1f, 0.1f)), 0.04));
+  // Flat, just below the tree.
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
-    const planning::Circle& obstacle = problem.obstacles[i];
-    Marker m = makeMarker(frame_id, stamp, "obstacles", static_cast<int>(i), Marker::CYLINDER,
-                          color(0.35f, 0.35f, 0.35f));
-    m.pose.position = toPointMsg(obstacle.center, -0.05);
-    m.scale.x = m.scale.y = 2.0 * obstacle.radius;
-    m.scale.z = 0.1;  // a flat disc just below the tree
-    array.markers.push_back(m);
+    array.markers.push_back(flatFurniture(
+        problem.obstacles[i], makeMarker(frame_id, stamp, "obstacles", static_cast<int>(i),
+                                         Marker::CYLINDER, color(0.35f, 0.35f, 0.35f))));
   }
   for (std::size_t i = 0; i < problem.rectangles.size(); ++i) {
-    const planning::Rectangle& box = problem.rectangles[i];
-    Marker m = makeMarker(frame_id, stamp, "rectangles", static_cast<int>(i), Marker::CUBE,
-                          color(0.35f, 0.35f, 0.35f));
-    m.pose.position =
-        toPointMsg({0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)}, -0.05);
-    m.scale.x = box.max_x - box.min_x;
-    m.scale.y = box.max_y - box.min_y;
-    m.scale.z = 0.1;  // flat, as the discs
-    array.markers.push_back(m);
+    array.markers.push_back(flatFurniture(
+        problem.rectangles[i], makeMarker(frame_id, stamp, "rectangles", static_cast<int>(i),
+                                          Marker::CUBE, color(0.35f, 0.35f, 0.35f))));
   }
   array.markers.push_back(sphereMarker(
       problem.start,
