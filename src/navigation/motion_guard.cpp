@@ -17,14 +17,16 @@ constexpr int kBisections = 10;           // the safe fraction of v to about 1/1
 }  // namespace
 
 MotionGuard::MotionGuard(planning::Problem world, double rate, double max_linear_accel,
-                         double margin)
+                         double margin, int ticks)
     : world_(std::move(world)),
       dt_(1.0 / rate),
       max_linear_accel_(max_linear_accel),
-      margin_(margin) {
+      margin_(margin),
+      ticks_(ticks) {
   util::requirePositive("rate", rate);
   util::requirePositive("max_linear_accel", max_linear_accel);
   util::require(std::isfinite(margin) && margin >= 0, "margin", "finite and >= 0", margin);
+  util::require(ticks >= 1, "ticks", ">= 1", ticks);
   util::require(std::isfinite(world_.robot_radius) && world_.robot_radius >= 0, "robot_radius",
                 "finite and >= 0", world_.robot_radius);
 }
@@ -46,8 +48,8 @@ double MotionGuard::gap(double x, double y) const {
 }
 
 bool MotionGuard::safe(const robot::Pose2D& pose, double v, double w) const {
-  // The way the command would take the robot before it can stop: one tick at v, then braking.
-  const double reach = std::fabs(v) * dt_ + v * v / (2.0 * max_linear_accel_);
+  // The way the command would take the robot before it can stop: ticks_ at v, then braking.
+  const double reach = std::fabs(v) * dt_ * ticks_ + v * v / (2.0 * max_linear_accel_);
   const int samples = std::max(1, static_cast<int>(std::ceil(reach / kSampleSpacing)));
   const double start_gap = gap(pose.x, pose.y);
   const double curvature = std::fabs(v) > 1e-12 ? w / v : 0.0;  // the arc's, signed by v

@@ -345,10 +345,11 @@ bt::TreeFactory::Builder make(Args... args) {
 
 }  // namespace
 
-std::shared_ptr<const MotionGuard> knownWorldGuard(const NavLeafConfig& config, double margin) {
+std::shared_ptr<const MotionGuard> knownWorldGuard(const NavLeafConfig& config, double margin,
+                                                   int ticks) {
   if (!config.known_world) return nullptr;
   return std::make_shared<MotionGuard>(config.known_world->world(), config.follower.rate,
-                                       config.follower.max_linear_accel, margin);
+                                       config.follower.max_linear_accel, margin, ticks);
 }
 
 void registerNavLeaves(bt::TreeFactory& factory, const NavLeafConfig& config, NavContext& context) {

@@ -72,5 +72,25 @@ TEST(MotionGuard, slows_a_step_that_would_touch_and_never_stops_a_turn_in_place)
   EXPECT_NEAR(guard.gap(1.0, 2.0), 1.0 - 0.17, 1e-12);
 }
 
+TEST(MotionGuard, with_more_ticks_it_stops_sooner_for_a_pose_that_may_be_late) {
+  planning::Problem world;
+  world.bounds = {0, 4, 0, 4};
+  world.robot_radius = 0.17;
+  // Heading for the right wall at 0.5 m/s with 2 m/s² of braking: 6.25 cm to stop, 0.83 cm a
+  // tick at 60 Hz. 8.5 cm away with a 1 cm margin: one tick and the braking (7.1 cm) leave
+  // 1.4 cm; three (8.75 cm) would touch.
+  const robot::Pose2D pose{4.0 - 0.17 - 0.085, 2.0, 0.0};
+  const MotionGuard one(world, 60, 2.0, 0.01), three(world, 60, 2.0, 0.01, 3);
+  EXPECT_EQ(one.filter(pose, {0.5, 0.0}).v, 0.5);
+  EXPECT_LT(three.filter(pose, {0.5, 0.0}).v, 0.5);
+  EXPECT_GT(three.filter(pose, {0.5, 0.0}).v, 0.3);
+  try {
+    MotionGuard(world, 60, 2.0, 0.01, 0);
+    FAIL() << "no tick was accepted";
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(e.field(), "ticks");
+  }
+}
+
 }  // namespace
 }  // namespace roomba_rrt::navigation

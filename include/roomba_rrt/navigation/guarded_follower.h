@@ -26,6 +26,8 @@ class GuardedFollower {
  public:
   GuardedFollower(const FollowerParams& params, std::shared_ptr<const MotionGuard> guard);
 
+  /// The guard from now on (null: commands unchecked).
+  void setGuard(std::shared_ptr<const MotionGuard> guard) { guard_ = std::move(guard); }
   /// PathFollower::setParams.
   void setParams(const FollowerParams& params) { follower_.setParams(params); }
   /// PathFollower::start; the count of ticks held still goes on (resetHold() clears it).

@@ -81,7 +81,7 @@ struct NavLeafConfig {
 /// The motion guard of the known world keeping `margin` (FollowPath's: 1 cm), at the follower's
 /// rate and acceleration: null without a known world.
 std::shared_ptr<const MotionGuard> knownWorldGuard(const NavLeafConfig& config,
-                                                   double margin = 0.01);
+                                                   double margin = 0.01, int ticks = 1);
 
 /// Registers, on `factory`:
 ///
