@@ -3,6 +3,7 @@
 // (config/roomba_coverage_tree.xml) in navigation::NavBt with the simulator.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -282,6 +283,53 @@ TEST_F(LeafTest, a_touch_up_stop_the_way_turns_back_at_is_reached_not_cut) {
   }
   EXPECT_EQ(status, bt::Status::kSuccess);
   EXPECT_GT(furthest, stop.x - 0.015);  // within the follower's 1 cm of the stop
+}
+
+/// The small room 7 mm narrower: its right wall is off the lattice's cell boundaries, and the last
+/// lattice column stands 5.5 mm from it (floor the rows' 1 cm clearance keeps them from).
+world::World offLatticeRoom() {
+  world::World world = smallRoom();
+  world.width -= 0.007;
+  return world;
+}
+
+struct EdgeTest : LeafTest {
+  EdgeTest() : LeafTest(offLatticeRoom()) {}
+};
+
+TEST_F(EdgeTest, a_row_along_the_wall_is_driven_closer_than_the_rows_guard_allows_without_a_bump) {
+  // All swept but the band by the right wall: the touch-up's row along it (edge cleaning) keeps
+  // 3 mm; the rows' guard keeps 5 mm and would hold the robot off it.
+  const auto& space = planner->freeSpace();
+  CoverageProgress touch_up;
+  touch_up.touch_ups = 1;
+  touch_up.swept.assign(space.size(), 1);
+  int band = 0;
+  for (int k = 0; k < space.size(); ++k) {
+    const Point2 p = space.point(k);
+    if (p.x > world.width - 0.01 && p.y > 0.3 && p.y < 1.2) touch_up.swept[k] = 0, ++band;
+  }
+  ASSERT_GT(band, 30);
+  touch_up.plan = planner->touchUp(touch_up.swept, {1.0, 0.75});
+  ASSERT_TRUE(std::any_of(touch_up.plan.legs.begin(), touch_up.plan.legs.end(),
+                          [](const Leg& leg) { return leg.along_wall; }));
+  board->set<CoverageProgress>("coverage", touch_up);
+  bt::Tree follow = build(kFollow);
+  double closest = world.width;  // the disc's least gap to the right wall
+  bool contact = false;
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 30 && status == bt::Status::kRunning; ++i) {
+    status = step(follow);
+    closest = std::min(closest, world.width - sim.pose().x - world.robot_radius);
+    contact = contact || sim.senseContact().pressed;
+  }
+  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_FALSE(contact);
+  EXPECT_LT(closest, planner->options().clearance / 2);
+  EXPECT_GT(closest, 0.0);
+  int left = 0;
+  for (int k = 0; k < space.size(); ++k) left += !progress().swept[k];
+  EXPECT_LE(left, 6);  // the ramps' ends
 }
 
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {

@@ -608,3 +608,68 @@ TEST(CoveragePlanner, touch_up_sweeps_a_strip_along_a_wall_with_one_row_beside_i
   driven.drive(planner, touch_up.legs);
   EXPECT_TRUE(std::all_of(driven.swept.begin(), driven.swept.end(), [](auto s) { return s == 1; }));
 }
+
+/// The lab's room made 7 mm narrower: its right wall no longer lies on the lattice's cell
+/// boundaries (as a map cut anywhere with --crop), and the last lattice column stands 5.5 mm from
+/// it. All swept but that column's floor for 2 m: the band the disc reaches but the 1 cm clearance
+/// keeps every row from.
+struct OffLatticeWall {
+  World world = [] {
+    World w = emptyRoom();
+    w.width -= 0.007;
+    return w;
+  }();
+  std::vector<std::uint8_t> band(const CoveragePlanner& planner, int& points) const {
+    const auto& space = planner.freeSpace();
+    std::vector<std::uint8_t> swept(space.size(), 1);
+    points = 0;
+    for (int k = 0; k < space.size(); ++k) {
+      const Point2 p = space.point(k);
+      if (p.x > world.width - planner.options().clearance && p.y > 1.0 && p.y < 3.0) {
+        swept[k] = 0, ++points;
+      }
+    }
+    return swept;
+  }
+};
+
+TEST(CoveragePlanner, touch_up_cleans_along_a_wall_closer_than_the_clearance_keeps_the_rows) {
+  const OffLatticeWall room;
+  const CoveragePlanner planner(room.world);
+  int points = 0;
+  const std::vector<std::uint8_t> swept = room.band(planner, points);
+  ASSERT_EQ(points, 80);  // 2 m of lattice points 5.5 mm from the wall
+  const CoveragePlan touch_up = planner.touchUp(swept, {3.0, 2.0});
+  expectSafe(room.world, touch_up);
+  std::vector<Leg> edges;
+  for (const Leg& leg : touch_up.legs) {
+    if (leg.along_wall) edges.push_back(leg);
+  }
+  ASSERT_EQ(edges.size(), 1u);
+  // Where the robot arrives and leaves, the clearance; along the wall, the edge clearance.
+  const double r = room.world.robot_radius, wall = room.world.width;
+  const Polyline& row = edges[0].points;
+  ASSERT_EQ(row.size(), 4u);
+  EXPECT_NEAR(wall - row.front().x, r + planner.options().clearance, 1e-4);
+  EXPECT_NEAR(wall - row.back().x, r + planner.options().clearance, 1e-4);
+  EXPECT_NEAR(wall - row[1].x, r + planner.options().edge_clearance, 1e-4);
+  EXPECT_NEAR(wall - row[2].x, r + planner.options().edge_clearance, 1e-4);
+  EXPECT_NEAR(std::fabs(row.front().y - row.back().y), 2.0, 0.05);
+  // It sweeps the band but where it ramps in and out (3 lattice points at either end).
+  Driven driven{swept};
+  driven.drive(planner, touch_up.legs);
+  const auto left = std::count(driven.swept.begin(), driven.swept.end(), 0);
+  EXPECT_LE(left, 6);
+}
+
+TEST(CoveragePlanner, without_edge_cleaning_the_band_within_the_clearance_is_never_swept) {
+  const OffLatticeWall room;
+  CoverageOptions options;
+  options.edge_clearance = options.clearance;
+  const CoveragePlanner planner(room.world, options);
+  int points = 0;
+  const std::vector<std::uint8_t> swept = room.band(planner, points);
+  Driven driven{swept};
+  driven.drive(planner, planner.touchUp(swept, {3.0, 2.0}).legs);
+  EXPECT_EQ(std::count(driven.swept.begin(), driven.swept.end(), 0), points);
+}

@@ -65,8 +65,11 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   leg's start where the previous one ended. A finished leg advances
 ///   `coverage.leg` (a finished row also clears `tries`). It marks the floor under the robot in
 ///   `coverage.swept` on every tick; once the rows are driven it goes back for the spots they
-///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows), in two passes
-///   (CoverageProgress::kTouchUpSpotAreas). RUNNING with the command; SUCCESS when every leg
+///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows, the band along a
+///   wall within the clearance), in two passes (CoverageProgress::kTouchUpSpotAreas). A row
+///   along a wall (Leg::along_wall: closer than the clearance) is driven on its own, never joined
+///   to the legs around it, with a guard of its own (half the edge clearance, three ticks ahead).
+///   RUNNING with the command; SUCCESS when every leg
 ///   of both touch-up passes is driven too; FAILURE with `error` when the bumper is pressed
 ///   while it follows ("bumped", counted in `bumps`; a contact there when it starts is not a
 ///   bump: the robot put down against a wall drives off, where backing up would slide along the

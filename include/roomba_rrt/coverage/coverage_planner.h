@@ -37,7 +37,9 @@
 //   7. Join consecutive rows with transits: the straight segment when it is free, else the
 //      shortest lattice path, shortcut (FreeSpace::shortestPath).
 //   8. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
-//      own poses, markSwept()): the corners its U-turns cut, rows it gave up.
+//      own poses, markSwept()): the corners its U-turns cut, rows it gave up, and (edge cleaning)
+//      the band within the clearance of a wall, from rows along it at the edge
+//      clearance.
 // Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
 // where the free space's connectivity changes, not at every vertex), so there are few long rows
 // and few transits; it needs no polygonal model (the lattice handles circles, rectangles and
@@ -82,6 +84,13 @@ struct CoverageOptions {
   /// Kept between the robot's disc and everything, on top of its radius (m): rows run this far
   /// from the walls, so a follower's small tracking errors do not bump.
   double clearance = 0.01;
+  /// Kept by the touch-up's rows along a wall where the clearance leaves a band of floor no row
+  /// sweeps (m): edge cleaning, driven parallel to the wall. A wall that does not lie on the
+  /// lattice's cell boundaries (a map cut anywhere with --crop) has lattice points within the
+  /// clearance of it: floor the disc reaches, which 1 cm keeps it from. In 40 random crops of
+  /// the shared maps, 99 % by 2× the ideal time: 26 without, 31 with 3 mm, 33 with 2 mm (which
+  /// bumped more with a late pose). At or above the clearance: no edge cleaning.
+  double edge_clearance = 0.003;
 };
 
 /// The options for cleaning `world`: the defaults on a lattice of the world's coverage cell, so
@@ -97,6 +106,9 @@ struct Leg {
   /// A row: its two ends (the disc cleans along it). A transit: a polyline of two or more
   /// points from the previous leg's end to the next row's start.
   Polyline points;
+  /// A touch-up row along a wall, closer to it than the clearance (edge cleaning): its ends keep
+  /// the clearance, the rest CoverageOptions::edge_clearance.
+  bool along_wall = false;
 };
 
 /// A coverage path and what it achieves. Areas in m².
@@ -144,9 +156,12 @@ class CoveragePlanner {
 
   /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
   /// `swept` does not mark (each spot of at least `min_spot_area`: the corners a U-turn cut, a
-  /// skipped row, the floor beside a bump), nearest first. Each spot is visited by a transit to
-  /// the free lattice point whose disc covers most of it, then a row of no length there (the
-  /// robot passes or stops there, in any heading).
+  /// skipped row, the floor beside a bump), nearest first. What lies along a wall closer than any
+  /// free lattice point reaches is swept by a row beside it: at the clearance when one reaches
+  /// it, else (the floor within the clearance of the wall) along the wall at the edge clearance,
+  /// ramping in from the clearance and out to it again (Leg::along_wall). Each other spot is
+  /// visited by a transit to the free lattice point whose disc covers most of it, then a row of
+  /// no length there (the robot passes or stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
   CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
                        double min_spot_area = kMinSpotArea) const;
@@ -164,9 +179,13 @@ class CoveragePlanner {
   std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
   /// A row along `points` (lattice points of missed floor in order along one lattice column, or
   /// one lattice row when not `vertical`: the floor a U-turn left by a wall), from the first to
-  /// the last, as close to them as stays free, if the disc reaches them from there.
-  std::optional<std::pair<Point2, Point2>> stripRow(const std::vector<int>& points,
-                                                    bool vertical) const;
+  /// the last, as close to them as keeps `clearance`, if the disc reaches them from there. Below
+  /// the planner's clearance (edge cleaning) the row ramps in from it and out to it again
+  /// (kEdgeRamp), so that it starts and ends where the robot may stand.
+  std::optional<Polyline> stripRow(const std::vector<int>& points, bool vertical,
+                                   double clearance) const;
+  /// How long a row along a wall takes to come in from the clearance and go out to it again (m).
+  static constexpr double kEdgeRamp = 0.1;
   /// A strip of this many lattice points or fewer is left to the spots' stops.
   static constexpr int kStripLength = 4;
   /// Strips along one line this many lattice points apart or closer are swept by one row.
