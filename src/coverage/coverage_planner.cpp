@@ -666,7 +666,7 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
   // back for (now).
   const double h = space_.resolution();
   const double r = space_.robotRadius();
-  std::vector<Polyline> visits;  // rows to drive, in either direction
+  std::vector<Leg> visits;  // rows to drive, in either direction
   Mask seen(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
     if (!missed[k] || seen[k]) continue;
@@ -691,7 +691,6 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
   }
   // A row along `points` (in order along a line), sweeping what is missed beside it; false when
   // no free row reaches them. Too few points to be worth a row: nothing to do (true).
-  std::vector<bool> along_wall;  // per visit: an edge-cleaning row
   auto stripVisit = [&](const std::vector<int>& points, bool vertical, double clearance) {
     if (static_cast<int>(points.size()) <= kStripLength) return true;
     const std::optional<Polyline> row = stripRow(points, vertical, clearance);
@@ -700,8 +699,7 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
       forPointsNear(space_, (*row)[k], (*row)[k + 1], r,
                     [&](int c) { uncovered[c] = missed[c] = 0; });
     }
-    visits.push_back(*row);
-    along_wall.push_back(clearance < options_.clearance);
+    visits.push_back(Leg{Leg::Kind::kRow, *row, clearance < options_.clearance});
     return true;
   };
   // A run that no free row reaches as a whole (something stands near one end: a plant in the
@@ -774,8 +772,7 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
     }
     const Point2 centre = space_.point(*best);
     forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
-    visits.push_back({centre, centre});
-    along_wall.push_back(false);
+    visits.push_back(Leg{Leg::Kind::kRow, {centre, centre}});
   }
   // Nearest first (either end), each a transit and its row. (Improving the tour by 2-opt on the
   // straight jumps did not make the touch-up quicker: its cost is the turns as much as the jumps.)
@@ -786,22 +783,23 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
     double next_distance = 0;
     for (std::size_t v = 0; v < visits.size(); ++v) {
       if (visited[v]) continue;
-      const double d = std::min(geometry::distance(here, visits[v].front()),
-                                geometry::distance(here, visits[v].back()));
+      const double d = std::min(geometry::distance(here, visits[v].points.front()),
+                                geometry::distance(here, visits[v].points.back()));
       if (next == visits.size() || d < next_distance) next = v, next_distance = d;
     }
     visited[next] = true;
-    Polyline row = visits[next];
-    if (geometry::distance(here, row.back()) < geometry::distance(here, row.front())) {
-      std::reverse(row.begin(), row.end());
+    Leg row = visits[next];
+    Polyline& points = row.points;
+    if (geometry::distance(here, points.back()) < geometry::distance(here, points.front())) {
+      std::reverse(points.begin(), points.end());
     }
-    const std::optional<Polyline> path = transit(here, row.front());
+    const std::optional<Polyline> path = transit(here, points.front());
     if (!path) continue;
     if (geometry::pathLength(*path) > kMinLegLength) {
       plan.legs.push_back(Leg{Leg::Kind::kTransit, *path});
     }
-    here = row.back();
-    plan.legs.push_back(Leg{Leg::Kind::kRow, std::move(row), along_wall[next]});
+    here = points.back();
+    plan.legs.push_back(std::move(row));
   }
   return plan;
 }
