@@ -34,6 +34,16 @@
 namespace roomba_rrt::tools {
 namespace {
 
+/// The world as the header names it: its file, and the region --crop kept (whole cells: it may
+/// be a little larger than asked, world::cropped).
+std::string worldLabel(const CoverageOptions& o, const world::World& world) {
+  if (o.crop.empty()) return o.world;
+  char region[160];
+  std::snprintf(region, sizeof region, " cut to (%.6g, %.6g) to (%.6g, %.6g)", world.origin.x,
+                world.origin.y, world.origin.x + world.width, world.origin.y + world.height);
+  return o.world + region;
+}
+
 using behavior::RoombaParams;
 
 double secondsSince(std::chrono::steady_clock::time_point begin) {
@@ -79,7 +89,7 @@ int runFleets(const CoverageOptions& o, const world::World& world, const RoombaP
       o.seeds > 1 ? "seeds " + std::to_string(o.seed) + "–" + std::to_string(o.seed + o.seeds - 1)
                   : "seed " + std::to_string(o.seed);
   std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n",
-              o.behavior.c_str(), seeds.c_str(), o.duration, o.world.c_str());
+              o.behavior.c_str(), seeds.c_str(), o.duration, worldLabel(o, world).c_str());
   std::printf("  floor cleaned by the robots together [%%]%s\n",
               o.seeds > 1 ? " (mean ± std)" : "");
   std::printf("  robots");
@@ -155,7 +165,7 @@ int runOne(const CoverageOptions& o, const world::World& world, const RoombaPara
   std::printf("roomba_coverage: %s, seed%s %u%s, %.0f s of robot time per run, world %s\n",
               o.behavior.c_str(), o.seeds > 1 ? "s" : "", o.seed,
               o.seeds > 1 ? ("–" + std::to_string(o.seed + o.seeds - 1)).c_str() : "", o.duration,
-              o.world.c_str());
+              worldLabel(o, world).c_str());
   std::printf("  time [s]   coverage [%%]%s\n", o.seeds > 1 ? " (mean ± std)" : "");
   for (std::size_t c = 0; c < at.size(); ++c) {
     if (!at[c].empty())
@@ -292,7 +302,7 @@ int runReachable(const CoverageOptions& options, const world::World& world,
             : "seed " + std::to_string(options.seed);
   std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n",
               options.compare ? "fsm, bt and coverage" : behaviors.front().c_str(), seeds.c_str(),
-              options.duration, options.world.c_str());
+              options.duration, worldLabel(options, world).c_str());
   std::printf(
       "  reachable floor %.2f m² of %.2f m² of floor (the coverage planner's, from the "
       "start); ideal time %.1f s\n",

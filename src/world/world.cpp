@@ -412,26 +412,56 @@ World cropped(World world, const geometry::Rectangle& region, const std::string&
                                  world.origin.y + world.height};
   const geometry::Rectangle world_box = world.map ? world.map->extent() : room;
   const geometry::Rectangle& r = region;
-  const geometry::Rectangle kept{std::max(r.min_x, room.min_x), std::max(r.min_y, room.min_y),
-                                 std::min(r.max_x, room.max_x), std::min(r.max_y, room.max_y)};
+  const auto refuse = [&] {
+    return InvalidInput(
+        field, "must lie within the world (" + util::show(world_box.min_x) + ", " +
+                   util::show(world_box.min_y) + ") to (" + util::show(world_box.max_x) + ", " +
+                   util::show(world_box.max_y) + ") and keep a part of its room (" +
+                   util::show(room.min_x) + ", " + util::show(room.min_y) + ") to (" +
+                   util::show(room.max_x) + ", " + util::show(room.max_y) +
+                   ") wider and higher than the robot, got (" + util::show(r.min_x) + ", " +
+                   util::show(r.min_y) + ") to (" + util::show(r.max_x) + ", " +
+                   util::show(r.max_y) + ")");
+  };
   if (!(r.min_x >= world_box.min_x && r.min_y >= world_box.min_y && r.max_x <= world_box.max_x &&
-        r.max_y <= world_box.max_y && kept.max_x - kept.min_x > 2 * world.robot_radius &&
-        kept.max_y - kept.min_y > 2 * world.robot_radius)) {
-    throw InvalidInput(field, "must lie within the world (" + util::show(world_box.min_x) + ", " +
-                                  util::show(world_box.min_y) + ") to (" +
-                                  util::show(world_box.max_x) + ", " + util::show(world_box.max_y) +
-                                  ") and keep a part of its room (" + util::show(room.min_x) +
-                                  ", " + util::show(room.min_y) + ") to (" +
-                                  util::show(room.max_x) + ", " + util::show(room.max_y) +
-                                  ") wider and higher than the robot, got (" + util::show(r.min_x) +
-                                  ", " + util::show(r.min_y) + ") to (" + util::show(r.max_x) +
-                                  ", " + util::show(r.max_y) + ")");
+        r.max_y <= world_box.max_y)) {
+    throw refuse();
   }
-  world.origin = {kept.min_x, kept.min_y};
-  world.width = kept.max_x - kept.min_x;
-  world.height = kept.max_y - kept.min_y;
+  // Whole cells, inside the region (the robot cleans nothing it was not asked to): the lower-left
+  // corner moves in to the map's grid, then the width and height shrink to whole coverage cells,
+  // unless the region reaches the room's own wall. The coverage lattice starts at the corner, so
+  // the walls the cut makes lie on its cells' boundaries, as the map's own walls do when its cell
+  // is a multiple of the coverage cell. A wall between two lattice points leaves floor within
+  // the rows' clearance of it, which they never sweep: 84 of 120 random crops reached 99 % by
+  // twice the ideal time cut anywhere, 96 cut to whole cells (bench/coverage_crops.py).
+  constexpr double kSlack = 1e-6;  // in cells: 4.2 m is 140 cells of 3 cm, not 139.99…
+  geometry::Point2 corner{std::max(r.min_x, room.min_x), std::max(r.min_y, room.min_y)};
+  if (world.map) {
+    const geometry::OccupancyGrid& grid = *world.map;
+    const auto onGrid = [&](double v, double grid_origin) {
+      return grid_origin +
+             std::ceil((v - grid_origin) / grid.resolution - kSlack) * grid.resolution;
+    };
+    corner = {onGrid(corner.x, grid.origin.x), onGrid(corner.y, grid.origin.y)};
+  }
+  const geometry::Point2 far{std::min(r.max_x, room.max_x), std::min(r.max_y, room.max_y)};
+  world.origin = corner;
+  world.width = far.x - corner.x;
+  world.height = far.y - corner.y;
+  if (!(world.width > 2 * world.robot_radius && world.height > 2 * world.robot_radius)) {
+    throw refuse();
+  }
   if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
     world.coverage_cell_size = defaultCoverageCellSize(world);
+  }
+  const double cell = world.coverage_cell_size;
+  const auto wholeCells = [&](double size, bool to_wall) {
+    return to_wall ? size : std::floor(size / cell + kSlack) * cell;
+  };
+  world.width = wholeCells(world.width, far.x >= room.max_x);
+  world.height = wholeCells(world.height, far.y >= room.max_y);
+  if (!(world.width > 2 * world.robot_radius && world.height > 2 * world.robot_radius)) {
+    throw refuse();
   }
   return world;
 }

@@ -126,6 +126,32 @@ TEST_F(MapWorld, a_slam_maps_unknown_border_is_not_part_of_the_room) {
   EXPECT_NEAR(sim.pose().x, w.origin.x + 20 * 0.05 - w.robot_radius, 1e-9);
 }
 
+TEST_F(MapWorld, a_region_is_kept_in_whole_cells_inside_it) {
+  // The coverage lattice starts at the region's corner: cut on whole cells, its walls lie between
+  // lattice points, as the map's own do, and no floor is left within the rows' clearance of them.
+  draw(roomWithAWall());  // origin (-1, -0.5), 5 cm cells, the room (-1, -0.5) to (1, 1)
+  const world::World w =
+      world::loadWorld(write("w.yaml", "map: m.yaml\ninitial_pose: {x: -0.5, y: 0.6, theta: 0}\n"));
+  const world::World part = world::cropped(w, {-0.98, -0.47, 0.93, 0.96}, "--crop");
+  EXPECT_NEAR(part.origin.x, -0.95, 1e-12);  // in, to the map's grid
+  EXPECT_NEAR(part.origin.y, -0.45, 1e-12);
+  EXPECT_EQ(part.coverage_cell_size, 0.025);
+  EXPECT_NEAR(part.width, 75 * 0.025, 1e-12);   // 1.88 m: 75 whole cells of the lattice
+  EXPECT_NEAR(part.height, 56 * 0.025, 1e-12);  // 1.41 m
+  // A room without a map: its corner stays, the size shrinks to whole cells unless it reaches
+  // the room's wall.
+  world::World room;
+  room.width = 2.0;
+  room.height = 1.5;
+  const world::World in_room = world::cropped(room, {0.013, 0.02, 1.9, 1.5}, "--crop");
+  EXPECT_DOUBLE_EQ(in_room.origin.x, 0.013);
+  EXPECT_DOUBLE_EQ(in_room.origin.y, 0.02);
+  EXPECT_NEAR(in_room.width, 75 * 0.025, 1e-12);  // 1.887 m
+  EXPECT_NEAR(in_room.height, 1.48, 1e-12);       // to the room's top wall, where it was asked
+  // Wider than the robot (0.34 m) as asked, 0.33 m once on the map's grid: refused.
+  EXPECT_THROW(world::cropped(w, {-0.98, -0.47, -0.62, 0.5}, "--crop"), util::InvalidInput);
+}
+
 TEST_F(MapWorld, driving_into_a_wall_of_cells_stops_exactly_at_its_face_with_both_switches) {
   draw(roomWithAWall());
   const world::World w =

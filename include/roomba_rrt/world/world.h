@@ -154,10 +154,13 @@ double defaultCoverageCellSize(const World& world);
 World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius);
 
 /// `world` cut to `region` (m): its edges become walls (a large map cut to the rooms to clean),
-/// and the coverage cell is chosen again for it unless the world file set it. Throws
+/// and the coverage cell is chosen again for it unless the world file set it. The part kept is
+/// whole cells inside the region: its lower-left corner on the map's grid, its size whole
+/// coverage cells (up to the room's wall where the region reaches it), so that the cut walls lie
+/// between the coverage lattice's points. Throws
 /// util::InvalidInput naming `field` when the region is not finite, does not lie within the
 /// room (a map's whole extent, unknown border included), or keeps a part of the room no wider
-/// and higher than the robot.
+/// and higher than the robot (once in whole cells).
 World cropped(World world, const geometry::Rectangle& region, const std::string& field);
 
 /// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
