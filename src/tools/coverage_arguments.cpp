@@ -27,7 +27,7 @@ const char* const kUsage =
     "              world or map_server YAML\n"
     "  --pose      where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
     "  --crop      keep only this region of the world (m): its edges become walls (a large\n"
-    "              map cut to a few rooms); rounded out to whole cells (the header says\n"
+    "              map cut to a few rooms); rounded in to whole cells (the header says\n"
     "              what was kept)\n"
     "  --config    behaviour YAML (default config/roomba_behavior.yaml)\n"
     "  --tree      behavior-tree XML for --behavior bt (default: the lab's tree) or coverage\n"

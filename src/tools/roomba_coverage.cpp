@@ -34,8 +34,8 @@
 namespace roomba_rrt::tools {
 namespace {
 
-/// The world as the header names it: its file, and the region --crop kept (whole cells: it may
-/// be a little larger than asked, world::cropped).
+/// The world as the header names it: its file, and the region --crop kept (whole cells inside
+/// the region asked: up to a cell smaller, world::cropped).
 std::string worldLabel(const CoverageOptions& o, const world::World& world) {
   if (o.crop.empty()) return o.world;
   char region[160];
