@@ -448,9 +448,6 @@ World cropped(World world, const geometry::Rectangle& region, const std::string&
   world.origin = corner;
   world.width = far.x - corner.x;
   world.height = far.y - corner.y;
-  if (!(world.width > 2 * world.robot_radius && world.height > 2 * world.robot_radius)) {
-    throw refuse();
-  }
   if (!world.coverage_cell_size_given) {  // the region's own: a crop of a large map is finer
     world.coverage_cell_size = defaultCoverageCellSize(world);
   }
@@ -460,6 +457,7 @@ World cropped(World world, const geometry::Rectangle& region, const std::string&
   };
   world.width = wholeCells(world.width, far.x >= room.max_x);
   world.height = wholeCells(world.height, far.y >= room.max_y);
+  // Whole cells only shrink the part kept: one test covers the region as asked and as kept.
   if (!(world.width > 2 * world.robot_radius && world.height > 2 * world.robot_radius)) {
     throw refuse();
   }

@@ -551,7 +551,7 @@ TEST(CoverageTree, a_map_cut_anywhere_is_cleaned_to_99_percent) {
   world::World region = world::cropped(emptyMap(), {0.41, 0.38, 3.9245, 3.1445}, "--crop");
   region.initial_pose = {2.0, 2.0, 0.0};
   CleaningLoop loop(region);
-  loop.run(300);  // the ideal time is 57 s
+  loop.run(300);  // the ideal time is 55 s
   const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
   ASSERT_NE(progress, nullptr);
   EXPECT_TRUE(progress->done());
