@@ -41,7 +41,8 @@ target_link_libraries(roomba_nav_eval roomba_nav_eval_run roomba_tools)
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(nav_core_test test/navigation/path_follower_test.cpp
     test/navigation/nav_bt_test.cpp test/navigation/nav_leaves_test.cpp
-    test/navigation/pose_predictor_test.cpp LINK roomba_nav_core)
+    test/navigation/pose_predictor_test.cpp test/navigation/guarded_follower_test.cpp
+    LINK roomba_nav_core)
   # roomba_nav_eval's run loop: goals drawn, outcomes counted, reproducible.
   roomba_rrt_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp LINK roomba_nav_eval_run)
   # 12 000 goals in three rooms (about 30 s): its own test, so the quick ones stay quick.

@@ -19,14 +19,33 @@ FollowStatus GuardedFollower::step(const robot::Pose2D& pose, robot::Velocity& c
     cmd = wanted;
     return status;
   }
-  const robot::Velocity safe = guard_->filter(pose, wanted);
+  robot::Velocity safe = guard_->filter(pose, wanted);
+  const auto passes = [](const robot::Velocity& a, const robot::Velocity& b) {
+    return a.v == b.v && a.w == b.w;
+  };
+  // Cutting a corner too close: a nearer carrot, if the guard lets it pass (else the follower
+  // goes on from its own command, as if it had not been asked).
+  if (!close_ && wanted.v != 0 && !passes(safe, wanted)) {
+    const double lookahead = follower_.params().lookahead;
+    bool nearer_passed = false;
+    for (const double fraction : kNearerCarrots) {
+      const robot::Velocity nearer = follower_.retry(pose, fraction * lookahead);
+      const robot::Velocity checked = guard_->filter(pose, nearer);
+      if (nearer.v != 0 && passes(checked, nearer)) {
+        wanted = safe = nearer;
+        nearer_passed = true;
+        break;
+      }
+    }
+    if (!nearer_passed) follower_.retry(pose, lookahead);
+  }
   // The guard stopping a forward command starts close following; the follower's own forward
   // command let through unchanged ends it. In between, the follower's commands are overruled
   // even when the guard would let a crawl of them through or they turn in place towards the
   // carrot: else they and the close following, turning towards the path just ahead, undid each
   // other beside a piece of furniture for seconds on end (office, a transit along a desk).
   if (wanted.v != 0 && safe.v == 0) close_ = true;
-  if (wanted.v != 0 && safe.v == wanted.v && safe.w == wanted.w) close_ = false;
+  if (wanted.v != 0 && passes(safe, wanted)) close_ = false;
   if (!close_) {
     held_ticks_ = 0;
     cmd = safe;

@@ -146,6 +146,8 @@ robot::Velocity PathFollower::limit(double v, double w) {
 }
 
 FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd) {
+  before_ = last_;
+  turning_before_ = turning_in_place_;
   if (!path_ || path_->empty()) {
     last_ = cmd = robot::Velocity{};
     return FollowStatus::kNoPath;
@@ -154,7 +156,6 @@ FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd)
   const Point2 here{pose.x, pose.y};
   deviation_ = project(here);
   const double to_goal = std::hypot(goal_.x - pose.x, goal_.y - pose.y);
-  const double remaining = std::max(total_length_ - progress_s_, to_goal);
   if (!at_goal_ && deviation_ > p.max_deviation) {
     last_ = cmd = robot::Velocity{};
     return FollowStatus::kStrayed;
@@ -178,8 +179,23 @@ FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd)
     return FollowStatus::kFollowing;
   }
 
+  cmd = pursue(pose, p.lookahead);
+  return FollowStatus::kFollowing;
+}
+
+robot::Velocity PathFollower::retry(const robot::Pose2D& pose, double lookahead) {
+  requirePositive("lookahead", lookahead);
+  last_ = before_;
+  turning_in_place_ = turning_before_;
+  return pursue(pose, lookahead);
+}
+
+robot::Velocity PathFollower::pursue(const robot::Pose2D& pose, double lookahead) {
+  const FollowerParams& p = params_;
+  const double to_goal = std::hypot(goal_.x - pose.x, goal_.y - pose.y);
+  const double remaining = std::max(total_length_ - progress_s_, to_goal);
   // Pure pursuit towards the carrot, in the robot's frame.
-  const Point2 carrot = pointAt(progress_s_ + p.lookahead);
+  const Point2 carrot = pointAt(progress_s_ + lookahead);
   const double dx = carrot.x - pose.x;
   const double dy = carrot.y - pose.y;
   const double c = std::cos(pose.theta);
@@ -190,8 +206,7 @@ FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd)
   const double threshold = turning_in_place_ ? 0.5 * p.rotate_threshold : p.rotate_threshold;
   turning_in_place_ = std::fabs(alpha) > threshold;
   if (turning_in_place_) {
-    cmd = limit(0.0, turnRate(alpha, p.max_angular_speed, p.heading_gain, p.max_angular_accel));
-    return FollowStatus::kFollowing;
+    return limit(0.0, turnRate(alpha, p.max_angular_speed, p.heading_gain, p.max_angular_accel));
   }
   const double d2 = lx * lx + ly * ly;
   const double kappa = d2 > 1e-12 ? 2.0 * ly / d2 : 0.0;
@@ -200,8 +215,7 @@ FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd)
   if (std::fabs(kappa) * v > p.max_angular_speed) v = p.max_angular_speed / std::fabs(kappa);
   const double dv = p.max_linear_accel * p.dt();
   v = std::clamp(v, last_.v - dv, last_.v + dv);
-  cmd = limit(v, kappa * v);
-  return FollowStatus::kFollowing;
+  return limit(v, kappa * v);
 }
 
 }  // namespace roomba_rrt::navigation

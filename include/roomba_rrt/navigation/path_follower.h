@@ -87,6 +87,11 @@ class PathFollower {
 
   /// One tick from the robot's pose: the status and, in `cmd`, the command for this tick.
   FollowStatus step(const robot::Pose2D& pose, robot::Velocity& cmd);
+  /// The last step()'s command again, pursuing a carrot `lookahead` along the path instead of
+  /// params().lookahead (> 0): a nearer carrot cuts a corner less. For a caller that may not send
+  /// the first command (GuardedFollower); it replaces it. Only after a step() that returned
+  /// kFollowing and was not turning to the goal's heading.
+  robot::Velocity retry(const robot::Pose2D& pose, double lookahead);
 
   /// Distance from the robot to the path found by the last step (m).
   double deviation() const { return deviation_; }
@@ -105,6 +110,8 @@ class PathFollower {
   planning::Point2 pointAt(double s) const;
   /// Applies the acceleration and speed limits to (v, w) from the last command, and stores it.
   robot::Velocity limit(double v, double w);
+  /// Pure pursuit of the carrot `lookahead` along the path (or turning in place towards it).
+  robot::Velocity pursue(const robot::Pose2D& pose, double lookahead);
 
   FollowerParams params_;
   const Path* path_ = nullptr;
@@ -117,6 +124,9 @@ class PathFollower {
   bool at_goal_ = false;
   bool turning_in_place_ = false;
   robot::Velocity last_;
+  /// last_ and turning_in_place_ as the last step() found them (retry() starts from there).
+  robot::Velocity before_;
+  bool turning_before_ = false;
 };
 
 }  // namespace roomba_rrt::navigation
