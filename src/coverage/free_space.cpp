@@ -220,4 +220,68 @@ Polyline FreeSpace::shortcut(const Polyline& path) const {
   return out;
 }
 
+Polyline FreeSpace::rounded(const Polyline& path, double radius,
+                            std::vector<double>* passes) const {
+  Polyline out;
+  std::vector<double> passed;
+  double length = 0;  // of `out`
+  const auto append = [&](const Point2& p) {
+    if (!out.empty()) {
+      const double step = geometry::distance(out.back(), p);
+      if (step == 0) return;
+      length += step;
+    }
+    out.push_back(p);
+  };
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (i == 0 || i + 1 == path.size()) {
+      append(path[i]);
+      passed.push_back(length);
+      continue;
+    }
+    const Point2 &a = path[i - 1], &b = path[i], &c = path[i + 1];
+    const double in_length = geometry::distance(a, b), out_length = geometry::distance(b, c);
+    double turn = 0;
+    Point2 u{0, 0}, w{0, 0};  // the directions in and out
+    if (in_length > 0 && out_length > 0) {
+      u = {(b.x - a.x) / in_length, (b.y - a.y) / in_length};
+      w = {(c.x - b.x) / out_length, (c.y - b.y) / out_length};
+      turn = std::atan2(u.x * w.y - u.y * w.x, u.x * w.x + u.y * w.y);  // left positive
+    }
+    std::vector<Point2> arc;
+    if (std::fabs(turn) >= kMinRoundedTurn && radius > 0) {
+      const double half = std::tan(std::fabs(turn) / 2);
+      const double tangent = std::min({radius * half, in_length / 2, out_length / 2});
+      const double r = tangent / half;
+      const double side = turn > 0 ? 1.0 : -1.0;
+      const Point2 from{b.x - tangent * u.x, b.y - tangent * u.y};
+      const Point2 centre{from.x - side * r * u.y, from.y + side * r * u.x};
+      const double start = std::atan2(from.y - centre.y, from.x - centre.x);
+      // An even number of steps, so that the arc's middle is one of its points.
+      const int steps =
+          2 * std::max(1, static_cast<int>(std::ceil(std::fabs(turn) * r / (2 * kArcStep))));
+      for (int k = 0; k <= steps; ++k) {
+        const double angle = start + turn * k / steps;
+        arc.push_back({centre.x + r * std::cos(angle), centre.y + r * std::sin(angle)});
+      }
+      bool free = true;
+      for (std::size_t k = 0; free && k + 1 < arc.size(); ++k) {
+        free = segmentFree(arc[k], arc[k + 1]);
+      }
+      if (!free) arc.clear();
+    }
+    if (arc.empty()) {
+      append(b);
+      passed.push_back(length);
+      continue;
+    }
+    for (std::size_t k = 0; k < arc.size(); ++k) {
+      append(arc[k]);
+      if (2 * k + 1 == arc.size()) passed.push_back(length);
+    }
+  }
+  if (passes) *passes = std::move(passed);
+  return out;
+}
+
 }  // namespace roomba_rrt::coverage

@@ -306,6 +306,56 @@ TEST(FreeSpace, shortest_path_goes_round_a_wall_and_none_leads_into_a_closed_roo
   EXPECT_TRUE(closed.shortestPath(point(closed, 5.5, 1.0), point(closed, 4.0, 4.0)));
 }
 
+TEST(FreeSpace, rounded_turns_a_u_turn_on_arcs_and_keeps_a_corner_a_bin_stands_in) {
+  // A U-turn by the lab room's right wall (x = 6.4): a row to 1 cm from it, a 0.33 m step, the
+  // next row back. Its two corners become quarter circles of 0.14 m, between the same ends.
+  const World world = emptyRoom();
+  const FreeSpace space(world, 0.01, 0.025);
+  const double x = 6.4 - 0.18;
+  const Polyline u_turn{{4.0, 1.0}, {x, 1.0}, {x, 1.33}, {4.0, 1.33}};
+  std::vector<double> passes;
+  const Polyline round = space.rounded(u_turn, 0.14, &passes);
+  EXPECT_EQ(round.front().x, 4.0);
+  EXPECT_EQ(round.back().y, 1.33);
+  ASSERT_EQ(passes.size(), u_turn.size());
+  EXPECT_EQ(passes.front(), 0.0);
+  EXPECT_NEAR(passes.back(), roomba_rrt::geometry::pathLength(round), 1e-12);
+  // Each corner's arc runs from 0.14 m before it to 0.14 m after it; its middle, where the robot
+  // passes the corner, is 0.14·(√2 − 1) from it. The arcs never go beyond the rows' ends.
+  double far = 0, nearest = 1e9;
+  for (std::size_t k = 0; k < round.size(); ++k) {
+    far = std::max(far, round[k].x);
+    EXPECT_GE(round[k].y, 1.0 - 1e-9);
+    EXPECT_LE(round[k].y, 1.33 + 1e-9);
+    nearest = std::min(nearest, std::hypot(round[k].x - x, round[k].y - 1.0));
+    if (k > 0) {
+      EXPECT_TRUE(space.segmentFree(round[k - 1], round[k]));
+    }
+  }
+  EXPECT_NEAR(far, x, 1e-9);
+  EXPECT_NEAR(nearest, 0.14 * (std::sqrt(2.0) - 1), 1e-9);
+  EXPECT_NEAR(passes[1], (x - 4.0) - 0.14 + 0.14 * kPi / 4, 1e-3);
+  const double straight = roomba_rrt::geometry::pathLength(u_turn);
+  EXPECT_NEAR(straight - roomba_rrt::geometry::pathLength(round), 2 * 0.14 * (2 - kPi / 2), 2e-3);
+  // A corner with a bin standing in it, clear of both legs: an arc of 1 m would cut through the
+  // bin's clearance, so that corner is kept; with no turn, nothing changes.
+  World bin = world;
+  const double grown = 0.05 + 0.18;  // the bin's radius + the planning radius
+  bin.circles.push_back(Circle{{4.0 - grown - 0.02, 1.0 + grown + 0.02}, 0.05});
+  const FreeSpace beside(bin, 0.01, 0.025);
+  const Polyline corner{{2.0, 1.0}, {4.0, 1.0}, {4.0, 3.0}};
+  ASSERT_TRUE(beside.segmentFree(corner[0], corner[1]) && beside.segmentFree(corner[1], corner[2]));
+  EXPECT_GT(space.rounded(corner, 1.0).size(), corner.size());  // rounded without the bin
+  const auto same = [](const Polyline& a, const Polyline& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](auto& p, auto& q) {
+             return p.x == q.x && p.y == q.y;
+           });
+  };
+  EXPECT_TRUE(same(beside.rounded(corner, 1.0), corner));
+  const Polyline line{{1.0, 1.0}, {2.0, 1.0}, {3.0, 1.0}};
+  EXPECT_TRUE(same(beside.rounded(line, 0.14), line));
+}
+
 TEST(CoveragePlanner, one_cell_wide_corridor_of_a_map_is_unreachable_and_never_crossed) {
   // A 4 m × 2 m map at 0.1 m: two free rooms joined by a corridor one cell (0.1 m) wide.
   auto grid = std::make_shared<OccupancyGrid>();

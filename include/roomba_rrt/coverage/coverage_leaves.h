@@ -61,16 +61,16 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   drives the legs from `coverage.leg` on with the navigation's follower (GuardedFollower:
 ///   FollowPath's follower and motion guard): rows at the lab's forward_speed (RoombaParams,
 ///   0.5 m/s), transits at `transit_speed` (within the follower's limits; a U-turn, row, short
-///   step and next row, is driven as one path, at the row's speed), turning in place towards each
-///   leg's start where the previous one ended. A finished leg advances
-///   `coverage.leg` (a finished row also clears `tries`). It marks the floor under the robot in
-///   `coverage.swept` on every tick; once the rows are driven it goes back for the spots they
-///   missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows, the band along a
-///   wall within the clearance), in two passes (CoverageProgress::kTouchUpSpotAreas). A row
-///   along a wall (Leg::along_wall: closer than the clearance) is driven on its own, never joined
-///   to the legs around it, with a guard of its own (half the edge clearance, three ticks ahead).
-///   RUNNING with the command; SUCCESS when every leg
-///   of both touch-up passes is driven too; FAILURE with `error` when the bumper is pressed
+///   step and next row, is driven as one path, at the row's speed, its corners rounded into arcs:
+///   FreeSpace::rounded), turning in place towards each leg's start where the previous one
+///   ended. A finished leg advances `coverage.leg` (a finished row also clears `tries`). It
+///   marks the floor under the robot in `coverage.swept` on every tick; once the rows are driven
+///   it goes back for the spots they missed (CoveragePlanner::touchUp: the corners its U-turns
+///   cut, skipped rows, the band along a wall within the clearance), in two passes
+///   (CoverageProgress::kTouchUpSpotAreas). A row along a wall (Leg::along_wall: closer than the
+///   clearance) is driven on its own, never joined to the legs around it, with a guard of its own
+///   (half the edge clearance, three ticks ahead). RUNNING with the command; SUCCESS when every
+///   leg of both touch-up passes is driven too; FAILURE with `error` when the bumper is pressed
 ///   while it follows ("bumped", counted in `bumps`; a contact there when it starts is not a
 ///   bump: the robot put down against a wall drives off, where backing up would slide along the
 ///   wall), the robot strayed from the leg, the guard held it still ("blocked"), it made no

@@ -90,6 +90,21 @@ class FreeSpace {
   /// are not free with the planning radius are never made, and the ones given are kept.
   Polyline shortcut(const Polyline& path) const;
 
+  /// `path` with its corners turned on arcs of `radius` (m; none if not > 0), as a robot drives
+  /// them without stopping: each arc is tangent to the two segments at its ends, which lie at most
+  /// halfway along either (the radius shrinks where they would not), points at most kArcStep apart.
+  /// A corner is kept where it turns less than kMinRoundedTurn, or where a chord of its arc is not
+  /// free (planning radius; the arc cuts the corner, which may bring it closer to what the corner
+  /// goes round). The segments of `path` are taken to be free. `passes`, when given, receives
+  /// for each point of `path` the arc length along the result where it is passed: a rounded
+  /// corner at its arc's middle.
+  Polyline rounded(const Polyline& path, double radius,
+                   std::vector<double>* passes = nullptr) const;
+  /// A corner that turns less than this (rad) is kept by rounded().
+  static constexpr double kMinRoundedTurn = 0.2;
+  /// Largest distance between neighbouring points of a rounded() arc (m).
+  static constexpr double kArcStep = 0.02;
+
  private:
   world::World world_;
   double robot_radius_;
