@@ -20,18 +20,18 @@ FollowStatus GuardedFollower::step(const robot::Pose2D& pose, robot::Velocity& c
     return status;
   }
   robot::Velocity safe = guard_->filter(pose, wanted);
-  const auto passes = [](const robot::Velocity& a, const robot::Velocity& b) {
+  const auto same = [](const robot::Velocity& a, const robot::Velocity& b) {
     return a.v == b.v && a.w == b.w;
   };
   // Cutting a corner too close: a nearer carrot, if the guard lets it pass (else the follower
   // goes on from its own command, as if it had not been asked).
-  if (!close_ && wanted.v != 0 && !passes(safe, wanted)) {
+  if (!close_ && wanted.v != 0 && !same(safe, wanted)) {
     const double lookahead = follower_.params().lookahead;
     bool nearer_passed = false;
     for (const double fraction : kNearerCarrots) {
       const robot::Velocity nearer = follower_.retry(pose, fraction * lookahead);
       const robot::Velocity checked = guard_->filter(pose, nearer);
-      if (nearer.v != 0 && passes(checked, nearer)) {
+      if (nearer.v != 0 && same(checked, nearer)) {
         wanted = safe = nearer;
         nearer_passed = true;
         break;
@@ -45,7 +45,7 @@ FollowStatus GuardedFollower::step(const robot::Pose2D& pose, robot::Velocity& c
   // carrot: else they and the close following, turning towards the path just ahead, undid each
   // other beside a piece of furniture for seconds on end (office, a transit along a desk).
   if (wanted.v != 0 && safe.v == 0) close_ = true;
-  if (wanted.v != 0 && passes(safe, wanted)) close_ = false;
+  if (wanted.v != 0 && same(safe, wanted)) close_ = false;
   if (!close_) {
     held_ticks_ = 0;
     cmd = safe;
