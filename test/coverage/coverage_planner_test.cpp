@@ -380,6 +380,84 @@ TEST(CoveragePlanner, one_cell_wide_corridor_of_a_map_is_unreachable_and_never_c
   EXPECT_GE(sweptByRows(world, plan) / plan.reachable_area, 0.95);
 }
 
+/// The floor a disc of radius r reaches in `world` (m²), by brute force, on the planner's lattice
+/// (edge h from the world's origin): a floor point counts when a free centre (world::penetrates)
+/// on a grid of h/10 lies closer than r to it. For a world whose free space is one piece.
+double reachableByBruteForce(const World& world, double h) {
+  const double r = world.robot_radius;
+  const double step = h / 10;
+  const int nx = static_cast<int>(std::ceil(world.width / step));
+  const int ny = static_cast<int>(std::ceil(world.height / step));
+  std::vector<char> free(static_cast<std::size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      free[static_cast<std::size_t>(j) * nx + i] = !roomba_rrt::world::penetrates(
+          world, r, world.origin.x + i * step, world.origin.y + j * step);
+    }
+  }
+  const int reach = static_cast<int>(std::ceil(r / step)) + 1;
+  double area = 0;
+  for (double y = world.origin.y + h / 2; y < world.origin.y + world.height; y += h) {
+    for (double x = world.origin.x + h / 2; x < world.origin.x + world.width; x += h) {
+      if (roomba_rrt::world::penetrates(world, 1e-6, x, y)) continue;  // not floor
+      const int ci = static_cast<int>(std::lround((x - world.origin.x) / step));
+      const int cj = static_cast<int>(std::lround((y - world.origin.y) / step));
+      bool reached = false;
+      for (int j = std::max(0, cj - reach); j <= std::min(ny - 1, cj + reach) && !reached; ++j) {
+        for (int i = std::max(0, ci - reach); i <= std::min(nx - 1, ci + reach) && !reached; ++i) {
+          const double dx = world.origin.x + i * step - x, dy = world.origin.y + j * step - y;
+          reached = free[static_cast<std::size_t>(j) * nx + i] && dx * dx + dy * dy < r * r;
+        }
+      }
+      if (reached) area += h * h;
+    }
+  }
+  return area;
+}
+
+TEST(CoveragePlanner,
+     reachable_floor_is_the_floor_a_free_centre_reaches_in_a_map_with_stepped_walls) {
+  // A 1.6 m × 1.6 m map of 5 cm cells whose free space is bounded by two walls drawn as stairs
+  // (a diagonal at 45° and one at about 63°), as walls that do not run along a map's axes are:
+  // the disc reaches into their steps between the lattice points.
+  auto grid = std::make_shared<OccupancyGrid>();
+  grid->width = grid->height = 32;
+  grid->resolution = 0.05;
+  grid->cells.assign(32 * 32, OccupancyGrid::kFree);
+  for (int j = 0; j < 32; ++j) {
+    for (int i = 0; i < 32; ++i) {
+      const bool border = i == 0 || j == 0 || i == 31 || j == 31;
+      if (border || j - i > 14 || 2 * (i - 22) > j) {
+        grid->cells[j * 32 + i] = OccupancyGrid::kOccupied;
+      }
+    }
+  }
+  World world;
+  world.map = grid;
+  world.width = world.height = 1.6;
+  const CoveragePlan plan = planChecked(world, {0.6, 0.5});
+  const double brute = reachableByBruteForce(world, CoverageOptions().resolution);
+  // Within 2 lattice points (the brute force's grid and the planner's directions are millimetres
+  // apart). Counting a disc r + h/2 around the lattice points at the edge, as the planner once
+  // did, gave 4 points more; trying 128 directions instead of 256, 4 fewer.
+  EXPECT_NEAR(plan.reachable_area, brute, 2 * 0.025 * 0.025) << "brute force " << brute;
+}
+
+TEST(CoveragePlanner, reachable_floor_ends_at_a_thin_wall_with_a_closed_room_behind_it) {
+  // A 2 m × 1.2 m room cut by a 2 cm wall at x = 0.99..1.01, no door. The disc reaches the floor
+  // beside the wall on the far side only from centres on that side, which the robot cannot take.
+  World world;
+  world.width = 2.0;
+  world.height = 1.2;
+  world.rectangles.push_back(Rectangle{0.99, 0.0, 1.01, 1.2});
+  const CoveragePlan plan = planChecked(world, {0.5, 0.6});
+  World near_side = world;  // the same lattice, up to the wall
+  near_side.width = 0.99;
+  near_side.rectangles.clear();
+  const double brute = reachableByBruteForce(near_side, CoverageOptions().resolution);
+  EXPECT_NEAR(plan.reachable_area, brute, 2 * 0.025 * 0.025) << "brute force " << brute;
+}
+
 TEST(CoveragePlanner, same_world_and_start_give_the_same_plan) {
   const World world = furnishedRoom();
   const Point2 start{world.initial_pose.x, world.initial_pose.y};

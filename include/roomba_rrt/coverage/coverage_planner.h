@@ -54,9 +54,10 @@
 // Areas are measured on the lattice (each point stands for an h × h square of floor): the floor
 // (not inside a wall or obstacle), the reachable floor (within the robot's radius of a centre it
 // can reach from the start, with its own radius: a gap the disc fits through only without the
-// clearance is reachable, but not planned), the part the rows sweep, and the unreachable floor
-// (floor minus reachable floor: corners the disc cannot enter, gaps narrower than the disc, closed
-// rooms).
+// clearance is reachable, but not planned; the centres between the lattice points at the edge of
+// the free space are tested exactly, so the floor in a map's stepped walls counts as far as the
+// disc reaches into them), the part the rows sweep, and the unreachable floor (floor minus
+// reachable floor: corners the disc cannot enter, gaps narrower than the disc, closed rooms).
 #pragma once
 
 #include <cstddef>
