@@ -25,9 +25,10 @@
 //      sideboard's top). The lattice stops up to a step short of the walls: the outer rows and
 //      every row's ends are moved out as far as they stay free (exactly).
 //   5. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
-//      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Rows
-//      that would sweep less than a small area no other row sweeps are dropped, the others
-//      shortened to the stretch that sweeps floor of their own.
+//      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Each
+//      row is shortened to the stretch that sweeps the bunches of floor no other row sweeps
+//      and that are worth a row (not the slivers beyond a neighbouring row's ends), or dropped
+//      when none is.
 //   6. Order the cells: greedily, from where the robot is, the cell whose first row (of four
 //      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
 //      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
