@@ -46,7 +46,8 @@ constexpr double kMinRowGain = 0.01;
 /// it used to keep the whole stretch between them. In a cluttered willow_full crop (-4.41,-11.77
 /// to 4.35,-5.01, 60 cells) 7.3 m of rows ran within 5 cm of another, now 0.3 m; its rows went
 /// from 172.5 to 159.7 m. In 320 random crops (bench/coverage_crops.py, seeds 1-8) 265 reach 95 %
-/// by 1.5x the ideal time instead of 262.
+/// by 1.5x the ideal time instead of 262. Dropping bunches of up to 200 or 400 cm² gave 269, but
+/// the willow_full crop of doc/performance.md then reached 99 % at 579 or 601 s, for 554.
 constexpr double kBunchGap = 0.6;
 
 /// At most this many improvements of the cell order (each moves one cell): enough to settle a
