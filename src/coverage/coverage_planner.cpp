@@ -393,9 +393,9 @@ struct OwnColumn {
 /// The stretch [lo, hi] a row keeps, given the floor only it sweeps column by column along it
 /// (`columns`, lattice step h): the columns with such floor form bunches (a gap of more than
 /// kBunchGap starts a new one); the row keeps the stretch that reaches every bunch of at least
-/// kMinRowGain (`point_area` per point). nullopt when no bunch is worth it.
+/// kMinRowGain (h² per point). nullopt when no bunch is worth it.
 std::optional<std::pair<double, double>> keptStretch(const std::vector<OwnColumn>& columns,
-                                                     double h, double point_area) {
+                                                     double h) {
   const std::size_t gap = static_cast<std::size_t>(std::floor(kBunchGap / h));
   std::optional<std::pair<double, double>> kept;
   std::size_t k = 0;
@@ -410,7 +410,7 @@ std::optional<std::pair<double, double>> keptStretch(const std::vector<OwnColumn
       bunch.add(columns[k]);
       last = k;
     }
-    if (bunch.points * point_area < kMinRowGain) continue;
+    if (bunch.points * h * h < kMinRowGain) continue;
     kept = kept ? std::pair{std::min(kept->first, bunch.lo), std::max(kept->second, bunch.hi)}
                 : std::pair{bunch.lo, bunch.hi};
   }
@@ -464,7 +464,7 @@ void pruneRows(const FreeSpace& space, const Mask& floor, std::vector<std::vecto
       column.hi = std::max(column.hi, p.x - reach + kMinLegLength);
     });
     stamp(*row, -1);
-    const auto kept = keptStretch(columns, h, h * h);
+    const auto kept = keptStretch(columns, h);
     if (!kept) {  // dropped
       *row = Row{{0, 0}, {-1, 0}};
       continue;
