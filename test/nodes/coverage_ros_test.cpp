@@ -175,7 +175,7 @@ TEST(CoverageRos, another_robot_gets_rows_a_swath_of_its_own_apart) {
   big.robot_radius = 0.25;
   expectDrivable(big, r.path, 0.25 + d.clearance - 1e-6);
   const PlanCoverage::Response roomba = planCoverage(from(1.0, 1.5), d, ros::Time(0));
-  EXPECT_LT(r.row_length, 0.8 * roomba.row_length);  // rows up to 0.49 m apart, not 0.33
+  EXPECT_LT(r.row_length, 0.8 * roomba.row_length);  // rows up to 0.49 m apart, not 0.335
 }
 
 TEST(CoverageRos, a_map_is_planned_once_one_has_arrived) {
