@@ -8,14 +8,18 @@ namespace roomba_rrt::geometry {
 namespace {
 
 /// Calls visit(i, j) for every cell whose square may come within `reach` of p (the cells of the
-/// bounding box of the disc, one ring more for rounding), outside the grid included.
+/// bounding box of the disc, one ring more for rounding), outside the grid included, until
+/// visit returns true; returns whether one did.
 template <class Visit>
-void forCellsNear(const OccupancyGrid& grid, const Point2& p, double reach, Visit visit) {
+bool anyCellNear(const OccupancyGrid& grid, const Point2& p, double reach, Visit visit) {
   const int i0 = grid.column(p.x - reach) - 1, i1 = grid.column(p.x + reach) + 1;
   const int j0 = grid.row(p.y - reach) - 1, j1 = grid.row(p.y + reach) + 1;
   for (int j = j0; j <= j1; ++j) {
-    for (int i = i0; i <= i1; ++i) visit(i, j);
+    for (int i = i0; i <= i1; ++i) {
+      if (visit(i, j)) return true;
+    }
   }
+  return false;
 }
 
 /// The t-interval of a + t (b − a), t ∈ [0, 1], whose x lies in [lo, hi]; empty when lo > hi.
@@ -51,12 +55,22 @@ Rectangle OccupancyGrid::knownExtent() const {
 double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reach,
                          bool unknown_is_free) {
   double best_sq = reach * reach;
-  forCellsNear(grid, p, reach, [&](int i, int j) {
+  anyCellNear(grid, p, reach, [&](int i, int j) {
     if (grid.blocked(i, j, unknown_is_free)) {
       best_sq = std::min(best_sq, squaredDistance(grid.square(i, j), p));
     }
+    return false;
   });
   return std::sqrt(best_sq);
+}
+
+bool blockedWithin(const OccupancyGrid& grid, const Point2& p, double reach, bool unknown_is_free) {
+  // The cells distanceToBlocked visits: sqrt(the least squared distance, at most reach²) < reach
+  // holds exactly when it holds for one of them (sqrt never decreases).
+  return anyCellNear(grid, p, reach, [&](int i, int j) {
+    return grid.blocked(i, j, unknown_is_free) &&
+           std::sqrt(std::min(reach * reach, squaredDistance(grid.square(i, j), p))) < reach;
+  });
 }
 
 bool segmentMeetsBlocked(const OccupancyGrid& grid, const Segment& segment, double margin,
@@ -83,23 +97,19 @@ bool segmentMeetsBlocked(const OccupancyGrid& grid, const Segment& segment, doub
 
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,
                       bool unknown_is_free) {
-  bool meets = false;
-  forCellsNear(grid, p, radius, [&](int i, int j) {
-    if (!meets && grid.blocked(i, j, unknown_is_free) &&
-        withinMargin(grid.square(i, j), p, radius)) {
-      meets = true;
-    }
+  return anyCellNear(grid, p, radius, [&](int i, int j) {
+    return grid.blocked(i, j, unknown_is_free) && withinMargin(grid.square(i, j), p, radius);
   });
-  return meets;
 }
 
 void blockedSquaresNear(const OccupancyGrid& grid, const Point2& p, double radius,
                         std::vector<Rectangle>& out, bool unknown_is_free) {
   out.clear();
-  forCellsNear(grid, p, radius, [&](int i, int j) {
+  anyCellNear(grid, p, radius, [&](int i, int j) {
     if (grid.blocked(i, j, unknown_is_free) && withinMargin(grid.square(i, j), p, radius)) {
       out.push_back(grid.square(i, j));
     }
+    return false;
   });
 }
 

@@ -62,6 +62,13 @@ struct OccupancyGrid {
 double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reach,
                          bool unknown_is_free = false);
 
+/// Whether distanceToBlocked(grid, p, reach) < reach: a blocked square lies nearer than `reach`
+/// to p. The same answer, but it stops at the first such square: a lattice of a large robot on
+/// a map is mostly blocked points, each of which used to cost every cell within reach (a 1.6 m
+/// robot on the apartment map took 25 s to sample under the sanitizers).
+bool blockedWithin(const OccupancyGrid& grid, const Point2& p, double reach,
+                   bool unknown_is_free = false);
+
 /// Whether the closed disc of `radius` around `p` has a point in common with a blocked cell's
 /// square (touching counts), i.e. distanceToBlocked(p) ≤ radius.
 bool discMeetsBlocked(const OccupancyGrid& grid, const Point2& p, double radius,

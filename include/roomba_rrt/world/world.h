@@ -113,7 +113,7 @@ inline bool penetrates(const World& world, double radius, double x, double y) {
   for (const Rectangle& box : world.rectangles) {
     if (geometry::squaredDistance(box, p) < r * r) return true;
   }
-  return world.map && geometry::distanceToBlocked(*world.map, p, r) < r;
+  return world.map && geometry::blockedWithin(*world.map, p, r);
 }
 
 /// The same for a disc of the world's robot_radius.
