@@ -65,11 +65,11 @@ double distanceToBlocked(const OccupancyGrid& grid, const Point2& p, double reac
 }
 
 bool blockedWithin(const OccupancyGrid& grid, const Point2& p, double reach, bool unknown_is_free) {
-  // The cells distanceToBlocked visits: sqrt(the least squared distance, at most reach²) < reach
-  // holds exactly when it holds for one of them (sqrt never decreases).
+  // The cells distanceToBlocked visits: sqrt(the least squared distance) < reach holds exactly
+  // when it holds for one of them (sqrt never decreases).
   return anyCellNear(grid, p, reach, [&](int i, int j) {
     return grid.blocked(i, j, unknown_is_free) &&
-           std::sqrt(std::min(reach * reach, squaredDistance(grid.square(i, j), p))) < reach;
+           std::sqrt(squaredDistance(grid.square(i, j), p)) < reach;
   });
 }
 

@@ -80,7 +80,7 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
     return format("goal (%.2f, %.2f) is too close to a wall (the robot needs %.2f m)", x, y,
                   margin);
   }
-  if (world.map && geometry::distanceToBlocked(*world.map, {x, y}, margin) < margin) {
+  if (world.map && geometry::blockedWithin(*world.map, {x, y}, margin)) {
     return format("goal (%.2f, %.2f) is in or too close to a wall of the map (an occupied or ", x,
                   y) +
            format("unknown cell; the robot needs %.2f m)", margin, 0);

@@ -28,7 +28,7 @@ bool discFree(const world::World& w, const Point2& p, double margin) {
   for (const geometry::Rectangle& r : w.rectangles) {
     if (geometry::distance(r, p) < margin) return false;
   }
-  return !w.map || geometry::distanceToBlocked(*w.map, p, margin) >= margin;
+  return !w.map || !geometry::blockedWithin(*w.map, p, margin);
 }
 
 /// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).

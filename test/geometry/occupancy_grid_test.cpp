@@ -77,6 +77,8 @@ TEST(OccupancyGrid, distance_to_blocked_equals_brute_force_over_every_square) {
         const double expected = std::min(reach, bruteDistance(grid, p, unknown_is_free));
         ASSERT_NEAR(distanceToBlocked(grid, p, reach, unknown_is_free), expected, 1e-12)
             << "p = (" << p.x << ", " << p.y << ")";
+        ASSERT_EQ(blockedWithin(grid, p, reach, unknown_is_free),
+                  distanceToBlocked(grid, p, reach, unknown_is_free) < reach);
         for (const double radius : {0.01, 0.05, 0.12}) {
           ASSERT_EQ(discMeetsBlocked(grid, p, radius, unknown_is_free),
                     bruteDistance(grid, p, unknown_is_free) <= radius);
