@@ -125,6 +125,33 @@ rr_source() {
   set -u
 }
 
+# rr_alive PID: the process runs (it exists and has not ended: a child not yet waited for stays a
+# zombie, which `kill -0` still finds).
+rr_alive() {
+  local stat
+  stat=$(cat "/proc/$1/stat" 2>/dev/null) || return 1
+  stat=${stat##*) }
+  [ "${stat%% *}" != Z ]
+}
+
+# rr_stop_child PID: stops a child that was sent a Ctrl-C (INT), waiting for it. A ROS node ends on
+# INT once ros::init has set roscpp's handler; before that (rosrun still looking for it, the node
+# loading) it ignores INT, as every command a script starts in the background does. Such a child
+# gets TERM after 3 s and KILL after 3 s more, so that stopping never hangs on a node that was
+# still starting (scripts/run did, for ever, when one node refused its world while another one
+# started).
+rr_stop_child() {
+  local pid=$1 signal tries
+  for signal in TERM KILL; do
+    for ((tries = 0; tries < 30; tries++)); do
+      rr_alive "$pid" || break 2
+      sleep 0.1
+    done
+    kill "-$signal" "$pid" 2>/dev/null || true
+  done
+  wait "$pid" 2>/dev/null || true
+}
+
 rr_master_online() { /usr/bin/python3 -c 'import rosgraph,sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null; }
 
 # rr_wait_nodes TIMEOUT NODE...: wait until every named node has registered with the master

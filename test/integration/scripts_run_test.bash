@@ -26,6 +26,32 @@ rc=0
 "$run" --no-such-option >/dev/null 2>&1 || rc=$?
 check "an unknown option exits 2 ($rc)" [ "$rc" = 2 ]
 
+# Stopping: a node that had a Ctrl-C but ignores it (one still starting, before ros::init sets
+# roscpp's handler: a script's background commands start with INT ignored) gets TERM after 3 s,
+# then KILL (rr_stop_child, which scripts/run's supervisors use). It hung scripts/run for ever
+# when one node refused its world while another was starting. One that ends on INT ends at once.
+# shellcheck source=../../scripts/lib/common.bash
+source "$root/scripts/lib/common.bash"
+stopped_within() {  # stopped_within SECONDS COMMAND...: COMMAND in the background, INT, stopped
+  local limit=$1 pid start
+  shift
+  "$@" &
+  pid=$!
+  started+=("$pid")
+  sleep 0.5
+  start=$SECONDS
+  kill -INT "$pid"
+  rr_stop_child "$pid"
+  ! rr_alive "$pid" && ((SECONDS - start <= limit))
+}
+check "a child ignoring INT and TERM is killed within 8 s" \
+  stopped_within 8 bash -c "trap '' INT TERM; exec sleep 60"
+check "a child ignoring INT is stopped by TERM within 5 s" \
+  stopped_within 5 bash -c "trap '' INT; exec sleep 60"
+check "a child that ends on INT is stopped within 1 s" \
+  stopped_within 1 /usr/bin/python3 -c \
+  "import signal, sys, time; signal.signal(signal.SIGINT, lambda *a: sys.exit(0)); time.sleep(60)"
+
 start_master
 printf 'robot:\n  radious: 0.2\n' >"$work/bad_world.yaml"
 rc=0
