@@ -152,6 +152,14 @@ rr_stop_child() {
   wait "$pid" 2>/dev/null || true
 }
 
+# rr_stop PID...: a Ctrl-C (INT) to each, then rr_stop_child for each: the way a script stops the
+# nodes and roscores it started in the background.
+rr_stop() {
+  local pid
+  for pid in "$@"; do kill -INT "$pid" 2>/dev/null || true; done
+  for pid in "$@"; do rr_stop_child "$pid"; done
+}
+
 rr_master_online() { /usr/bin/python3 -c 'import rosgraph,sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null; }
 
 # rr_wait_nodes TIMEOUT NODE...: wait until every named node has registered with the master

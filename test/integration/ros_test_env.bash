@@ -6,6 +6,8 @@ here=$(cd "$(dirname "${BASH_SOURCE[1]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 export PATH=/usr/bin:/bin:$PATH
 export RR_DEVEL=${RR_DEVEL:-$root/devel}
+# shellcheck source=../../scripts/lib/common.bash
+source "$root/scripts/lib/common.bash"  # rr_stop, rr_stop_child
 set +u
 # shellcheck disable=SC1091
 source "$RR_DEVEL/setup.bash"
@@ -24,14 +26,13 @@ start_master() {
   exit 1
 }
 stop_master() {
-  if [ "$master" -gt 0 ]; then kill -INT "$master" 2>/dev/null && wait "$master" 2>/dev/null; fi
+  if [ "$master" -gt 0 ]; then rr_stop "$master"; fi
   master=0
 }
 # Background processes a test started (append their pids): cleanup_env interrupts them first.
 started=()
 cleanup_env() {
-  local pid
-  for pid in "${started[@]}"; do kill -INT "$pid" 2>/dev/null && wait "$pid" 2>/dev/null; done
+  ((${#started[@]})) && rr_stop "${started[@]}"
   stop_master
   rm -rf "$work"
 }
