@@ -338,6 +338,17 @@ class FollowCoverage final : public bt::LeafNode {
           (!progress.touchingUp() || (gentle(k + 1) && (k == progress.leg || gentle(k))));
       return u_turn || roundIsland(k);
     };
+    // A row that goes on from where the row before it ended, without turning back (the loop
+    // along the walls: its segments are rows, wall_loop.h): driven on without stopping.
+    auto continues = [&](std::size_t k) {
+      auto row = [&](std::size_t m) {
+        return legs[m].kind == Leg::Kind::kRow && !legs[m].along_wall &&
+               stretch(legs[m].points, false).has_value();
+      };
+      if (k == 0 || k >= legs.size() || !row(k) || !row(k - 1)) return false;
+      const Point2 &from = legs[k - 1].points.back(), &to = legs[k].points.front();
+      return from.x == to.x && from.y == to.y && gentle(k);
+    };
     const bool cleaning = leg.kind == Leg::Kind::kRow || joinable(progress.leg);
     if (cleaning) {
       std::vector<std::size_t> starts;  // the points of path_ where the joined legs start
@@ -347,9 +358,16 @@ class FollowCoverage final : public bt::LeafNode {
       };
       std::size_t k = progress.leg;
       if (leg.kind == Leg::Kind::kTransit) join(++k);  // the row it leads to
-      for (; joinable(k + 1); k += 2) {
-        join(k + 1);
-        join(k + 2);
+      for (;;) {
+        if (continues(k + 1)) {
+          join(++k);
+        } else if (joinable(k + 1)) {
+          join(k + 1);
+          join(k + 2);
+          k += 2;
+        } else {
+          break;
+        }
       }
       if (!starts.empty()) {
         std::vector<double> passes;

@@ -113,6 +113,20 @@ struct LeafTest : ::testing::Test {
     return changes;
   }
 
+  /// Follows `given` (set as the blackboard's progress) until FollowCoverage ends or `seconds`
+  /// pass, calling watch() after every tick; the last status.
+  template <class Watch>
+  bt::Status followGiven(const CoverageProgress& given, int seconds, Watch watch) {
+    board->set<CoverageProgress>("coverage", given);
+    bt::Tree follow = build(kFollow);
+    bt::Status status = bt::Status::kRunning;
+    for (int i = 0; i < 60 * seconds && status == bt::Status::kRunning; ++i) {
+      status = step(follow);
+      watch();
+    }
+    return status;
+  }
+
   static constexpr const char* kPlan =
       R"(<PlanCoverage start="{pose}" coverage="{coverage}" error="{error}"/>)";
   static constexpr const char* kFollow =
@@ -241,6 +255,35 @@ TEST_F(LeafTest, the_u_turn_between_two_rows_is_driven_without_stopping) {
   EXPECT_EQ(changesOnTheMove(follow, legs, step_at), changes_expected);
 }
 
+TEST_F(LeafTest, rows_that_go_on_from_one_another_are_driven_without_stopping) {
+  // The loop along the walls (wall_loop.h) is a chain of rows, each starting where the one before
+  // it ended, round the room: the robot drives on through the corners where they meet.
+  const Polyline corners{{0.4, 0.4}, {1.0, 0.4}, {1.6, 0.4}, {1.6, 1.1},
+                         {1.0, 1.1}, {0.4, 1.1}, {0.4, 0.4}};
+  CoverageProgress loop;
+  loop.swept.assign(planner->freeSpace().size(), 1);  // nothing left for the touch-up
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+    loop.plan.legs.push_back({Leg::Kind::kRow, {corners[k], corners[k + 1]}});
+  }
+  sim.setPose({0.4, 0.4, 0.0});
+  board->set<robot::Pose2D>("pose", sim.pose());
+  // From the first row's middle to the last one's: never slower than the arcs round the corners
+  // (0.28 m/s); stopping at each row's end and turning there, it would stand still five times.
+  double slowest = 1;
+  EXPECT_EQ(followGiven(loop, 60,
+                        [&] {
+                          const std::size_t leg = progress().leg;
+                          const bool between =
+                              (leg > 0 || sim.pose().x > 0.7) && leg + 1 < loop.plan.legs.size();
+                          if (between && !progress().touchingUp()) {
+                            slowest = std::min(slowest, context.cmd.v);
+                          }
+                        }),
+            bt::Status::kSuccess);
+  EXPECT_GT(slowest, 0.2);
+  EXPECT_EQ(progress().bumps, 0);
+}
+
 struct PillarTest : LeafTest {
   PillarTest() : LeafTest(pillarRoom()) {}
 };
@@ -274,15 +317,9 @@ TEST_F(LeafTest, a_touch_up_stop_the_way_turns_back_at_is_reached_not_cut) {
                         {Leg::Kind::kRow, {stop, stop}},
                         {Leg::Kind::kTransit, {stop, start}},
                         {Leg::Kind::kRow, {start, start}}};
-  board->set<CoverageProgress>("coverage", touch_up);
-  bt::Tree follow = build(kFollow);
   double furthest = 0;
-  bt::Status status = bt::Status::kRunning;
-  for (int i = 0; i < 60 * 20 && status == bt::Status::kRunning; ++i) {
-    status = step(follow);
-    furthest = std::max(furthest, sim.pose().x);
-  }
-  EXPECT_EQ(status, bt::Status::kSuccess);
+  EXPECT_EQ(followGiven(touch_up, 20, [&] { furthest = std::max(furthest, sim.pose().x); }),
+            bt::Status::kSuccess);
   EXPECT_GT(furthest, stop.x - 0.015);  // within the follower's 1 cm of the stop
 }
 

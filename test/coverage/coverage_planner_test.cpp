@@ -531,6 +531,43 @@ TEST(CoveragePlanner, shared_turtlebot3_map_is_covered_safely) {
   EXPECT_GE(sweptByRows(*world, checked.plan, true) / checked.plan.reachable_area, 0.93);
 }
 
+/// The rows at the end of `plan` that each start where the one before ended and that end where
+/// the first of them started: the loop along the walls (wall_loop.h), or none.
+std::vector<Leg> loopAtTheEnd(const CoveragePlan& plan) {
+  auto same = [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; };
+  auto joined = [&](std::size_t k) {  // leg k is a row going on from row k - 1
+    return plan.legs[k - 1].kind == Leg::Kind::kRow && plan.legs[k].kind == Leg::Kind::kRow &&
+           same(plan.legs[k - 1].points.back(), plan.legs[k].points.front());
+  };
+  if (plan.legs.empty()) return {};
+  std::size_t first = plan.legs.size() - 1;
+  while (first > 0 && joined(first)) --first;
+  for (; first + 1 < plan.legs.size(); ++first) {  // (the last row may lead into the loop)
+    if (same(plan.legs[first].points.front(), plan.legs.back().points.back())) {
+      return {plan.legs.begin() + static_cast<std::ptrdiff_t>(first), plan.legs.end()};
+    }
+  }
+  return {};
+}
+
+TEST(CoveragePlanner, walls_at_a_slant_to_the_rows_are_followed_once_round_after_the_rows) {
+  const std::optional<World> world = sharedMap("turtlebot3_world");
+  if (!world) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";
+  const CoveragePlan plan = planChecked(*world, {0.5, 0.0});
+  const std::vector<Leg> loop = loopAtTheEnd(plan);
+  ASSERT_GE(loop.size(), 20u);  // round the hexagon's walls and their steps
+  // The wedges the rows leave against the slanted walls: more than half a square metre.
+  CoveragePlan rows = plan;
+  rows.legs.resize(plan.legs.size() - loop.size());
+  EXPECT_GT(sweptByRows(*world, plan) - sweptByRows(*world, rows), 0.5);
+}
+
+TEST(CoveragePlanner, walls_square_to_the_rows_are_not_followed_round) {
+  // The rows' ends sweep along them: a drive round the room would sweep little more.
+  EXPECT_TRUE(loopAtTheEnd(planChecked(emptyRoom())).empty());
+  EXPECT_TRUE(loopAtTheEnd(planChecked(furnishedRoom())).empty());
+}
+
 TEST(CoveragePlanner, shared_depot_map_is_covered_safely) {
   const std::optional<World> world = sharedMap("depot");
   if (!world) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";

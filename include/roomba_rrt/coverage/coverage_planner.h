@@ -37,7 +37,12 @@
 //      swapped while that shortens the jumps.
 //   7. Join consecutive rows with transits: the straight segment when it is free, else the
 //      shortest lattice path, shortcut (FreeSpace::shortestPath).
-//   8. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
+//   8. Once round the walls (wall_loop.h: the outer boundary of the floor the robot can drive
+//      to, at the planning radius from the walls), each of its segments a row, when it sweeps at
+//      least 0.035 m² per metre that the rows do not: walls at a slant to the rows, where every
+//      U-turn leaves a wedge of floor against the wall (the turtlebot3 arena's hexagon). Where
+//      the rows end square to the walls (most rooms), no loop.
+//   9. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
 //      own poses, markSwept()): the corners its U-turns cut, rows it gave up, and (edge cleaning)
 //      the band within the clearance of a wall, from rows along it at the edge
 //      clearance.

@@ -65,6 +65,10 @@ class FreeSpace {
   }
   /// Whether the lattice point is floor at all (not inside a wall or an obstacle).
   bool isFloor(int k) const { return floor_[k] != 0; }
+  /// Which piece of the kFree lattice (8-connected kFree points) the point belongs to: the same
+  /// number for two points exactly when a lattice path of kFree points joins them; 0 for a point
+  /// that is not kFree.
+  std::uint32_t piece(int k) const { return pieces_[k]; }
 
   /// Exact: true when no point of the segment a–b puts the disc of `radius` into a wall, an
   /// obstacle or a blocked map cell (by more than world::kPenetrationTolerance, as
@@ -119,5 +123,18 @@ class FreeSpace {
   std::vector<std::uint32_t> pieces_;
   std::vector<std::uint8_t> floor_;  ///< 1 where the point is not inside a wall or obstacle
 };
+
+/// The largest t in [0, max] with free(t), to max/2^16, given free(0): how far a row can be moved
+/// towards a wall the lattice stopped short of (by up to a step).
+template <class Free>
+double farthestFree(double max, Free free) {
+  if (free(max)) return max;
+  double lo = 0, hi = max;
+  for (int k = 0; k < 16; ++k) {
+    const double mid = (lo + hi) / 2;
+    (free(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
 
 }  // namespace roomba_rrt::coverage
