@@ -7,7 +7,7 @@ root=$(cd "$here/../.." && pwd)
 export PATH=/usr/bin:/bin:$PATH
 export RR_DEVEL=${RR_DEVEL:-$root/devel}
 # shellcheck source=../../scripts/lib/common.bash
-source "$root/scripts/lib/common.bash"  # rr_stop, rr_stop_child
+source "$(dirname "${BASH_SOURCE[0]}")/../../scripts/lib/common.bash"  # rr_stop, rr_stop_child
 set +u
 # shellcheck disable=SC1091
 source "$RR_DEVEL/setup.bash"
