@@ -1064,7 +1064,7 @@ CoveragePlan CoveragePlanner::plan(const Point2& start) const {
     loop.pop_back();
     std::rotate(loop.begin(),
                 std::min_element(loop.begin(), loop.end(),
-                                 [&](auto& a, auto& b) {
+                                 [&](const Point2& a, const Point2& b) {
                                    return geometry::distance(a, at) < geometry::distance(b, at);
                                  }),
                 loop.end());
@@ -1084,9 +1084,8 @@ CoveragePlan CoveragePlanner::plan(const Point2& start) const {
       }
       for (std::size_t k = 0; k + 1 < loop.size(); ++k) {
         plan.legs.push_back(Leg{Leg::Kind::kRow, {loop[k], loop[k + 1]}});
-        forPointsNear(space_, loop[k], loop[k + 1], space_.robotRadius(),
-                      [&](int p) { swept[p] = reachable[p]; });
       }
+      for (int p = 0; p < space_.size(); ++p) swept[p] = swept[p] || gained[p];
     }
   }
   plan.swept_area = area(space_, swept);
