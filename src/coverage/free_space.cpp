@@ -284,4 +284,15 @@ Polyline FreeSpace::rounded(const Polyline& path, double radius,
   return out;
 }
 
+Mask flood(const FreeSpace& space, int seed, FreeSpace::Class least) {
+  Mask region(space.size(), 0);
+  forComponent(
+      space, seed, [&](int n) { return space.at(n) >= least; }, region, [](int) {});
+  return region;
+}
+
+double area(const FreeSpace& space, const Mask& mask) {
+  return std::count(mask.begin(), mask.end(), 1) * space.resolution() * space.resolution();
+}
+
 }  // namespace roomba_rrt::coverage

@@ -3,8 +3,9 @@
 //
 // Algorithm: boustrophedon cellular decomposition (Choset & Pignon, 1997) of the free space of
 // the disc's CENTRE, computed on a lattice (FreeSpace):
-//   1. Sample the configuration space on a lattice and keep the part connected to the start
-//      (the rest is floor the robot cannot reach: reported, never planned).
+//   1. Sample the configuration space on a lattice (free_space.h) and keep the part connected
+//      to the start (the rest is floor the robot cannot reach: reported, never planned;
+//      reachable_floor.h measures what the disc reaches).
 //   2. Islands: an obstacle standing free in the floor, whose grown extent (where the disc lacks
 //      the clearance) touches nothing else and is at most kMaxIsland (1 m) across (a pillar, a
 //      bin, a small round table), does not split the free space into cells: steps 3 to 6 plan
@@ -13,28 +14,28 @@
 //      robot drives it with both pieces, see FollowCoverage). A boustrophedon split at every
 //      pillar of the turtlebot3 arena made 17 cells and 39 transits; passing round them, one
 //      cell: 79 % → 93 % of the floor by 1.5× the ideal time.
-//   3. Sweep a line up the lattice, row by row. In each lattice row the free points form
-//      intervals. An interval that overlaps exactly one interval of the row below, which
-//      overlaps only it, continues that interval's cell; any other (the sweep line meets an
-//      obstacle, or two parts of the free space join, or one splits) opens a new cell. Each
-//      cell is thus a stack of intervals, one per lattice row, without holes: it can be swept
-//      by horizontal back-and-forth rows without leaving it.
-//   4. Cover each cell with rows along x: along its lowest and highest lattice rows (so the disc
-//      brushes what bounds the cell below and above), evenly at any height between them at most a
-//      swath apart, and a short row along each step where the cell widens or narrows (a
-//      sideboard's top). The lattice stops up to a step short of the walls: the outer rows and
-//      every row's ends are moved out as far as they stay free (exactly).
-//   5. Prune: neighbouring cells overlap where they meet, and a thin cell between two nearby
-//      events (the tops of two pieces of furniture) is mostly swept by its neighbours. Each
-//      row is shortened to the stretch that sweeps the bunches of floor no other row sweeps
-//      and that are worth a row (not the slivers beyond a neighbouring row's ends), or dropped
-//      when none is.
-//   6. Order the cells: greedily, from where the robot is, the cell whose first row (of four
-//      ways to sweep it: up or down, starting left or right) is nearest; then move single cells
-//      elsewhere in the order, or sweep them another way, while the jumps between cells shrink.
-//      Within a cell each row's direction is chosen by dynamic programming (the rows alternate,
-//      but a short step row must not flip all the rows after it), and neighbouring rows are
-//      swapped while that shortens the jumps.
+//   3. Decompose (boustrophedon.h): sweep a line up the lattice, row by row. In each lattice row
+//      the free points form intervals. An interval that overlaps exactly one interval of the
+//      row below, which overlaps only it, continues that interval's cell; any other (the sweep
+//      line meets an obstacle, or two parts of the free space join, or one splits) opens a new
+//      cell. Each cell is thus a stack of intervals, one per lattice row, without holes: it can
+//      be swept by horizontal back-and-forth rows without leaving it.
+//   4. Cover each cell with rows along x (boustrophedon.h): along its lowest and highest lattice
+//      rows (so the disc brushes what bounds the cell below and above), evenly at any height
+//      between them at most a swath apart, and a short row along each step where the cell widens
+//      or narrows (a sideboard's top). The lattice stops up to a step short of the walls: the
+//      outer rows and every row's ends are moved out as far as they stay free (exactly).
+//   5. Prune (boustrophedon.h): neighbouring cells overlap where they meet, and a thin cell
+//      between two nearby events (the tops of two pieces of furniture) is mostly swept by its
+//      neighbours. Each row is shortened to the stretch that sweeps the bunches of floor no other
+//      row sweeps and that are worth a row (not the slivers beyond a neighbouring row's ends), or
+//      dropped when none is.
+//   6. Order the cells (cell_order.h): greedily, from where the robot is, the cell whose first
+//      row (of four ways to sweep it: up or down, starting left or right) is nearest; then move
+//      single cells elsewhere in the order, or sweep them another way, while the jumps between
+//      cells shrink. Within a cell each row's direction is chosen by dynamic programming (the
+//      rows alternate, but a short step row must not flip all the rows after it), and
+//      neighbouring rows are swapped while that shortens the jumps.
 //   7. Join consecutive rows with transits: the straight segment when it is free, else the
 //      shortest lattice path, shortcut (FreeSpace::shortestPath).
 //   8. Once round the walls (wall_loop.h: the outer boundary of the floor the robot can drive
@@ -42,10 +43,10 @@
 //      least 0.035 m² per metre that the rows do not: walls at a slant to the rows, where every
 //      U-turn leaves a wedge of floor against the wall (the turtlebot3 arena's hexagon). Where
 //      the rows end square to the walls (most rooms), no loop.
-//   9. After the rows, touchUp() plans a tour over the floor the robot did not sweep (from its
-//      own poses, markSwept()): the corners its U-turns cut, rows it gave up, and (edge cleaning)
-//      the band within the clearance of a wall, from rows along it at the edge
-//      clearance.
+//   9. After the rows, touchUp() (touch_up.cpp) plans a tour over the floor the robot did not
+//      sweep (from its own poses, markSwept()): the corners its U-turns cut, rows it gave up,
+//      and (edge cleaning) the band within the clearance of a wall, from rows along it at the
+//      edge clearance.
 // Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
 // where the free space's connectivity changes, not at every vertex), so there are few long rows
 // and few transits; it needs no polygonal model (the lattice handles circles, rectangles and

@@ -22,6 +22,8 @@
 // inside), and for a map every blocked cell's square that can come within the radius of it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -136,5 +138,68 @@ double farthestFree(double max, Free free) {
   }
   return lo;
 }
+
+/// One flag per lattice point of a FreeSpace.
+using Mask = std::vector<std::uint8_t>;
+
+/// A leg shorter than this (m) is not worth driving: a resumed row's last millimetres, a
+/// transit between points that coincide.
+constexpr double kMinLegLength = 1e-6;
+
+/// Visits the lattice points connected to `seed` (8-neighbours) for which inside(point) holds,
+/// and `seed` itself, by depth-first search; `taken` marks them (and, on entry, the points not
+/// to visit again).
+template <class Inside, class Visit>
+void forComponent(const FreeSpace& space, int seed, Inside inside, Mask& taken, Visit visit) {
+  std::vector<int> frontier{seed};
+  taken[seed] = 1;
+  visit(seed);
+  while (!frontier.empty()) {
+    const int k = frontier.back();
+    frontier.pop_back();
+    const int i = space.column(k), j = space.row(k);
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        if (!space.inside(i + di, j + dj)) continue;
+        const int n = space.index(i + di, j + dj);
+        if (!taken[n] && inside(n)) {
+          taken[n] = 1;
+          visit(n);
+          frontier.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+/// The lattice points of class ≥ `least` connected to `seed` (8-neighbours).
+Mask flood(const FreeSpace& space, int seed, FreeSpace::Class least);
+
+/// Calls visit(k) for each lattice point k closer than `radius` to the segment a–b (a disc when
+/// a = b).
+template <class Visit>
+void forPointsNear(const FreeSpace& space, const Point2& a, const Point2& b, double radius,
+                   Visit visit) {
+  const double h = space.resolution();
+  const Point2 o = space.point(0, 0);
+  const int i0 = std::max(0, static_cast<int>(std::floor((std::min(a.x, b.x) - radius - o.x) / h)));
+  const int i1 = std::min(space.width() - 1,
+                          static_cast<int>(std::ceil((std::max(a.x, b.x) + radius - o.x) / h)));
+  const int j0 = std::max(0, static_cast<int>(std::floor((std::min(a.y, b.y) - radius - o.y) / h)));
+  const int j1 = std::min(space.height() - 1,
+                          static_cast<int>(std::ceil((std::max(a.y, b.y) + radius - o.y) / h)));
+  const geometry::Segment s{a, b};
+  for (int j = j0; j <= j1; ++j) {
+    for (int i = i0; i <= i1; ++i) {
+      const Point2 p = space.point(i, j);
+      if (geometry::squaredDistance(geometry::closestPoint(s, p), p) < radius * radius) {
+        visit(space.index(i, j));
+      }
+    }
+  }
+}
+
+/// The floor `mask` marks (m²): h² per lattice point.
+double area(const FreeSpace& space, const Mask& mask);
 
 }  // namespace roomba_rrt::coverage
