@@ -1,5 +1,6 @@
 #include "roomba_rrt/coverage/reachable_floor.h"
 
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -33,13 +34,26 @@ Mask floorReachedFrom(const FreeSpace& space, const Mask& region) {
   // lies closer than r), trying the direction of `towards` first, then turning either way.
   const Point2 origin = space.point(0, 0);
   const double reach = r * (1 - 1e-9);
+  // The directions, once: `towards` is a lattice neighbour, so each first direction (a multiple
+  // of 45°) is one of them, and so is every turn from it. (A sine and a cosine per centre tried
+  // were a tenth of the furnished room's plan.)
   const double turn_step = 2 * std::acos(-1.0) / kReachDirections;  // 2π / directions
+  static const std::array<Point2, kReachDirections> kDirections = [] {
+    std::array<Point2, kReachDirections> out;
+    for (int d = 0; d < kReachDirections; ++d) {
+      const double angle = d * 2 * std::acos(-1.0) / kReachDirections;
+      out[d] = {std::cos(angle), std::sin(angle)};
+    }
+    return out;
+  }();
   auto reachedFrom = [&](const Point2& x, const Point2& towards) {
-    const double first = std::atan2(towards.y - x.y, towards.x - x.x);
+    const int first =
+        static_cast<int>(std::lround(std::atan2(towards.y - x.y, towards.x - x.x) / turn_step));
     for (int d = 0; d < kReachDirections; ++d) {
       const int turn = (d + 1) / 2 * (d % 2 ? 1 : -1);  // 0, +1, −1, +2, −2, …
-      const double angle = first + turn * turn_step;
-      const Point2 c{x.x + reach * std::cos(angle), x.y + reach * std::sin(angle)};
+      const Point2 u =
+          kDirections[((first + turn) % kReachDirections + kReachDirections) % kReachDirections];
+      const Point2 c{x.x + reach * u.x, x.y + reach * u.y};
       const int i = static_cast<int>(std::lround((c.x - origin.x) / h));
       const int j = static_cast<int>(std::lround((c.y - origin.y) / h));
       if (space.inside(i, j) && near[space.index(i, j)] && !world::penetrates(world, r, c.x, c.y)) {
