@@ -3,7 +3,8 @@
 
 add_library(roomba_coverage_planning src/coverage/free_space.cpp
   src/coverage/reachable_floor.cpp src/coverage/boustrophedon.cpp src/coverage/cell_order.cpp
-  src/coverage/wall_loop.cpp src/coverage/coverage_planner.cpp src/coverage/touch_up.cpp)
+  src/coverage/wall_loop.cpp src/coverage/coverage_planner.cpp src/coverage/touch_up.cpp
+  src/coverage/tour.cpp)
 target_include_directories(roomba_coverage_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_coverage_planning PUBLIC roomba_world)
 
@@ -13,6 +14,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(wall_loop_test test/coverage/wall_loop_test.cpp LINK roomba_coverage_planning)
   roomba_rrt_gtest(boustrophedon_test test/coverage/boustrophedon_test.cpp
     LINK roomba_coverage_planning)
+  roomba_rrt_gtest(tour_test test/coverage/tour_test.cpp LINK roomba_coverage_planning)
 endif()
 
 # coverage_bench: time to plan the furnished room's coverage (target ≤ 10 ms), and a whole map.

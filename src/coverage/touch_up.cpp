@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "roomba_rrt/coverage/tour.h"
+
 namespace roomba_rrt::coverage {
 
 CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
@@ -134,31 +136,21 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
     forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
     visits.push_back(Leg{Leg::Kind::kRow, {centre, centre}});
   }
-  // Nearest first (either end), each a transit and its row. (Improving the tour by 2-opt on the
-  // straight jumps did not make the touch-up quicker: its cost is the turns as much as the jumps.)
+  // In the order of touchUpTour() (tour.h: nearest first, then 2-opt), each a transit and its
+  // row.
+  std::vector<Polyline> paths;
+  paths.reserve(visits.size());
+  for (const Leg& visit : visits) paths.push_back(visit.points);
   Point2 here = at;
-  std::vector<bool> visited(visits.size(), false);
-  for (std::size_t n = 0; n < visits.size(); ++n) {
-    std::size_t next = visits.size();
-    double next_distance = 0;
-    for (std::size_t v = 0; v < visits.size(); ++v) {
-      if (visited[v]) continue;
-      const double d = std::min(geometry::distance(here, visits[v].points.front()),
-                                geometry::distance(here, visits[v].points.back()));
-      if (next == visits.size() || d < next_distance) next = v, next_distance = d;
-    }
-    visited[next] = true;
-    Leg row = visits[next];
-    Polyline& points = row.points;
-    if (geometry::distance(here, points.back()) < geometry::distance(here, points.front())) {
-      std::reverse(points.begin(), points.end());
-    }
-    const std::optional<Polyline> path = transit(here, points.front());
+  for (const TourStop& stop : touchUpTour(paths, at)) {
+    Leg row = std::move(visits[stop.visit]);
+    if (stop.reversed) std::reverse(row.points.begin(), row.points.end());
+    const std::optional<Polyline> path = transit(here, row.points.front());
     if (!path) continue;
     if (geometry::pathLength(*path) > kMinLegLength) {
       plan.legs.push_back(Leg{Leg::Kind::kTransit, *path});
     }
-    here = points.back();
+    here = row.points.back();
     plan.legs.push_back(std::move(row));
   }
   return plan;

@@ -170,12 +170,13 @@ class CoveragePlanner {
 
   /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
   /// `swept` does not mark (each spot of at least `min_spot_area`: the corners a U-turn cut, a
-  /// skipped row, the floor beside a bump), nearest first. What lies along a wall closer than any
-  /// free lattice point reaches is swept by a row beside it: at the clearance when one reaches
-  /// it, else (the floor within the clearance of the wall) along the wall at the edge clearance,
-  /// ramping in from the clearance and out to it again (Leg::along_wall). Each other spot is
-  /// visited by a transit to the free lattice point whose disc covers most of it, then a row of
-  /// no length there (the robot passes or stops there, in any heading).
+  /// skipped row, the floor beside a bump), in the order of touchUpTour() (tour.h: nearest first,
+  /// then 2-opt). What lies along a wall closer than any free lattice point reaches is swept by a
+  /// row beside it: at the clearance when one reaches it, else (the floor within the clearance
+  /// of the wall) along the wall at the edge clearance, ramping in from the clearance and out to
+  /// it again (Leg::along_wall). Each other spot is visited by a transit to the free lattice
+  /// point whose disc covers most of it, then a row of no length there (the robot passes or
+  /// stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
   CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
                        double min_spot_area = kMinSpotArea) const;
