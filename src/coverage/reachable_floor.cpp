@@ -36,7 +36,7 @@ Mask floorReachedFrom(const FreeSpace& space, const Mask& region) {
   const double reach = r * (1 - 1e-9);
   // The directions, once: `towards` is a lattice neighbour, so each first direction (a multiple
   // of 45°) is one of them, and so is every turn from it. (A sine and a cosine per centre tried
-  // were a tenth of the furnished room's plan.)
+  // were 7 % of the furnished room's plan.)
   const double turn_step = 2 * std::acos(-1.0) / kReachDirections;  // 2π / directions
   static const std::array<Point2, kReachDirections> kDirections = [] {
     std::array<Point2, kReachDirections> out;

@@ -6,10 +6,10 @@ namespace roomba_rrt::coverage {
 namespace {
 
 /// Where the robot enters and leaves `stop`.
-Point2 entry(const std::vector<Polyline>& visits, const TourStop& stop) {
+Point2 entryOf(const std::vector<Polyline>& visits, const TourStop& stop) {
   return stop.reversed ? visits[stop.visit].back() : visits[stop.visit].front();
 }
-Point2 exit(const std::vector<Polyline>& visits, const TourStop& stop) {
+Point2 exitOf(const std::vector<Polyline>& visits, const TourStop& stop) {
   return stop.reversed ? visits[stop.visit].front() : visits[stop.visit].back();
 }
 
@@ -32,7 +32,7 @@ std::vector<TourStop> touchUpTour(const std::vector<Polyline>& visits, const Poi
     const bool reversed = geometry::distance(here, visits[next].back()) <
                           geometry::distance(here, visits[next].front());
     tour.push_back({next, reversed});
-    here = exit(visits, tour.back());
+    here = exitOf(visits, tour.back());
   }
 
   // 2-opt: driving stops i..j in the opposite order, each the other way, changes only the jump
@@ -42,14 +42,14 @@ std::vector<TourStop> touchUpTour(const std::vector<Polyline>& visits, const Poi
     improved = false;
     for (std::size_t i = 0; i < tour.size() && checks < kMaxTourChecks; ++i) {
       checks += static_cast<double>(tour.size() - i - 1);
+      const Point2 before = i == 0 ? start : exitOf(visits, tour[i - 1]);  // i..j move, not i − 1
       for (std::size_t j = i + 1; j < tour.size(); ++j) {
-        const Point2 before = i == 0 ? start : exit(visits, tour[i - 1]);
-        double now = geometry::distance(before, entry(visits, tour[i]));
-        double then = geometry::distance(before, exit(visits, tour[j]));
+        double now = geometry::distance(before, entryOf(visits, tour[i]));
+        double then = geometry::distance(before, exitOf(visits, tour[j]));
         if (j + 1 < tour.size()) {
-          const Point2 after = entry(visits, tour[j + 1]);
-          now += geometry::distance(exit(visits, tour[j]), after);
-          then += geometry::distance(entry(visits, tour[i]), after);
+          const Point2 after = entryOf(visits, tour[j + 1]);
+          now += geometry::distance(exitOf(visits, tour[j]), after);
+          then += geometry::distance(entryOf(visits, tour[i]), after);
         }
         if (then < now - kMinLegLength) {
           std::reverse(tour.begin() + static_cast<std::ptrdiff_t>(i),
@@ -68,8 +68,8 @@ double tourJumps(const std::vector<Polyline>& visits, const std::vector<TourStop
   double total = 0;
   Point2 here = start;
   for (const TourStop& stop : tour) {
-    total += geometry::distance(here, entry(visits, stop));
-    here = exit(visits, stop);
+    total += geometry::distance(here, entryOf(visits, stop));
+    here = exitOf(visits, stop);
   }
   return total;
 }
