@@ -29,13 +29,14 @@ endif()
 
 # The cleaning tree's leaves (config/roomba_coverage_tree.xml), run by navigation::NavBt beside the
 # navigation leaves: they plan with the coverage planner and drive with the navigation's follower.
-add_library(roomba_coverage_core src/coverage/coverage_leaves.cpp)
+add_library(roomba_coverage_core src/coverage/coverage_leaves.cpp src/coverage/joined_legs.cpp)
 target_include_directories(roomba_coverage_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_coverage_core PUBLIC roomba_coverage_planning roomba_nav_core)
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(coverage_leaves_test test/coverage/coverage_leaves_test.cpp
     LINK roomba_coverage_core)
+  roomba_rrt_gtest(joined_legs_test test/coverage/joined_legs_test.cpp LINK roomba_coverage_core)
 endif()
 
 # coverage_planner: the coverage planner as a ROS service (~plan_coverage, roomba_rrt/PlanCoverage)

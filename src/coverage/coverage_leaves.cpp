@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <utility>
 
+#include "roomba_rrt/coverage/joined_legs.h"
 #include "roomba_rrt/navigation/guarded_follower.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -38,17 +38,6 @@ const CoverageProgress* findProgress(const bt::Blackboard& board, const std::str
 }
 
 namespace {
-
-/// The way the first (`last`: the last) stretch of `points` that has a length goes; nullopt when
-/// none has (a touch-up stop: a row of no length).
-std::optional<Point2> stretch(const Polyline& points, bool last) {
-  for (std::size_t s = 0; s + 1 < points.size(); ++s) {
-    const std::size_t i = last ? points.size() - 2 - s : s;
-    const Point2 d{points[i + 1].x - points[i].x, points[i + 1].y - points[i].y};
-    if (d.x != 0 || d.y != 0) return d;
-  }
-  return std::nullopt;
-}
 
 /// The planner of the leaves: given, or built from the world when the first leaf that plans is.
 class LazyPlanner {
@@ -87,28 +76,9 @@ struct Driving {
   static constexpr double kTurnGain = 8.0;          ///< 1/s: turning in place towards a leg
   static constexpr double kEndTolerance = 0.01;     ///< m: rows end 1 cm from their end (the walls)
   static constexpr double kHeadingTolerance = 0.1;  ///< rad (legs end without a heading)
-  /// A transit this short (m; the step between two rows) is driven with the rows before and
-  /// after it as one path: the robot takes the U-turn's two corners as arcs without stopping. The
-  /// arcs cut the corners at the rows' ends, which the touch-up sweeps afterwards. By 1.5× the
-  /// ideal time (stopping at each row's end → pure pursuit round the corners, lookahead 0.2 m):
-  /// furnished room 94.9 → 97.9 %, dining room 84.6 → 95.0 %, office 87.6 → 96.1 %, apartment
-  /// 93.1 → 97.2 %.
-  static constexpr double kJoinedTransit = 0.5;
-  /// The joined path's corners are rounded (FreeSpace::rounded) with this radius (m), which the
-  /// robot drives at kTurnSpeed (0.28 m/s), and followed with this lookahead (m): it turns where
-  /// the arc does, closer to the wall than pure pursuit cutting a sharp corner for a farther
-  /// carrot. With 0.2 m and sharp corners → this: willow_full crop just under 99 % for good →
-  /// 99 % at 552 s, turtlebot3 arena 93.6 / 95.8 → 94.2 / 96.9 % by 1.5× / 2×. Tighter turns sweep
-  /// more and take longer: radii and lookaheads of 0.08–0.12 m left the dining room 90.7–95.1 % by
-  /// 1.5×, and a 0.1 m lookahead without arcs all but stopped at each corner (87.7 %).
-  static constexpr double kTurnRadius = 0.14;
+  /// The lookahead (m) on a path of joined legs (joined_legs.h): about the radius of its arcs
+  /// (JoinRules::kTurnRadius), so that the robot turns where the arc does.
   static constexpr double kJoinedLookahead = 0.13;
-  static constexpr double kMaxJoinedTurn = 2.4;  ///< rad: a U-turn's corners are π/2
-  /// The way round an island (m: half round a 1 m one, CoveragePlanner's largest) between two
-  /// pieces of a row is driven with them too, at the cleaning speed: it sweeps the floor round
-  /// the island. turtlebot3 arena by 1.5× the ideal time: 92.2 % stopping before and after
-  /// each, 93.2 % joined.
-  static constexpr double kJoinedDetour = 2.0;
   /// A leg with less progress than kMinProgress (m) in kStuckTime (s) fails: turning to a leg
   /// and braking at its end take about 2 s.
   static constexpr double kMinProgress = 0.01;
@@ -287,94 +257,19 @@ class FollowCoverage final : public bt::LeafNode {
     return Status::kSuccess;
   }
 
-  /// Starts the follower on the current leg: transits at transit_speed, rows at the cleaning
-  /// speed, and with a row every short transit after it and the row after that (a U-turn: the
-  /// rows of a cell, Driving::kJoinedTransit) as one path, so that the robot turns from row to row
-  /// without stopping; the leg advances as the robot's progress passes the end of each. A leg ends
-  /// where it ends, in any heading: the next one turns towards its start and sets off once nearly
-  /// facing it (the follower's rotate_threshold), quicker than stopping on the next leg's heading
-  /// first (dining room: 96.6 % instead of 88.8 % by 2× the ideal time).
+  /// Starts the follower on the current leg, with the legs driven with it as one path
+  /// (joinLegs: a U-turn, the way round an island, the loop along the walls): transits at
+  /// transit_speed, rows at the cleaning speed; the leg advances as the robot's progress passes
+  /// the end of each. A leg ends where it ends, in any heading: the next one turns towards its
+  /// start and sets off once nearly facing it (the follower's rotate_threshold), quicker than
+  /// stopping on the next leg's heading first (dining room: 96.6 % instead of 88.8 % by 2× the
+  /// ideal time).
   void startLeg(const CoverageProgress& progress) {
-    const std::vector<Leg>& legs = progress.plan.legs;
-    const Leg& leg = legs[progress.leg];
-    path_ = leg.points;
-    ends_.clear();
-    // A short transit, then a row; in the touch-up, whose legs go from spot to spot, only with no
-    // turn sharper than Driving::kMaxJoinedTurn where the transit meets the legs (a path that
-    // reverses has the carrot jump behind the robot, which then turns on the spot for ever).
-    // gentle(k): the turn where leg k starts, from the last stretch driven before it to the first
-    // one from there on; a touch-up stop (a row of no length) does not hide the turn through it.
-    auto gentle = [&](std::size_t k) {
-      std::optional<Point2> in, out;
-      for (std::size_t m = k; m-- > 0 && !in;) in = stretch(legs[m].points, true);
-      for (std::size_t m = k; m < legs.size() && !out; ++m) out = stretch(legs[m].points, false);
-      if (!in || !out) return true;
-      const double norms = std::hypot(in->x, in->y) * std::hypot(out->x, out->y);
-      return (in->x * out->x + in->y * out->y) / norms >= std::cos(Driving::kMaxJoinedTurn);
-    };
-    // The way round an island from one piece of a row to the next (which goes on along the same
-    // line, the same way: CoveragePlanner cuts rows at islands).
-    auto roundIsland = [&](std::size_t k) {
-      if (k == 0 || legs[k - 1].kind != Leg::Kind::kRow ||
-          geometry::pathLength(legs[k].points) > Driving::kJoinedDetour) {
-        return false;
-      }
-      const Point2 a = legs[k - 1].points.front(), b = legs[k - 1].points.back();
-      const Point2 c = legs[k + 1].points.front(), d = legs[k + 1].points.back();
-      const double ux = b.x - a.x, uy = b.y - a.y, length = std::hypot(ux, uy);
-      auto onLine = [&](const Point2& p) {
-        return std::fabs(ux * (p.y - a.y) - uy * (p.x - a.x)) <= 1e-9 * length;
-      };
-      return length > 0 && onLine(c) && onLine(d) && ux * (c.x - b.x) + uy * (c.y - b.y) > 0 &&
-             ux * (d.x - c.x) + uy * (d.y - c.y) > 0 && gentle(k) && gentle(k + 1);
-    };
-    auto joinable = [&](std::size_t k) {
-      if (k + 1 >= legs.size() || legs[k].kind != Leg::Kind::kTransit ||
-          legs[k + 1].kind != Leg::Kind::kRow || legs[k + 1].along_wall) {
-        return false;
-      }
-      const bool u_turn =
-          geometry::pathLength(legs[k].points) <= Driving::kJoinedTransit &&
-          (!progress.touchingUp() || (gentle(k + 1) && (k == progress.leg || gentle(k))));
-      return u_turn || roundIsland(k);
-    };
-    // A row that goes on from where the row before it ended, without turning back (the loop
-    // along the walls: its segments are rows, wall_loop.h): driven on without stopping.
-    auto continues = [&](std::size_t k) {
-      auto row = [&](std::size_t m) {
-        return legs[m].kind == Leg::Kind::kRow && !legs[m].along_wall &&
-               stretch(legs[m].points, false).has_value();
-      };
-      if (k == 0 || k >= legs.size() || !row(k) || !row(k - 1)) return false;
-      const Point2 &from = legs[k - 1].points.back(), &to = legs[k].points.front();
-      return from.x == to.x && from.y == to.y && gentle(k);
-    };
-    const bool cleaning = leg.kind == Leg::Kind::kRow || joinable(progress.leg);
-    if (cleaning) {
-      std::vector<std::size_t> starts;  // the points of path_ where the joined legs start
-      const auto join = [&](std::size_t m) {
-        starts.push_back(path_.size() - 1);
-        path_.insert(path_.end(), legs[m].points.begin() + 1, legs[m].points.end());
-      };
-      std::size_t k = progress.leg;
-      if (leg.kind == Leg::Kind::kTransit) join(++k);  // the row it leads to
-      for (;;) {
-        if (continues(k + 1)) {
-          join(++k);
-        } else if (joinable(k + 1)) {
-          join(k + 1);
-          join(k + 2);
-          k += 2;
-        } else {
-          break;
-        }
-      }
-      if (!starts.empty()) {
-        std::vector<double> passes;
-        path_ = planner_->get()->freeSpace().rounded(path_, Driving::kTurnRadius, &passes);
-        for (const std::size_t point : starts) ends_.push_back(passes[point]);
-      }
-    }
+    const Leg& leg = progress.plan.legs[progress.leg];
+    JoinedLegs joined = joinLegs(progress.plan.legs, progress.leg, progress.touchingUp(),
+                                 planner_->get()->freeSpace());
+    path_ = std::move(joined.path);
+    ends_ = std::move(joined.ends);
     robot::Pose2D goal{0, 0, std::nan("")};  // no heading to end with
     if (!path_.empty()) {
       goal.x = path_.back().x;
@@ -382,7 +277,7 @@ class FollowCoverage final : public bt::LeafNode {
     }
     navigation::FollowerParams params = Driving::apply(
         context_.follower_version != 0 ? context_.follower : built_with_);  // retuned: NavBt
-    params.max_linear_speed = cleaning ? rowSpeed() : transit_speed_;
+    params.max_linear_speed = joined.cleaning ? rowSpeed() : transit_speed_;
     if (!ends_.empty()) params.lookahead = Driving::kJoinedLookahead;
     follower_.setParams(params);
     follower_.setGuard(leg.along_wall ? edge_guard_ : guard_);

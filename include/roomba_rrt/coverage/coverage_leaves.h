@@ -61,13 +61,13 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   drives the legs from `coverage.leg` on with the navigation's follower (GuardedFollower:
 ///   FollowPath's follower and motion guard): rows at the lab's forward_speed (RoombaParams,
 ///   0.5 m/s), transits at `transit_speed` (within the follower's limits; a U-turn, row, short
-///   step and next row, is driven as one path, at the row's speed, its corners rounded into arcs:
-///   FreeSpace::rounded; so is a row that goes on from where the row before it ended, as the
-///   segments of the loop along the walls do), turning in place towards each leg's start where
-///   the previous one ended. A finished leg advances `coverage.leg` (a finished row also clears
-///   `tries`). It marks the floor under the robot in `coverage.swept` on every tick; once the rows
-///   are driven it goes back for the spots they missed (CoveragePlanner::touchUp: the corners its
-///   U-turns cut, skipped rows, the band along a wall within the clearance), in two passes
+///   step and next row, is driven as one path, at the row's speed, its corners rounded into arcs,
+///   and so are the way round an island and the segments of the loop along the walls:
+///   joined_legs.h), turning in place towards each leg's start where the previous one ended. A
+///   finished leg advances `coverage.leg` (a finished row also clears `tries`). It marks the floor
+///   under the robot in `coverage.swept` on every tick; once the rows are driven it goes back for
+///   the spots they missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows,
+///   the band along a wall within the clearance), in two passes
 ///   (CoverageProgress::kTouchUpSpotAreas). A row along a wall (Leg::along_wall: closer than the
 ///   clearance) is driven on its own, never joined to the legs around it, with a guard of its own
 ///   (half the edge clearance, three ticks ahead). RUNNING with the command; SUCCESS when every
