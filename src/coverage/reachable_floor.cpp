@@ -7,6 +7,23 @@
 
 namespace roomba_rrt::coverage {
 
+namespace {
+
+/// The angle between neighbouring directions of kDirections (rad).
+const double kTurnStep = 2 * std::acos(-1.0) / kReachDirections;
+
+/// The kReachDirections directions, kTurnStep apart from +x, computed once. (A sine and a cosine
+/// per centre tried were 7 % of the furnished room's plan.)
+const std::array<Point2, kReachDirections> kDirections = [] {
+  std::array<Point2, kReachDirections> out;
+  for (int d = 0; d < kReachDirections; ++d) {
+    out[d] = {std::cos(d * kTurnStep), std::sin(d * kTurnStep)};
+  }
+  return out;
+}();
+
+}  // namespace
+
 Mask floorReachedFrom(const FreeSpace& space, const Mask& region) {
   const double h = space.resolution();
   const double r = space.robotRadius();
@@ -34,21 +51,11 @@ Mask floorReachedFrom(const FreeSpace& space, const Mask& region) {
   // lies closer than r), trying the direction of `towards` first, then turning either way.
   const Point2 origin = space.point(0, 0);
   const double reach = r * (1 - 1e-9);
-  // The directions, once: `towards` is a lattice neighbour, so each first direction (a multiple
-  // of 45°) is one of them, and so is every turn from it. (A sine and a cosine per centre tried
-  // were 7 % of the furnished room's plan.)
-  const double turn_step = 2 * std::acos(-1.0) / kReachDirections;  // 2π / directions
-  static const std::array<Point2, kReachDirections> kDirections = [] {
-    std::array<Point2, kReachDirections> out;
-    for (int d = 0; d < kReachDirections; ++d) {
-      const double angle = d * 2 * std::acos(-1.0) / kReachDirections;
-      out[d] = {std::cos(angle), std::sin(angle)};
-    }
-    return out;
-  }();
+  // `towards` is a lattice neighbour: each first direction (a multiple of 45°) is one of
+  // kDirections, and so is every turn from it.
   auto reachedFrom = [&](const Point2& x, const Point2& towards) {
     const int first =
-        static_cast<int>(std::lround(std::atan2(towards.y - x.y, towards.x - x.x) / turn_step));
+        static_cast<int>(std::lround(std::atan2(towards.y - x.y, towards.x - x.x) / kTurnStep));
     for (int d = 0; d < kReachDirections; ++d) {
       const int turn = (d + 1) / 2 * (d % 2 ? 1 : -1);  // 0, +1, −1, +2, −2, …
       const Point2 u =
