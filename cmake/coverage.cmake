@@ -4,7 +4,7 @@
 add_library(roomba_coverage_planning src/coverage/free_space.cpp
   src/coverage/reachable_floor.cpp src/coverage/boustrophedon.cpp src/coverage/cell_order.cpp
   src/coverage/wall_loop.cpp src/coverage/coverage_planner.cpp src/coverage/touch_up.cpp
-  src/coverage/tour.cpp)
+  src/coverage/tour.cpp src/coverage/joined_legs.cpp)
 target_include_directories(roomba_coverage_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_coverage_planning PUBLIC roomba_world)
 
@@ -15,6 +15,8 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(boustrophedon_test test/coverage/boustrophedon_test.cpp
     LINK roomba_coverage_planning)
   roomba_rrt_gtest(tour_test test/coverage/tour_test.cpp LINK roomba_coverage_planning)
+  roomba_rrt_gtest(joined_legs_test test/coverage/joined_legs_test.cpp
+    LINK roomba_coverage_planning)
 endif()
 
 # coverage_bench: time to plan the furnished room's coverage (target ≤ 10 ms), and a whole map.
@@ -29,14 +31,13 @@ endif()
 
 # The cleaning tree's leaves (config/roomba_coverage_tree.xml), run by navigation::NavBt beside the
 # navigation leaves: they plan with the coverage planner and drive with the navigation's follower.
-add_library(roomba_coverage_core src/coverage/coverage_leaves.cpp src/coverage/joined_legs.cpp)
+add_library(roomba_coverage_core src/coverage/coverage_leaves.cpp)
 target_include_directories(roomba_coverage_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_coverage_core PUBLIC roomba_coverage_planning roomba_nav_core)
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(coverage_leaves_test test/coverage/coverage_leaves_test.cpp
     LINK roomba_coverage_core)
-  roomba_rrt_gtest(joined_legs_test test/coverage/joined_legs_test.cpp LINK roomba_coverage_core)
 endif()
 
 # coverage_planner: the coverage planner as a ROS service (~plan_coverage, roomba_rrt/PlanCoverage)
