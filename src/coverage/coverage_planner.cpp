@@ -137,6 +137,9 @@ const CoverageOptions& validated(const world::World& world, const CoverageOption
 CoverageOptions cleaningOptions(const world::World& world) {
   CoverageOptions options;
   options.resolution = world.coverage_cell_size;
+  // The strips of neighbouring rows overlap: the Roomba's 0.335 m for its 0.17 m radius.
+  options.swath =
+      std::max(2 * world.robot_radius - CoverageOptions::kMinOverlap, 2 * options.resolution);
   return options;
 }
 

@@ -54,10 +54,7 @@ coverage::CoverageOptions requestedOptions(const PlanCoverage::Request& r,
   }
   o.clearance = r.clearance != 0 ? r.clearance : d.clearance;
   if (r.clearance != 0) util::requireInRange("clearance", r.clearance, 0.0, w.robot_radius, "m");
-  // The Roomba's 0.335 m for its 0.17 m radius: the strips of neighbouring rows overlap.
-  o.swath = r.swath != 0 ? r.swath
-                         : std::max(2 * w.robot_radius - coverage::CoverageOptions::kMinOverlap,
-                                    2 * o.resolution);
+  if (r.swath != 0) o.swath = r.swath;  // else the robot's diameter less the overlap
   return o;
 }
 

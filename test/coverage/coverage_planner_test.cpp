@@ -689,6 +689,24 @@ TEST(CoveragePlanner, refuses_a_swath_wider_than_the_robot) {
   EXPECT_THROW(CoveragePlanner(emptyRoom(), options), std::invalid_argument);
 }
 
+TEST(CoveragePlanner, cleaning_options_space_the_rows_by_the_robots_own_diameter) {
+  // The Roomba's 0.335 m rows are wider than a 0.2 m robot (refused: roomba_bt would not start)
+  // and needlessly close for a 0.5 m one (half as many rows again to drive).
+  for (const double radius : {0.10, 0.17, 0.25}) {
+    World world = furnishedRoom();
+    world.robot_radius = radius;
+    const CoverageOptions options = cleaningOptions(world);
+    EXPECT_NEAR(options.swath, 2 * radius - CoverageOptions::kMinOverlap, 1e-12) << radius;
+    const CoveragePlan plan =
+        planChecked(world, {world.initial_pose.x, world.initial_pose.y}, options);
+    EXPECT_GE(rowCoverage(world, plan), 0.9) << radius;
+    const double ideal = plan.reachable_area / (2 * radius);  // m of rows, each floor point once
+    std::printf("radius %.2f m: rows %.1f m for an ideal %.1f m\n", radius, plan.rowLength(),
+                ideal);
+    EXPECT_LT(plan.rowLength(), 1.1 * ideal) << radius;
+  }
+}
+
 /// The floor a robot marks driving `legs` (CoveragePlanner::markSwept every 5 mm), and its share
 /// of the reachable floor.
 struct Driven {

@@ -109,8 +109,9 @@ struct CoverageOptions {
 
 /// The options for cleaning `world`: the defaults on a lattice of the world's coverage cell, so
 /// the planner samples the floor on the grid the simulator measures the cleaned floor on (a
-/// large map's coarser cell: world::defaultCoverageCellSize). roomba_bt and roomba_coverage use
-/// it, so they plan alike.
+/// large map's coarser cell: world::defaultCoverageCellSize), with rows the world's robot's
+/// diameter apart less the overlap (kMinOverlap; at least two cells): 0.335 m for the Roomba.
+/// roomba_bt, roomba_coverage and coverage_planner use it, so they plan alike for any robot.
 CoverageOptions cleaningOptions(const world::World& world);
 
 /// One leg of a plan.
