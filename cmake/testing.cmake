@@ -3,7 +3,8 @@
 # A gtest unit test (catkin_add_gtest, run by ctest and scripts/test) linked with gtest_main and
 # LINK, built after DEPENDS (executables it runs), with ROOMBA_RRT_CONFIG_DIR and
 # ROOMBA_RRT_TEST_DIR pointing into the source tree, and ROOMBA_RRT_SHARED_MAPS at the real maps
-# beside the repository (../shared/maps; tests skip them when they are not there). ROS: the test also uses ROS headers, roscpp
+# beside the repository (../shared/maps; test/common/shared_maps.h: a test skips, saying which map
+# it wanted, when one is not there, and fails in CI). ROS: the test also uses ROS headers, roscpp
 # and this package's generated messages (still no master: those tests are rostests).
 function(roomba_rrt_gtest target)
   cmake_parse_arguments(ARG "ROS" "" "LINK;DEPENDS" ${ARGN})

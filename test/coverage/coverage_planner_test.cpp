@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/shared_maps.h"
 #include "roomba_rrt/world/world.h"
 
 using roomba_rrt::coverage::cleaningOptions;
@@ -152,9 +153,10 @@ Checked planAndReport(const char* name, const World& world, const Point2& start)
   return out;
 }
 
-/// A map of ../shared/maps as a world, or nullopt when the maps are not there.
+/// A map of ../shared/maps as a world (ROOMBA_RRT_REQUIRE_SHARED_MAP first), or nullopt when it
+/// is not there.
 std::optional<World> sharedMap(const std::string& name) {
-  const std::string path = ROOMBA_RRT_SHARED_MAPS "/" + name + ".yaml";
+  const std::string path = ::roomba_rrt::test::sharedMapPath(name);
   if (!std::filesystem::exists(path)) return std::nullopt;
   return roomba_rrt::world::readWorldFile(path);
 }
@@ -520,8 +522,9 @@ TEST(CoveragePlanner, apartment_map_is_covered_safely) {
 }
 
 TEST(CoveragePlanner, shared_turtlebot3_map_is_covered_safely) {
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
   const std::optional<World> world = sharedMap("turtlebot3_world");
-  if (!world) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";
+  ASSERT_TRUE(world);
   const Point2 start{-2.0, -0.5};  // where TurtleBot3's simulation puts the robot
   ASSERT_FALSE(roomba_rrt::world::penetrates(*world, start.x, start.y));
   const Checked checked = planAndReport("turtlebot3_world", *world, start);
@@ -551,8 +554,9 @@ std::vector<Leg> loopAtTheEnd(const CoveragePlan& plan) {
 }
 
 TEST(CoveragePlanner, walls_at_a_slant_to_the_rows_are_followed_once_round_after_the_rows) {
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
   const std::optional<World> world = sharedMap("turtlebot3_world");
-  if (!world) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";
+  ASSERT_TRUE(world);
   const CoveragePlan plan = planChecked(*world, {0.5, 0.0});
   const std::vector<Leg> loop = loopAtTheEnd(plan);
   ASSERT_GE(loop.size(), 20u);  // round the hexagon's walls and their steps
@@ -569,8 +573,9 @@ TEST(CoveragePlanner, walls_square_to_the_rows_are_not_followed_round) {
 }
 
 TEST(CoveragePlanner, shared_depot_map_is_covered_safely) {
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("depot");
   const std::optional<World> world = sharedMap("depot");
-  if (!world) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";
+  ASSERT_TRUE(world);
   const Point2 start{15.1, 7.7};  // the middle of the hall
   ASSERT_FALSE(roomba_rrt::world::penetrates(*world, start.x, start.y));
   EXPECT_GE(planAndReport("depot", *world, start).coverage, 0.90);
@@ -601,8 +606,9 @@ TEST(CoveragePlanner, rows_of_cells_that_meet_in_a_cluttered_office_do_not_run_s
   // row along where they meet, a few centimetres apart; one of them sweeps only slivers of its
   // own (beyond the other's ends) and is shortened to the bunches of floor worth a row, or
   // dropped. Kept whole, 7.3 m of rows ran within 5 cm of another here.
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("willow_full");
   const std::optional<World> map = sharedMap("willow_full");
-  if (!map) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not there";
+  ASSERT_TRUE(map);
   const World office = roomba_rrt::world::cropped(*map, {-4.41, -11.77, 4.35, -5.01}, "crop");
   const CoveragePlan plan = planChecked(office, {-3.38, -9.79}, cleaningOptions(office));
   EXPECT_GT(plan.cells, 40);

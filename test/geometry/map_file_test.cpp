@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/shared_maps.h"
 #include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::geometry {
@@ -188,10 +189,9 @@ TEST_F(MapFileTest, is_map_yaml_tells_a_map_from_a_world_file) {
   EXPECT_FALSE(isMapYaml((dir_ / "missing.yaml").string()));
 }
 
-/// The real maps of ../shared/maps (not part of the package: skipped when absent).
+/// The real maps of ../shared/maps (not part of the package: skipped when absent, see
+/// test/common/shared_maps.h).
 TEST(SharedMaps, every_map_reads_with_its_published_size_and_has_free_floor) {
-  const fs::path maps = ROOMBA_RRT_SHARED_MAPS;
-  if (!fs::is_directory(maps)) GTEST_SKIP() << maps << " is not here";
   const struct {
     const char* name;
     int width, height;
@@ -202,7 +202,8 @@ TEST(SharedMaps, every_map_reads_with_its_published_size_and_has_free_floor) {
                {"nav2_bench_100by100_15", 2000, 2000, 0.05},
                {"willow_full", 540, 587, 0.1}};
   for (const auto& m : kMaps) {
-    const MapFile map = loadMap((maps / (std::string(m.name) + ".yaml")).string());
+    ROOMBA_RRT_REQUIRE_SHARED_MAP(m.name);
+    const MapFile map = loadMap(::roomba_rrt::test::sharedMapPath(m.name));
     EXPECT_EQ(map.grid.width, m.width) << m.name;
     EXPECT_EQ(map.grid.height, m.height) << m.name;
     EXPECT_DOUBLE_EQ(map.grid.resolution, m.resolution) << m.name;

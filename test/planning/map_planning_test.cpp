@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/shared_maps.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/scenarios.h"
@@ -65,19 +66,13 @@ struct MapCase {
   int plans;
 };
 
-/// The shared maps' folder, or "" when it is not beside the repository (the test then skips).
-std::string sharedMaps() {
-  const std::string maps = ROOMBA_RRT_SHARED_MAPS;
-  return std::ifstream(maps + "/README.md") ? maps : "";
-}
-
 TEST(MapPlanning, every_edge_of_1000_seeded_plans_keeps_the_radius_from_every_blocked_square) {
-  if (sharedMaps().empty()) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not here";
   int total = 0, found = 0;
   for (const MapCase& m :
        {MapCase{"turtlebot3_world", 250}, MapCase{"depot", 200}, MapCase{"warehouse", 200},
         MapCase{"willow_full", 200}, MapCase{"nav2_bench_100by100_15", 150}}) {
-    const std::string file = std::string(ROOMBA_RRT_SHARED_MAPS) + "/" + m.name + ".yaml";
+    ROOMBA_RRT_REQUIRE_SHARED_MAP(m.name);
+    const std::string file = ::roomba_rrt::test::sharedMapPath(m.name);
     auto grid = std::make_shared<OccupancyGrid>(geometry::loadMap(file).grid);
     Problem problem = mapProblem(grid);
     problem.robot_radius = kRoomba;
@@ -127,9 +122,9 @@ TEST(MapPlanning, every_edge_of_1000_seeded_plans_keeps_the_radius_from_every_bl
 }
 
 TEST(MapPlanning, a_start_or_goal_in_a_wall_is_refused_naming_it) {
-  if (sharedMaps().empty()) GTEST_SKIP() << ROOMBA_RRT_SHARED_MAPS << " is not here";
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
   auto grid = std::make_shared<OccupancyGrid>(
-      geometry::loadMap(std::string(ROOMBA_RRT_SHARED_MAPS) + "/turtlebot3_world.yaml").grid);
+      geometry::loadMap(::roomba_rrt::test::sharedMapPath("turtlebot3_world")).grid);
   Problem problem = mapProblem(grid);
   problem.robot_radius = kRoomba;
   problem.start = {-2.0, -0.5};   // free floor of the arena

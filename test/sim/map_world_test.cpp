@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/shared_maps.h"
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -197,8 +198,8 @@ TEST_F(MapWorld, coverage_counts_the_free_floor_of_the_map) {
 }
 
 TEST(SharedMapWorld, random_driving_in_a_real_map_never_ends_a_step_inside_a_wall) {
-  const fs::path map = fs::path(ROOMBA_RRT_SHARED_MAPS) / "turtlebot3_world.yaml";
-  if (!fs::exists(map)) GTEST_SKIP() << map << " is not here";
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
+  const fs::path map = ::roomba_rrt::test::sharedMapPath("turtlebot3_world");
   // TurtleBot3's start pose in its world.
   const fs::path world_file = fs::path(testing::TempDir()) / "turtlebot3_world_test.yaml";
   std::ofstream(world_file) << "map: " << map.string()

@@ -12,6 +12,7 @@
 #include "../../src/tools/coverage_arguments.h"
 #include "../../src/tools/coverage_statistics.h"
 #include "../../src/tools/tool_arguments.h"
+#include "../common/shared_maps.h"
 #include "roomba_rrt/util/statistics.h"
 
 namespace roomba_rrt::tools {
@@ -190,8 +191,8 @@ TEST(ToolArguments, crop_keeps_a_region_of_the_world_whose_edges_become_walls) {
 
 TEST(ToolArguments, a_crop_of_a_large_map_gets_the_regions_coverage_cell) {
   // A 100 m x 100 m map gets 5 cm cells (the grid's limit); a few rooms of it, the usual 2.5 cm.
-  const std::string map = ROOMBA_RRT_SHARED_MAPS "/nav2_bench_100by100_15.yaml";
-  if (!std::filesystem::exists(map)) GTEST_SKIP() << "no " << map;
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("nav2_bench_100by100_15");
+  const std::string map = ::roomba_rrt::test::sharedMapPath("nav2_bench_100by100_15");
   EXPECT_EQ(loadToolWorld(map, "14,14").coverage_cell_size, 0.05);
   EXPECT_EQ(loadToolWorld(map, "14,14", "10,10,17.5,17.5").coverage_cell_size, 0.025);
 }

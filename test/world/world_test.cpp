@@ -1,4 +1,5 @@
 #include "roomba_rrt/world/world.h"
+#include "../common/shared_maps.h"
 
 #include <gtest/gtest.h>
 
@@ -133,8 +134,8 @@ TEST(World, a_world_too_large_for_the_default_coverage_cell_gets_a_coarser_one) 
                      "coverage_cell_size: 0.025")
                 .find("coverage_cell_size: (0.025) is too small"),
             std::string::npos);
-  const std::string map = ROOMBA_RRT_SHARED_MAPS "/nav2_bench_100by100_15.yaml";
-  if (!std::filesystem::exists(map)) GTEST_SKIP() << "no " << map;
+  ROOMBA_RRT_REQUIRE_SHARED_MAP("nav2_bench_100by100_15");
+  const std::string map = ::roomba_rrt::test::sharedMapPath("nav2_bench_100by100_15");
   EXPECT_EQ(roomba_rrt::world::readWorldFile(map).coverage_cell_size, 0.05);
 }
 
