@@ -13,9 +13,9 @@
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/behavior/roomba_tree.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/planning/scenarios.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 #include "roomba_switch.h"
 
 namespace {
@@ -113,7 +113,7 @@ class UntimedPlanner final : public roomba_rrt::navigation::PathPlanner {
 /// time); each new goal is set and planned outside the timing.
 void BM_NavTreeFollowing(benchmark::State& state) {
   using namespace roomba_rrt::navigation;
-  roomba_rrt::planning::Problem room = roomba_rrt::planning::roomProblem(
+  roomba_rrt::planning::Problem room = roomba_rrt::world_planning::roomProblem(
       roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
   room.clearance = kDefaultClearance;
   NavLeafConfig config = inProcessNavConfig(room);
@@ -145,7 +145,7 @@ void BM_NavTreeFollowing(benchmark::State& state) {
   long following = 0;
   for (auto _ : state) {
     const robot::Velocity cmd = nav.tick({}, pose);
-    pose = sim::integrateArc(pose, cmd, 1.0 / 60.0);
+    pose = robot::integrateArc(pose, cmd, 1.0 / 60.0);
     following += nav.stateName() == "FollowPath";
     if (nav.outcome() != GoalOutcome::kActive || std::abs(pose.x - ends[leg].x) < 0.6) {
       state.PauseTiming();

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "ompl_lab.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace {
 
@@ -216,7 +217,7 @@ RoomRow roomStarRow(const std::vector<rp::Problem>& queries, double budget, cons
 }
 
 std::vector<RoomRow> runRoom(const Config& cfg) {
-  const rp::Problem room = rp::loadRoom(cfg.world_file);
+  const rp::Problem room = roomba_rrt::world_planning::loadRoom(cfg.world_file);
   const std::vector<rp::Problem> queries = roomQueries(room);
   std::vector<RoomRow> rows;
   rows.push_back(roomTimeRow<og::RRT>("rrt", queries, rp::Algorithm::kRrt, cfg));

@@ -9,10 +9,10 @@
 #include <random>
 #include <vector>
 
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/simulator.h"
-#include "roomba_rrt/sim/unicycle.h"
 
 namespace {
 

@@ -38,7 +38,7 @@ if(OMPL_FOUND AND TARGET rrt_planning)
     add_executable(${target} EXCLUDE_FROM_ALL ${ARGN})
     target_include_directories(${target} PRIVATE include)
     target_include_directories(${target} SYSTEM PRIVATE ${RR_OMPL_INCLUDE_DIRS})
-    target_link_libraries(${target} PRIVATE rrt_planning ${RR_OMPL_LIBRARIES})
+    target_link_libraries(${target} PRIVATE roomba_world_planning ${RR_OMPL_LIBRARIES})
     add_dependencies(benchmarks ${target})
   endfunction()
 

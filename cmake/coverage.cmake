@@ -37,7 +37,7 @@ target_link_libraries(roomba_coverage_core PUBLIC roomba_coverage_planning roomb
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(coverage_leaves_test test/coverage/coverage_leaves_test.cpp
-    LINK roomba_coverage_core)
+    LINK roomba_coverage_core roomba_sim_core)
 endif()
 
 # coverage_planner: the coverage planner as a ROS service (~plan_coverage, roomba_rrt/PlanCoverage)

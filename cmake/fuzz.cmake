@@ -59,7 +59,8 @@ if(ROOMBA_RRT_SANITIZE)
   # The planning unit tests on that library (scripts/fuzz --unit).
   if(TARGET planning_core_test)
     get_target_property(RR_PLANNING_TESTS planning_core_test SOURCES)
-    add_executable(planning_core_test_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS})
+    add_executable(planning_core_test_sanitized EXCLUDE_FROM_ALL ${RR_PLANNING_TESTS}
+      src/world_planning/room_problem.cpp)
     target_link_libraries(planning_core_test_sanitized rrt_planning_sanitized gtest gtest_main)
     get_target_property(RR_PLANNING_TEST_DEFINITIONS planning_core_test COMPILE_DEFINITIONS)
     target_compile_definitions(planning_core_test_sanitized PRIVATE

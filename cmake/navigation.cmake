@@ -14,8 +14,8 @@ add_library(roomba_nav_core
   src/navigation/nav_bt.cpp
 )
 target_include_directories(roomba_nav_core PUBLIC include)
-target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core rrt_planning roomba_sim_core
-  Threads::Threads)
+target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core roomba_world_planning
+  roomba_robot Threads::Threads)
 
 # roomba_bt: the lab's tree, or a navigation tree behind move_base's interface (the move_base
 # action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client). The conversions are
@@ -34,7 +34,7 @@ target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
 # (src/tools/nav_eval_run.*) is a library of its own, for the tests that drive navigation with it.
 add_library(roomba_nav_eval_run STATIC src/tools/nav_eval_run.cpp)
 target_include_directories(roomba_nav_eval_run PUBLIC ${PROJECT_SOURCE_DIR}/src/tools)
-target_link_libraries(roomba_nav_eval_run PUBLIC roomba_nav_core)
+target_link_libraries(roomba_nav_eval_run PUBLIC roomba_nav_core roomba_sim_core)
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
 target_link_libraries(roomba_nav_eval roomba_nav_eval_run roomba_tools)
 
@@ -42,7 +42,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(nav_core_test test/navigation/path_follower_test.cpp
     test/navigation/nav_bt_test.cpp test/navigation/nav_leaves_test.cpp
     test/navigation/pose_predictor_test.cpp test/navigation/guarded_follower_test.cpp
-    LINK roomba_nav_core)
+    LINK roomba_nav_core roomba_sim_core)
   # roomba_nav_eval's run loop: goals drawn, outcomes counted, reproducible.
   roomba_rrt_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp LINK roomba_nav_eval_run)
   # 12 000 goals in three rooms (about 30 s): its own test, so the quick ones stay quick.
@@ -64,6 +64,12 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/clean.test DEPENDENCIES nav_rostest)
   if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
     add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
+  elseif("$ENV{CI}" STREQUAL "true")
+    message(FATAL_ERROR "nav_map_willow.test needs ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml"
+      " (ros-simulation/stage_ros, world/willow-full.pgm; doc/testing.md#the-shared-maps)")
+  else()
+    message(STATUS "nav_map_willow.test is not run: it needs ../shared/maps/willow_full.yaml"
+      " (ros-simulation/stage_ros, world/willow-full.pgm; doc/testing.md#the-shared-maps)")
   endif()
   if(TARGET nav_rostest)
     target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
@@ -73,5 +79,6 @@ if(CATKIN_ENABLE_TESTING)
   endif()
 
   # Its own executable: it replaces operator new to count allocations.
-  roomba_rrt_gtest(nav_allocation_test test/navigation/nav_allocation_test.cpp LINK roomba_nav_core)
+  roomba_rrt_gtest(nav_allocation_test test/navigation/nav_allocation_test.cpp
+    LINK roomba_nav_core roomba_sim_core)
 endif()

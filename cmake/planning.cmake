@@ -11,6 +11,7 @@ add_library(rrt_planning
   src/planning/planner.cpp
   src/planning/plan_result.cpp
   src/planning/planner_options.cpp
+  src/planning/problem.cpp
   src/planning/rrt.cpp
   src/planning/rrt_connect.cpp
   src/planning/rrt_star.cpp
@@ -20,8 +21,12 @@ add_library(rrt_planning
   src/planning/validate.cpp
 )
 target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
-target_link_libraries(rrt_planning PUBLIC roomba_geometry roomba_sim_core yaml-cpp)
-# The room scenario reads the simulator's world files (world::loadWorld), ROS-free too.
+target_link_libraries(rrt_planning PUBLIC roomba_geometry yaml-cpp)
+
+# A world (its room, furniture, map and robot) as a planning problem: above both the world and
+# the planning library, which knows neither files nor robots.
+add_library(roomba_world_planning src/world_planning/room_problem.cpp)
+target_link_libraries(roomba_world_planning PUBLIC rrt_planning roomba_world)
 
 find_package(Threads REQUIRED)
 
@@ -38,7 +43,7 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/matlab_random_test.cpp test/planning/nearest_neighbors_test.cpp
     test/planning/rrt_test.cpp test/planning/algorithms_test.cpp test/planning/validate_test.cpp
     test/planning/robustness_test.cpp test/planning/room_test.cpp
-    test/planning/map_planning_test.cpp LINK rrt_planning)
+    test/planning/map_planning_test.cpp LINK roomba_world_planning)
 endif()
 
 # planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.
@@ -56,7 +61,7 @@ endif()
 add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
   src/nodes/make_plan_ros.cpp
   src/nodes/plan_slots.cpp)
-target_link_libraries(rrt_planner rrt_planning roomba_node_common)
+target_link_libraries(rrt_planner roomba_world_planning roomba_node_common)
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 add_executable(plan_path_bench bench/plan_path_bench.cpp)

@@ -1,7 +1,6 @@
 # The simulated Roomba: ROS-free core library, the roomba_sim node, tests and benchmarks.
 
 add_library(roomba_sim_core
-  src/sim/unicycle.cpp
   src/sim/contact.cpp
   src/sim/coverage_grid.cpp
   src/sim/simulator.cpp
@@ -9,7 +8,7 @@ add_library(roomba_sim_core
   src/sim/multi_robot_simulator.cpp
 )
 target_include_directories(roomba_sim_core PUBLIC include)
-target_link_libraries(roomba_sim_core PUBLIC roomba_world)
+target_link_libraries(roomba_sim_core PUBLIC roomba_robot roomba_world)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
@@ -24,7 +23,7 @@ target_include_directories(sim_rtf_probe PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_rtf_probe ${catkin_LIBRARIES})
 
 if(CATKIN_ENABLE_TESTING)
-  roomba_rrt_gtest(sim_core_test test/sim/unicycle_test.cpp test/sim/contact_test.cpp
+  roomba_rrt_gtest(sim_core_test test/sim/contact_test.cpp
     test/sim/coverage_grid_test.cpp test/sim/simulator_test.cpp
     test/sim/multi_robot_simulator_test.cpp test/sim/robot_grid_test.cpp test/sim/map_world_test.cpp
     LINK roomba_sim_core)

@@ -5,7 +5,7 @@
 
 add_library(roomba_tools STATIC src/tools/tool_arguments.cpp src/tools/drawing.cpp)
 target_include_directories(roomba_tools PUBLIC ${PROJECT_SOURCE_DIR}/src/tools)
-target_link_libraries(roomba_tools PUBLIC rrt_planning roomba_sim_core PkgConfig::CAIRO)
+target_link_libraries(roomba_tools PUBLIC roomba_world_planning roomba_sim_core PkgConfig::CAIRO)
 target_compile_definitions(roomba_tools PUBLIC ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
 
 if(CATKIN_ENABLE_TESTING)

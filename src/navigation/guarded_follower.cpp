@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 
 namespace roomba_rrt::navigation {
 
@@ -84,7 +84,7 @@ std::string GuardedFollower::failure(FollowStatus status, const std::string& wha
 robot::Velocity GuardedFollower::closely(const robot::Pose2D& pose, bool& held) const {
   const FollowerParams& p = follower_.params();
   const planning::Point2 near = follower_.pointAhead(kCloseLookahead);
-  const double error = sim::wrapAngle(std::atan2(near.y - pose.y, near.x - pose.x) - pose.theta);
+  const double error = robot::wrapAngle(std::atan2(near.y - pose.y, near.x - pose.x) - pose.theta);
   const double w = std::clamp(p.heading_gain * error, -p.max_angular_speed, p.max_angular_speed);
   if (std::fabs(error) > kAligned) return {0, w};  // turning to the path: not held
   const robot::Velocity creep = guard_->filter(pose, {kCreepSpeed, w});

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
@@ -167,7 +167,8 @@ FollowStatus PathFollower::step(const robot::Pose2D& pose, robot::Velocity& cmd)
   }
 
   if (at_goal_) {
-    const double error = std::isfinite(goal_.theta) ? sim::wrapAngle(goal_.theta - pose.theta) : 0;
+    const double error =
+        std::isfinite(goal_.theta) ? robot::wrapAngle(goal_.theta - pose.theta) : 0;
     const double stopped_v = p.max_linear_accel * p.dt() + 1e-12;
     const double stopped_w = p.max_angular_accel * p.dt() + 1e-12;
     if (std::fabs(error) <= p.yaw_tolerance && std::fabs(last_.v) <= stopped_v &&

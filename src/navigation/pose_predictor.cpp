@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
@@ -16,7 +16,7 @@ PosePredictor::PosePredictor(double latency, double rate) {
 
 robot::Pose2D PosePredictor::predict(const robot::Pose2D& seen) const {
   robot::Pose2D pose = seen;
-  for (const robot::Velocity& cmd : sent_) pose = sim::integrateArc(pose, cmd, dt_);
+  for (const robot::Velocity& cmd : sent_) pose = robot::integrateArc(pose, cmd, dt_);
   return pose;
 }
 

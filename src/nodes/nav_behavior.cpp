@@ -18,8 +18,8 @@
 #include "reconfigure.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/util/require.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::nav_node {
 namespace {
@@ -332,7 +332,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   const std::string service =
       node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");
 
-  planning::Problem world = planning::roomProblem(s.world);
+  planning::Problem world = world_planning::roomProblem(s.world);
   world.clearance = s.clearance;
   planning::PlannerOptions options = navigation::navPlannerOptions(world);
   options.seed = seed;

@@ -33,6 +33,7 @@
 #include <roomba_rrt/RrtPlannerConfig.h>
 #include <roomba_rrt/planning/planner.h>
 #include <roomba_rrt/util/require.h>
+#include <roomba_rrt/world_planning/room_problem.h>
 
 #include "make_plan_ros.h"
 #include "map_messages.h"
@@ -128,7 +129,7 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
     // Throws with the reason. Its initial pose may be a wall (a map's (0, 0)): requests give
     // their own start.
     const world::World world = world::loadWorld(world_file, world::PoseSource::kElsewhere);
-    d.room = planning::roomProblem(world);
+    d.room = world_planning::roomProblem(world);
     if (world.map) {
       // Scenario "map": the map alone. Its unknown cells are walls in the room too, so the room's
       // inflated map serves unless ~allow_unknown asks for another.

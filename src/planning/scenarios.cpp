@@ -7,7 +7,6 @@
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/text_file.h"
 #include "roomba_rrt/util/yaml_reader.h"
-#include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -86,29 +85,6 @@ std::map<std::string, Problem> loadScenarios(const std::string& path) {
     throw util::InvalidInput("", std::string("malformed scenarios: ") + e.what(), path);
   }
   return scenarios;
-}
-
-Problem roomProblem(const world::World& world) {
-  Problem p = world.map ? mapProblem(world.map) : Problem{};
-  p.bounds = {world.origin.x, world.origin.x + world.width, world.origin.y,
-              world.origin.y + world.height};
-  p.obstacles = world.circles;
-  p.rectangles = world.rectangles;
-  p.robot_radius = world.robot_radius;
-  p.start = p.goal = {world.initial_pose.x, world.initial_pose.y};
-  return p;
-}
-
-Problem mapProblem(std::shared_ptr<const geometry::OccupancyGrid> map, bool allow_unknown) {
-  Problem p;
-  const geometry::Rectangle e = map->extent();
-  p.bounds = {e.min_x, e.max_x, e.min_y, e.max_y};
-  p.map = std::make_shared<const geometry::ClearanceMap>(std::move(map), allow_unknown);
-  return p;
-}
-
-Problem loadRoom(const std::string& world_file) {
-  return roomProblem(world::loadWorld(world_file));
 }
 
 }  // namespace roomba_rrt::planning

@@ -1,9 +1,9 @@
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace roomba_rrt::sim {
+namespace roomba_rrt::robot {
 
 namespace {
 double clampFinite(double value, double limit) {
@@ -12,7 +12,7 @@ double clampFinite(double value, double limit) {
 }
 }  // namespace
 
-robot::Velocity clampCommand(const robot::Velocity& cmd, double max_linear, double max_angular) {
+Velocity clampCommand(const Velocity& cmd, double max_linear, double max_angular) {
   return {clampFinite(cmd.v, max_linear), clampFinite(cmd.w, max_angular)};
 }
 
@@ -22,7 +22,7 @@ double wrapAngle(double theta) {
   return wrapped <= -M_PI ? wrapped + 2.0 * M_PI : wrapped;
 }
 
-robot::Pose2D integrateArc(const robot::Pose2D& pose, const robot::Velocity& cmd, double dt) {
+Pose2D integrateArc(const Pose2D& pose, const Velocity& cmd, double dt) {
   const double half_turn = 0.5 * cmd.w * dt;
   const double mid_heading = pose.theta + half_turn;
   // Chord length of the arc: 2v/w·sin(wΔt/2), or vΔt on a straight line.
@@ -32,4 +32,4 @@ robot::Pose2D integrateArc(const robot::Pose2D& pose, const robot::Velocity& cmd
           wrapAngle(pose.theta + cmd.w * dt)};
 }
 
-}  // namespace roomba_rrt::sim
+}  // namespace roomba_rrt::robot

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/contact.h"
-#include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::sim {
@@ -116,9 +116,10 @@ void MultiRobotSimulator::move(const std::vector<robot::Velocity>& commands) {
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     Robot& robot = robots_[i];
     const world::RobotSpec& spec = specs_[i];
-    robot.last_command = clampCommand(commands[i], spec.max_linear_speed, spec.max_angular_speed);
+    robot.last_command =
+        robot::clampCommand(commands[i], spec.max_linear_speed, spec.max_angular_speed);
     const robot::Pose2D previous = robot.pose;
-    robot.pose = integrateArc(robot.pose, robot.last_command, world_.step);
+    robot.pose = robot::integrateArc(robot.pose, robot.last_command, world_.step);
     // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
     if (!place(i, robot.pose.x, robot.pose.y)) {
       robot.pose.x = previous.x;
@@ -153,7 +154,7 @@ void MultiRobotSimulator::setPose(std::size_t robot, const robot::Pose2D& pose) 
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
     throw util::InvalidInput("pose", "must be finite");
   }
-  robot::Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  robot::Pose2D placed{pose.x, pose.y, robot::wrapAngle(pose.theta)};
   if (!place(robot, placed.x, placed.y)) {
     throw util::InvalidInput("pose", "the robot does not fit at the requested pose");
   }

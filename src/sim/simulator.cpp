@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/contact.h"
-#include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::sim {
@@ -27,9 +27,9 @@ robot::BumperState Simulator::senseContact() {
 }
 
 void Simulator::move(const robot::Velocity& cmd) {
-  last_command_ = clampCommand(cmd, world_.max_linear_speed, world_.max_angular_speed);
+  last_command_ = robot::clampCommand(cmd, world_.max_linear_speed, world_.max_angular_speed);
   const robot::Pose2D previous = pose_;
-  pose_ = integrateArc(pose_, last_command_, world_.step);
+  pose_ = robot::integrateArc(pose_, last_command_, world_.step);
   // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
   if (!resolvePenetration(world_, pose_.x, pose_.y)) {
     pose_.x = previous.x;
@@ -51,7 +51,7 @@ void Simulator::setPose(const robot::Pose2D& pose) {
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
     throw util::InvalidInput("pose", "must be finite");
   }
-  robot::Pose2D placed{pose.x, pose.y, wrapAngle(pose.theta)};
+  robot::Pose2D placed{pose.x, pose.y, robot::wrapAngle(pose.theta)};
   if (!resolvePenetration(world_, placed.x, placed.y)) {
     throw util::InvalidInput("pose", "the robot does not fit at the requested pose");
   }

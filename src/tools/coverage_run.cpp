@@ -11,7 +11,7 @@
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -61,7 +61,7 @@ Cleaning::Cleaning(const world::World& world, const behavior::RoombaParams& para
   reachable_area = plan.reachable_area;
   floor_area = plan.floor_area;
   ideal_time = reachable_area / (2 * world.robot_radius * params.forward_speed);
-  config = navigation::inProcessNavConfig(planning::roomProblem(world));
+  config = navigation::inProcessNavConfig(world_planning::roomProblem(world));
   config.params = params;
   config.follower.rate = params.rate;
   config.more_leaves.push_back(coverage::coverageLeaves(planner));

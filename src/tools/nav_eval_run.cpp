@@ -7,8 +7,8 @@
 #include <queue>
 #include <random>
 
-#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -163,7 +163,7 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
                                  const NavEvalOptions& options,
                                  const std::function<void(int, int)>& progress) {
   NavEvalReport report;
-  planning::Problem nav_world = planning::roomProblem(world);
+  planning::Problem nav_world = world_planning::roomProblem(world);
   nav_world.clearance = options.clearance;
   planning::PlannerOptions planner_options = navigation::navPlannerOptions(nav_world);
   planner_options.seed = options.seed;

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "roomba_rrt/geometry/map_file.h"
-#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -89,7 +89,7 @@ planning::Problem worldProblem(std::map<std::string, std::string>& tool, std::st
     if (!tool.count(required)) bad(required, "required with " + flag + " (X,Y)");
   }
   // The world's own initial pose does not matter here (a map's (0, 0) may be in a wall).
-  planning::Problem problem = planning::roomProblem(world::readWorldFile(file));
+  planning::Problem problem = world_planning::roomProblem(world::readWorldFile(file));
   problem.start = parsePointFlag("--start", tool["--start"]);
   problem.goal = parsePointFlag("--goal", tool["--goal"]);
   *name = problem.map ? "map" : "room";

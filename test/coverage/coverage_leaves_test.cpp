@@ -10,9 +10,9 @@
 
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/planning/scenarios.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::coverage {
 namespace {
@@ -33,7 +33,7 @@ world::World smallRoom() {
 
 NavLeafConfig cleaningConfig(const world::World& world,
                              std::shared_ptr<const CoveragePlanner> planner) {
-  NavLeafConfig config = navigation::inProcessNavConfig(planning::roomProblem(world));
+  NavLeafConfig config = navigation::inProcessNavConfig(world_planning::roomProblem(world));
   config.more_leaves.push_back(coverageLeaves(std::move(planner)));
   return config;
 }

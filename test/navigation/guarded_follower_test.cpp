@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "roomba_rrt/navigation/guarded_follower.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
@@ -53,7 +53,7 @@ Lap drive(const planning::Problem& world, const Path& path, const FollowerParams
     const bool goal_near = std::hypot(run.pose.x - goal.x, run.pose.y - goal.y) < 0.1;
     if (moving && cmd.v == 0 && !goal_near) ++run.stops;
     moving = cmd.v != 0;
-    run.pose = sim::integrateArc(run.pose, cmd, params.dt());
+    run.pose = robot::integrateArc(run.pose, cmd, params.dt());
     run.closest = std::min(run.closest, guard->gap(run.pose.x, run.pose.y));
   }
   return run;

@@ -11,7 +11,7 @@
 
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 
 namespace {
 thread_local long allocations = 0;
@@ -74,7 +74,7 @@ TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating
   nav.setGoal({9.5, 5.0, 0.0});
   // Until the first plan arrives and the follower runs (allocations allowed: the first path).
   for (int i = 0; i < 10000 && nav.stateName() != "FollowPath"; ++i) {
-    pose = sim::integrateArc(pose, nav.tick({}, pose), 1.0 / 60);
+    pose = robot::integrateArc(pose, nav.tick({}, pose), 1.0 / 60);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));  // let the worker plan
   }
   ASSERT_EQ(nav.stateName(), "FollowPath");
@@ -85,7 +85,7 @@ TEST(TickAllocations, the_navigation_tree_follows_and_replans_without_allocating
   const long before = allocations;
   long following = 0;
   for (int i = 0; i < 20 * 60; ++i) {
-    pose = sim::integrateArc(pose, nav.tick({}, pose), 1.0 / 60);
+    pose = robot::integrateArc(pose, nav.tick({}, pose), 1.0 / 60);
     following += nav.stateName() == "FollowPath";
     // Give the worker time to finish each replan (not a timing check: only so that replans
     // arrive during the loop).

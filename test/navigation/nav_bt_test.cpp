@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/simulator.h"
-#include "roomba_rrt/sim/unicycle.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::navigation {
 namespace {
@@ -19,7 +19,7 @@ const std::string kNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
 const std::string kCleanNavTree = ROOMBA_RRT_CONFIG_DIR "/roomba_clean_nav_tree.xml";
 
 NavLeafConfig configFor(const world::World& world) {
-  planning::Problem room = planning::roomProblem(world);
+  planning::Problem room = world_planning::roomProblem(world);
   room.clearance = kDefaultClearance;
   return inProcessNavConfig(room, defaultNavPlannerOptions(), InProcessPlanner::Mode::kInline);
 }
@@ -109,7 +109,7 @@ TEST(NavBt, drives_around_furniture_to_the_goal_without_a_bump) {
   loop.run(90);
   EXPECT_EQ(loop.nav.outcome(), GoalOutcome::kSucceeded) << loop.nav.message();
   EXPECT_LE(distanceTo(loop.sim.pose(), goal), 0.05 + 1e-6);
-  EXPECT_LE(std::fabs(sim::wrapAngle(loop.sim.pose().theta - goal.theta)), 0.05 + 1e-6);
+  EXPECT_LE(std::fabs(robot::wrapAngle(loop.sim.pose().theta - goal.theta)), 0.05 + 1e-6);
   EXPECT_EQ(loop.bumps, 0);
   ASSERT_NE(loop.nav.path(), nullptr);
   // Afterwards it stands still again.

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "roomba_rrt/navigation/path_follower.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 
 namespace roomba_rrt::navigation {
 namespace {
@@ -40,7 +40,7 @@ Drive follow(const Path& path, const robot::Pose2D& start, const robot::Pose2D& 
     if (!follower.turningToGoal())
       run.max_deviation = std::max(run.max_deviation, follower.deviation());
     last = cmd;
-    run.pose = sim::integrateArc(run.pose, cmd, dt);
+    run.pose = robot::integrateArc(run.pose, cmd, dt);
   }
   return run;
 }
@@ -48,7 +48,7 @@ Drive follow(const Path& path, const robot::Pose2D& start, const robot::Pose2D& 
 void expectArrived(const Drive& run, const robot::Pose2D& goal, const FollowerParams& params = {}) {
   EXPECT_EQ(run.status, FollowStatus::kArrived) << toString(run.status);
   EXPECT_LE(std::hypot(run.pose.x - goal.x, run.pose.y - goal.y), params.xy_tolerance);
-  EXPECT_LE(std::fabs(sim::wrapAngle(run.pose.theta - goal.theta)), params.yaw_tolerance);
+  EXPECT_LE(std::fabs(robot::wrapAngle(run.pose.theta - goal.theta)), params.yaw_tolerance);
 }
 
 TEST(PathFollower, converges_on_a_straight_line_and_turns_to_the_goal_heading) {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "roomba_rrt/navigation/pose_predictor.h"
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::navigation {
@@ -33,7 +33,7 @@ TEST(PosePredictor, drives_the_last_commands_as_the_simulator_does) {
   predictor.sent(straight);
   const robot::Pose2D seen{1, 2, 0.3};
   const robot::Pose2D expected =
-      sim::integrateArc(sim::integrateArc(seen, turn, 1 / kRate), straight, 1 / kRate);
+      robot::integrateArc(robot::integrateArc(seen, turn, 1 / kRate), straight, 1 / kRate);
   const robot::Pose2D p = predictor.predict(seen);
   EXPECT_DOUBLE_EQ(p.x, expected.x);
   EXPECT_DOUBLE_EQ(p.y, expected.y);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "planning_test_support.h"
+#include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::planning {
 namespace {
@@ -18,7 +19,9 @@ using testing::labScenario;
 
 const std::string kConfig = ROOMBA_RRT_CONFIG_DIR;
 
-Problem furnishedRoom() { return loadRoom(kConfig + "/roomba_world_furnished.yaml"); }
+Problem furnishedRoom() {
+  return world_planning::loadRoom(kConfig + "/roomba_world_furnished.yaml");
+}
 
 /// The example: from the room's centre to the gap above the bench's right end.
 Problem benchQuery() {
@@ -83,7 +86,7 @@ double shortestAroundDisc(const Point2& from, const Point2& to, const Circle& c)
 }
 
 TEST(Room, scenario_comes_from_both_world_files) {
-  const Problem empty = loadRoom(kConfig + "/roomba_world.yaml");
+  const Problem empty = world_planning::loadRoom(kConfig + "/roomba_world.yaml");
   EXPECT_EQ(empty.bounds.x_max, 6.4);
   EXPECT_EQ(empty.bounds.y_max, 4.8);
   EXPECT_TRUE(empty.obstacles.empty());
@@ -94,7 +97,7 @@ TEST(Room, scenario_comes_from_both_world_files) {
   ASSERT_EQ(furnished.rectangles.size(), 3u);
   EXPECT_EQ(furnished.rectangles[0].max_x, 1.6);  // the sofa
   EXPECT_EQ(furnished.robot_radius, 0.17);
-  EXPECT_THROW(loadRoom(kConfig + "/no_such_world.yaml"), util::InvalidInput);
+  EXPECT_THROW(world_planning::loadRoom(kConfig + "/no_such_world.yaml"), util::InvalidInput);
 
   PlannerOptions options;
   options.collision = CollisionCheck::kSegments;

@@ -1,15 +1,15 @@
-#include "roomba_rrt/sim/unicycle.h"
+#include "roomba_rrt/robot/unicycle.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+using roomba_rrt::robot::clampCommand;
+using roomba_rrt::robot::integrateArc;
 using roomba_rrt::robot::Pose2D;
 using roomba_rrt::robot::Velocity;
-using roomba_rrt::sim::clampCommand;
-using roomba_rrt::sim::integrateArc;
-using roomba_rrt::sim::wrapAngle;
+using roomba_rrt::robot::wrapAngle;
 
 namespace {
 constexpr double kStep = 1.0 / 60.0;

@@ -12,7 +12,7 @@ namespace roomba_rrt::navigation {
 
 /// Latency compensation for a unicycle (a Smith predictor without a model error term): the robot
 /// seen at `pose` has since driven the last `latency_ticks` commands, each for one tick, along
-/// the exact arcs of the simulator's model (sim::integrateArc). With no latency it returns the
+/// the exact arcs of the simulator's model (robot::integrateArc). With no latency it returns the
 /// pose seen. The commands are the ones the caller sent, so a robot stopped by a wall or by a
 /// lost command is predicted a few millimetres ahead at most (ticks × speed).
 class PosePredictor {

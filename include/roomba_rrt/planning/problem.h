@@ -20,7 +20,7 @@ struct Problem {
   double clearance = 0;               ///< extra margin kept from obstacles and walls (m)
   /// An occupancy map whose occupied (and, unless it was built to allow them, unknown) cells are
   /// obstacles too, each cell's square exactly; nullptr: none. Built once per map and shared by
-  /// every problem planned in it (mapProblem() in scenarios.h).
+  /// every problem planned in it (mapProblem()).
   std::shared_ptr<const geometry::ClearanceMap> map;
 };
 
@@ -28,5 +28,10 @@ struct Problem {
 inline double robotMargin(const Problem& problem) {
   return problem.robot_radius + problem.clearance;
 }
+
+/// A map as a planning problem (scenario `map`): bounds = its extent, obstacles = its occupied
+/// cells, and its unknown cells unless `allow_unknown`. Start, goal and the robot are the
+/// caller's. Costs the map's distance transform (about 10 ns per cell).
+Problem mapProblem(std::shared_ptr<const geometry::OccupancyGrid> map, bool allow_unknown = false);
 
 }  // namespace roomba_rrt::planning
