@@ -261,9 +261,8 @@ class FollowCoverage final : public bt::LeafNode {
   /// (joinLegs: a U-turn, the way round an island, the loop along the walls): transits at
   /// transit_speed, rows at the cleaning speed; the leg advances as the robot's progress passes
   /// the end of each. A leg ends where it ends, in any heading: the next one turns towards its
-  /// start and sets off once nearly facing it (the follower's rotate_threshold), quicker than
-  /// stopping on the next leg's heading first (dining room: 96.6 % instead of 88.8 % by 2× the
-  /// ideal time).
+  /// start and sets off once nearly facing it (the follower's rotate_threshold), much quicker
+  /// than stopping on the next leg's heading first.
   void startLeg(const CoverageProgress& progress) {
     const Leg& leg = progress.plan.legs[progress.leg];
     JoinedLegs joined = joinLegs(progress.plan.legs, progress.leg, progress.touchingUp(),

@@ -23,18 +23,14 @@ constexpr double kMaxLatticePoints = 2e7;
 
 /// The loop along the walls (wall_loop.h) is driven after the rows when it sweeps at least this
 /// much floor per metre of it (m²/m) that the rows do not: where the walls lie at a slant to the
-/// rows. The turtlebot3 arena's loop sweeps 0.043 (its hexagon's slanted walls) and takes it from
-/// 94.5 to 95.3 % by 1.5× the ideal time (and from all 13 other starts tried, 94.5–94.8 →
-/// 95.2–96.0 %). The rooms and crops of doc/performance.md have 0.012–0.027: their rows end square
-/// to the walls, and there the drive round the room cost the willow_full crop's 99 % by 2× (549 →
-/// 588 s) and the office's 99 % 31 s. Driven in every one of 320 random crops: 270 instead of
-/// 267 reach 95 % by 1.5×, but 247 instead of 258 reach 99 % by 2×; above this gain, 271 and 258.
+/// rows. The turtlebot3 arena's loop sweeps 0.043 (its hexagon's slanted walls); the rooms and
+/// crops of doc/coverage.md have 0.012–0.027: their rows end square to the walls, where a drive
+/// round the room costs more time than the floor it sweeps is worth.
 constexpr double kMinWallLoopGain = 0.035;
 
 /// The widest island (m, across the lattice points around it where the disc lacks the
 /// clearance: the obstacle grown by the planning radius) that rows pass around. 1 m: the
-/// turtlebot3 arena's pillars (0.66 m), the furnished room's round table (0.96 m) and bin (0.76 m);
-/// 0.7 m left those two splitting the room and cost it 27 s to 90 %.
+/// turtlebot3 arena's pillars (0.66 m), the furnished room's round table (0.96 m) and bin (0.76 m).
 constexpr double kMaxIsland = 1.0;
 
 /// A row's piece ends this far (m) before the island: the way round it then sets off from the

@@ -12,8 +12,8 @@ namespace {
 /// The angle between neighbouring directions of kDirections (rad).
 const double kTurnStep = 2 * std::acos(-1.0) / kReachDirections;
 
-/// The kReachDirections directions, kTurnStep apart from +x, computed once. (A sine and a cosine
-/// per centre tried were 7 % of the furnished room's plan.)
+/// The kReachDirections directions, kTurnStep apart from +x, computed once (not a sine and a
+/// cosine per centre tried).
 const std::array<Point2, kReachDirections> kDirections = [] {
   std::array<Point2, kReachDirections> out;
   for (int d = 0; d < kReachDirections; ++d) {

@@ -111,9 +111,8 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
   if (options_.edge_clearance < options_.clearance) sweepStrips(options_.edge_clearance);
   // Places to stand for the rest: from the first missed point left (row by row), the drivable
   // lattice point within the robot's radius of it whose disc covers most missed floor, a row of
-  // no length there: the robot arrives and drives on to the next spot in any heading (a row of
-  // 5 cm along x made it turn twice at each spot; without it the dining room has 99 % 2 s
-  // sooner, the turtlebot3 arena 96.1 % instead of 95.5 % by 2× the ideal time). What it covers
+  // no length there: the robot arrives and drives on to the next spot in any heading (a short
+  // row at each spot would make it turn twice there). What it covers
   // is no longer missed. A point no drivable lattice point covers (a corner the clearance keeps
   // the robot out of) is dropped.
   for (int k = 0; k < space_.size(); ++k) {
@@ -185,8 +184,6 @@ std::optional<Polyline> CoveragePlanner::stripRow(const std::vector<int>& points
       // Closer than the clearance (edge cleaning): the robot can neither arrive nor stop there
       // with the clearance. It comes in from the clearance beside the row's start along a ramp of
       // a few degrees (kEdgeRamp long), drives along the wall and ramps out again before the end.
-      // (Ramps before and after the row, where there is room, swept its ends too but were slower
-      // and bumped more with a late pose: 29 instead of 31 of 40 random crops at 99 % by 2×.)
       const double length = geometry::distance(a, b);
       const double ramp = std::min(kEdgeRamp, length / 4);
       const Point2 in{a.x + (b.x - a.x) * ramp / length, a.y + (b.y - a.y) * ramp / length};

@@ -34,12 +34,8 @@ constexpr double kMinRowGain = 0.01;
 /// Floor only one row sweeps comes in bunches along it (pruneRows): lattice columns of it further
 /// apart than this (m) are in different bunches, and a bunch of less than kMinRowGain is not worth
 /// driving the row to. Two cells that meet each have a row along where they meet, a few
-/// centimetres apart; the one pruned first sweeps slivers of its own beyond the other's ends, and
-/// it used to keep the whole stretch between them. In a cluttered willow_full crop (-4.41,-11.77
-/// to 4.35,-5.01, 60 cells) 7.3 m of rows ran within 5 cm of another, now 0.3 m; its rows went
-/// from 172.5 to 159.7 m. In 320 random crops (bench/coverage_crops.py, seeds 1-8) 265 reach 95 %
-/// by 1.5x the ideal time instead of 262. Dropping bunches of up to 200 or 400 cm² gave 269, but
-/// the willow_full crop of doc/performance.md then reached 99 % at 579 or 601 s, for 554.
+/// centimetres apart; the one pruned first sweeps slivers of its own beyond the other's ends,
+/// which are not worth keeping the whole stretch between them for.
 constexpr double kBunchGap = 0.6;
 
 /// One lattice row's stretch of a cell: columns a..b of lattice row j.

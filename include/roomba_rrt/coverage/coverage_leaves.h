@@ -33,9 +33,7 @@ struct CoverageProgress {
 
   /// The least spot (m²) each touch-up pass goes back for: the large ones first, so that most of
   /// the floor is clean sooner, then every spot worth it, with what the first pass left (a stop
-  /// that ended a centimetre short). One pass of spots ≥ 40 cm²: the dining room's 99 % at 302 s;
-  /// ≥ 120 cm² then ≥ 40 cm²: 285 s (its ideal time: 148 s). They drive more beside walls: over
-  /// ROS, before roomba_bt drove its pose forward (navigation::PosePredictor), they bumped.
+  /// that ended a centimetre short). One pass over every spot leaves the large ones for late.
   static constexpr double kTouchUpSpotAreas[] = {0.012, CoveragePlanner::kMinSpotArea};
   static constexpr int kTouchUpPasses = static_cast<int>(std::size(kTouchUpSpotAreas));
 

@@ -1,58 +1,15 @@
 // Coverage planning: a path that sweeps the robot's disc over all the floor it can reach, as a
 // list of straight cleaning rows joined by collision-free transits. ROS-free.
 //
-// Algorithm: boustrophedon cellular decomposition (Choset & Pignon, 1997) of the free space of
-// the disc's CENTRE, computed on a lattice (FreeSpace):
-//   1. Sample the configuration space on a lattice (free_space.h) and keep the part connected
-//      to the start (the rest is floor the robot cannot reach: reported, never planned;
-//      reachable_floor.h measures what the disc reaches).
-//   2. Islands: an obstacle standing free in the floor, whose grown extent (where the disc lacks
-//      the clearance) touches nothing else and is at most kMaxIsland (1 m) across (a pillar, a
-//      bin, a small round table), does not split the free space into cells: steps 3 to 6 plan
-//      as if it were not there, and each row across it stops before it and goes on behind it,
-//      the transit between the two pieces going round it (sweeping the floor around it; the
-//      robot drives it with both pieces, see FollowCoverage). A boustrophedon split at every
-//      pillar of the turtlebot3 arena made 17 cells and 39 transits; passing round them, one
-//      cell: 79 % → 93 % of the floor by 1.5× the ideal time.
-//   3. Decompose (boustrophedon.h): sweep a line up the lattice, row by row. In each lattice row
-//      the free points form intervals. An interval that overlaps exactly one interval of the
-//      row below, which overlaps only it, continues that interval's cell; any other (the sweep
-//      line meets an obstacle, or two parts of the free space join, or one splits) opens a new
-//      cell. Each cell is thus a stack of intervals, one per lattice row, without holes: it can
-//      be swept by horizontal back-and-forth rows without leaving it.
-//   4. Cover each cell with rows along x (boustrophedon.h): along its lowest and highest lattice
-//      rows (so the disc brushes what bounds the cell below and above), evenly at any height
-//      between them at most a swath apart, and a short row along each step where the cell widens
-//      or narrows (a sideboard's top). The lattice stops up to a step short of the walls: the
-//      outer rows and every row's ends are moved out as far as they stay free (exactly).
-//   5. Prune (boustrophedon.h): neighbouring cells overlap where they meet, and a thin cell
-//      between two nearby events (the tops of two pieces of furniture) is mostly swept by its
-//      neighbours. Each row is shortened to the stretch that sweeps the bunches of floor no other
-//      row sweeps and that are worth a row (not the slivers beyond a neighbouring row's ends), or
-//      dropped when none is.
-//   6. Order the cells (cell_order.h): greedily, from where the robot is, the cell whose first
-//      row (of four ways to sweep it: up or down, starting left or right) is nearest; then move
-//      single cells elsewhere in the order, or sweep them another way, while the jumps between
-//      cells shrink. Within a cell each row's direction is chosen by dynamic programming (the
-//      rows alternate, but a short step row must not flip all the rows after it), and
-//      neighbouring rows are swapped while that shortens the jumps.
-//   7. Join consecutive rows with transits: the straight segment when it is free, else the
-//      shortest lattice path, shortcut (FreeSpace::shortestPath).
-//   8. Once round the walls (wall_loop.h: the outer boundary of the floor the robot can drive
-//      to, at the planning radius from the walls), each of its segments a row, when it sweeps at
-//      least 0.035 m² per metre that the rows do not: walls at a slant to the rows, where every
-//      U-turn leaves a wedge of floor against the wall (the turtlebot3 arena's hexagon). Where
-//      the rows end square to the walls (most rooms), no loop.
-//   9. After the rows, touchUp() (touch_up.cpp) plans a tour over the floor the robot did not
-//      sweep (from its own poses, markSwept()): the corners its U-turns cut, rows it gave up,
-//      and (edge cleaning) the band within the clearance of a wall, from rows along it at the
-//      edge clearance.
-// Why boustrophedon: its cells are larger than a trapezoidal decomposition's (cells only split
-// where the free space's connectivity changes, not at every vertex), so there are few long rows
-// and few transits; it needs no polygonal model (the lattice handles circles, rectangles and
-// occupancy maps alike); and it is the decomposition ROS users know (ipa_room_exploration).
-// Spanning-tree coverage (Spiral-STC) needs a grid of cells of the robot's diameter and loses
-// the floor of every partly blocked cell; a lattice-based BCD keeps the rows tight to the walls.
+// A boustrophedon cellular decomposition (Choset & Pignon, 1997) of the free space of the disc's
+// CENTRE, on a lattice: sample the free space and keep what the start reaches (free_space.h;
+// reachable_floor.h measures the floor the disc reaches), pass small islands round instead of
+// splitting at them, decompose and lay each cell's rows a swath apart, prune the rows to the
+// floor only they sweep (boustrophedon.h), order the cells and the rows' directions
+// (cell_order.h), join the rows with transits, and once round the walls where they lie at a slant
+// to the rows (wall_loop.h). After the rows, touchUp() plans a tour over the floor the robot did
+// not sweep (touch_up.cpp, tour.h). doc/coverage.md describes each step, why boustrophedon, the
+// results and the limits.
 //
 // Every row and transit segment keeps the planning radius (robot radius + clearance) from every
 // wall, piece of furniture and blocked map cell, exactly (FreeSpace: the lattice's free points
@@ -86,11 +43,8 @@ struct CoverageOptions {
   /// Largest distance between neighbouring rows (m): at most the robot's diameter, so the swept
   /// strips overlap. 0.335 m for the 0.34 m Roomba. A cell's rows are as few as keep neighbours
   /// at most this far apart, so a little more swath saves a row where a cell is just over a
-  /// whole number of swaths high. 0.33 → 0.335 m: the turtlebot3 arena (4.64 m between its
-  /// outer rows) 16 → 15 rows across, 96.9 → 97.5 % by 2× the ideal time; the willow_full crop
-  /// of doc/performance.md 99 % from four starts at 517–551 s instead of 542–566. 0.34 m (no
-  /// overlap where rows are a full swath apart) left unswept lines between rows in the dining
-  /// room; 0.32 m cost the willow_full crop 0.2 points and the depot's 0.9 points by 1.5×.
+  /// whole number of swaths high; the full diameter (no overlap) leaves unswept lines between
+  /// rows wherever the follower is a millimetre off.
   double swath = 0.34 - kMinOverlap;
   /// Edge of the lattice the free space is sampled on (m): the coverage grid's cell size. Finer
   /// brings rows closer to curved furniture; cost grows with its inverse square.
@@ -101,9 +55,8 @@ struct CoverageOptions {
   /// Kept by the touch-up's rows along a wall where the clearance leaves a band of floor no row
   /// sweeps (m): edge cleaning, driven parallel to the wall. A wall that does not lie on the
   /// lattice's cell boundaries (a map cut anywhere with --crop) has lattice points within the
-  /// clearance of it: floor the disc reaches, which 1 cm keeps it from. In 40 random crops of
-  /// the shared maps, 99 % by 2× the ideal time: 26 without, 31 with 3 mm, 33 with 2 mm (which
-  /// bumped more with a late pose). At or above the clearance: no edge cleaning.
+  /// clearance of it: floor the disc reaches, which 1 cm keeps it from (about 1 % of a small
+  /// room). Closer than 3 mm bumps with a late pose. At or above the clearance: no edge cleaning.
   double edge_clearance = 0.003;
 };
 

@@ -17,19 +17,14 @@ namespace roomba_rrt::coverage {
 struct JoinRules {
   /// A transit this short (m; the step between two rows) is driven with the rows before and
   /// after it as one path: the robot takes the U-turn's two corners as arcs without stopping. The
-  /// arcs cut the corners at the rows' ends, which the touch-up sweeps afterwards. By 1.5× the
-  /// ideal time (stopping at each row's end → pure pursuit round the corners, lookahead 0.2 m):
-  /// furnished room 94.9 → 97.9 %, dining room 84.6 → 95.0 %, office 87.6 → 96.1 %, apartment
-  /// 93.1 → 97.2 %.
+  /// arcs cut the corners at the rows' ends, which the touch-up sweeps afterwards. Stopping at
+  /// each row's end instead is most of what separates 85 % from 95 % by 1.5× the ideal time.
   static constexpr double kTransit = 0.5;
   /// The joined path's corners are rounded with this radius (m), which the robot drives at its
   /// turn-rate limit (2 rad/s: 0.28 m/s), following it with a lookahead of about the same
   /// (FollowCoverage: 0.13 m): it turns where the arc does, closer to the wall than pure pursuit
-  /// cutting a sharp corner for a farther carrot. With 0.2 m and sharp corners → this: willow_full
-  /// crop just under 99 % for good → 99 % at 552 s, turtlebot3 arena 93.6 / 95.8 → 94.2 / 96.9 %
-  /// by 1.5× / 2×. Tighter turns sweep more and take longer: radii and lookaheads of 0.08–0.12 m
-  /// left the dining room 90.7–95.1 % by 1.5×, and a 0.1 m lookahead without arcs all but stopped
-  /// at each corner (87.7 %).
+  /// cutting a sharp corner for a farther carrot. Tighter turns sweep more of the corners but
+  /// take longer.
   static constexpr double kTurnRadius = 0.14;
   /// In the touch-up, whose legs go from spot to spot, legs are joined only with no turn sharper
   /// than this (rad) where they meet: a path that reverses has the follower's carrot jump behind
@@ -37,8 +32,7 @@ struct JoinRules {
   static constexpr double kMaxTurn = 2.4;
   /// The way round an island (m: half round a 1 m one, CoveragePlanner's largest) between two
   /// pieces of a row is driven with them too, at the cleaning speed: it sweeps the floor round
-  /// the island. turtlebot3 arena by 1.5× the ideal time: 92.2 % stopping before and after
-  /// each, 93.2 % joined.
+  /// the island.
   static constexpr double kDetour = 2.0;
 };
 

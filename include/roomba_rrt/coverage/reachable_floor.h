@@ -19,14 +19,13 @@ namespace roomba_rrt::coverage {
 /// neighbours. That space reaches into a corner or a map's stepped wall where no lattice point's
 /// disc does. The centres are tried on the circle of radius r around the point (any free centre
 /// nearer to it lies in free space that extends beyond the circle, so crosses it), in
-/// kReachDirections directions, first towards the region. The rule this replaces, a disc
-/// r + h/2 around the boundary points, also counted floor no centre reaches: 0.3 % of the
-/// turtlebot3 arena's.
+/// kReachDirections directions, first towards the region. (A disc of r + h/2 around the
+/// boundary points would also count floor no centre reaches, in a map's stepped walls.)
 Mask floorReachedFrom(const FreeSpace& space, const Mask& region);
 
 /// Directions floorReachedFrom() tries around a floor point for a centre that reaches it: 256,
-/// centres 4 mm apart on the circle of the robot's radius. With 128 it missed some of the steps
-/// of a wall a map draws at 45°.
+/// centres 4 mm apart on the circle of the robot's radius (128 miss some of the steps of a wall
+/// a map draws at 45°).
 constexpr int kReachDirections = 256;
 
 /// A centre floorReachedFrom() counts lies within this many lattice steps (each way) of the
