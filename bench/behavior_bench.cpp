@@ -25,7 +25,6 @@ using roomba_rrt::behavior::RoombaFsm;
 using roomba_rrt::behavior::RoombaParams;
 using roomba_rrt::bench::RoombaSwitch;
 namespace robot = roomba_rrt::robot;
-namespace sim = roomba_rrt::sim;
 
 /// A bumper input that exercises every transition: a bump every 997 ticks (during MoveForward
 /// or MoveInSpiral), and some spirals that run to their end. 2^16 ticks, then it repeats.

@@ -35,7 +35,7 @@
 #include "disc_lattice.h"
 #include "ompl_lab.h"
 #include "roomba_rrt/geometry/map_file.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/lab/scenarios.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "roomba_rrt/planning/planner.h"
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 namespace rp = roomba_rrt::planning;
 

@@ -100,7 +100,7 @@ endif()
 find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(behavior_bench EXCLUDE_FROM_ALL bench/behavior_bench.cpp)
-  target_link_libraries(behavior_bench roomba_nav_core roomba_sim_core benchmark::benchmark)
+  target_link_libraries(behavior_bench roomba_nav_core benchmark::benchmark)
   target_compile_definitions(behavior_bench PRIVATE
     ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 endif()

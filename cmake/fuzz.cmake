@@ -20,7 +20,7 @@ if(ROOMBA_RRT_SANITIZE)
   # cannot compile: rrt_planning_sanitized is rrt_planning with those files compiled by g++
   # (-O2, not instrumented: ASan still catches their wild accesses as SEGVs, not their overflows
   # inside the heap), everything else by clang with the sanitizers.
-  set(RR_GCC_ONLY_SOURCES src/planning/grid_nearest_neighbors.cpp)
+  set(RR_GCC_ONLY_SOURCES src/planning/nearest_neighbors/grid_nearest_neighbors.cpp)
   get_target_property(RR_PLANNING_SOURCES rrt_planning SOURCES)
   list(REMOVE_ITEM RR_PLANNING_SOURCES ${RR_GCC_ONLY_SOURCES})
   set(RR_GCC_OBJECTS)

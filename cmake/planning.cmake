@@ -2,23 +2,27 @@
 # (The rrt_planner node and its rostest live in their own section at the end of this file.)
 
 add_library(rrt_planning
-  src/planning/brute_force_nearest_neighbors.cpp
+  # the planning query and what every planner shares (include/roomba_rrt/planning/)
   src/planning/free_point_near.cpp
-  src/planning/grid_nearest_neighbors.cpp
-  src/planning/monte_carlo.cpp
-  src/planning/nearest_neighbors.cpp
   src/planning/path_smoothing.cpp
-  src/planning/planner.cpp
   src/planning/plan_result.cpp
+  src/planning/planner.cpp
   src/planning/planner_options.cpp
   src/planning/problem.cpp
-  src/planning/rrt.cpp
-  src/planning/rrt_connect.cpp
-  src/planning/rrt_star.cpp
-  src/planning/scenarios.cpp
   src/planning/stop_condition.cpp
   src/planning/tree.cpp
   src/planning/validate.cpp
+  # the planners (planning/planners/)
+  src/planning/planners/rrt.cpp
+  src/planning/planners/rrt_connect.cpp
+  src/planning/planners/rrt_star.cpp
+  # the nearest-neighbour index and its allocator (planning/nearest_neighbors/)
+  src/planning/nearest_neighbors/brute_force_nearest_neighbors.cpp
+  src/planning/nearest_neighbors/grid_nearest_neighbors.cpp
+  src/planning/nearest_neighbors/nearest_neighbors.cpp
+  # the lab's pieces: MATLAB's random stream, the scenarios file, Monte Carlo (planning/lab/)
+  src/planning/lab/monte_carlo.cpp
+  src/planning/lab/scenarios.cpp
 )
 target_include_directories(rrt_planning PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(rrt_planning PUBLIC roomba_geometry yaml-cpp)

@@ -3,9 +3,9 @@
 #include <chrono>
 
 #include "roomba_rrt/planning/path_smoothing.h"
-#include "roomba_rrt/planning/rrt.h"
-#include "roomba_rrt/planning/rrt_connect.h"
-#include "roomba_rrt/planning/rrt_star.h"
+#include "roomba_rrt/planning/planners/rrt.h"
+#include "roomba_rrt/planning/planners/rrt_connect.h"
+#include "roomba_rrt/planning/planners/rrt_star.h"
 
 namespace roomba_rrt::planning {
 

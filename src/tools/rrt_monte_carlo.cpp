@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "progress_bar.h"
-#include "roomba_rrt/planning/monte_carlo.h"
+#include "roomba_rrt/planning/lab/monte_carlo.h"
 #include "roomba_rrt/planning/planner.h"
 #include "tool_arguments.h"
 

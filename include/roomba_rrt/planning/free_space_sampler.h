@@ -5,7 +5,7 @@
 
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/geometry.h"
-#include "roomba_rrt/planning/matlab_random.h"
+#include "roomba_rrt/planning/lab/matlab_random.h"
 
 namespace roomba_rrt::planning {
 

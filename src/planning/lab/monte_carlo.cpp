@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/monte_carlo.h"
+#include "roomba_rrt/planning/lab/monte_carlo.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,7 +1,7 @@
 // RRT* (Karaman & Frazzoli 2011): RRT that chooses the cheapest parent and rewires neighbours.
 #pragma once
 
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 namespace roomba_rrt::planning {
 

@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/rrt_star.h"
+#include "roomba_rrt/planning/planners/rrt_star.h"
 
 #include <cmath>
 #include <limits>

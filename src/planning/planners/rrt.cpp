@@ -1,9 +1,9 @@
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "roomba_rrt/planning/grid_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/grid_nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 

@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/brute_force_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/brute_force_nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 

@@ -8,8 +8,8 @@
 
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/free_space_sampler.h"
-#include "roomba_rrt/planning/matlab_random.h"
-#include "roomba_rrt/planning/nearest_neighbors.h"
+#include "roomba_rrt/planning/lab/matlab_random.h"
+#include "roomba_rrt/planning/nearest_neighbors/nearest_neighbors.h"
 #include "roomba_rrt/planning/plan_result.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"

@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/grid_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/grid_nearest_neighbors.h"
 
 #include <algorithm>
 #include <cmath>

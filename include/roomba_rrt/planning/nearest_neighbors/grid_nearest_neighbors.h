@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "roomba_rrt/planning/huge_page_allocator.h"
-#include "roomba_rrt/planning/nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/huge_page_allocator.h"
+#include "roomba_rrt/planning/nearest_neighbors/nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 

@@ -1,7 +1,7 @@
-#include "roomba_rrt/planning/nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/nearest_neighbors.h"
 
-#include "roomba_rrt/planning/brute_force_nearest_neighbors.h"
-#include "roomba_rrt/planning/grid_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/brute_force_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/grid_nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 

@@ -1,7 +1,7 @@
 // RRT-Connect (Kuffner & LaValle 2000): a tree from the start and one from the goal.
 #pragma once
 
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 namespace roomba_rrt::planning {
 

@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/rrt_connect.h"
+#include "roomba_rrt/planning/planners/rrt_connect.h"
 
 #include <utility>
 #include <vector>

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "roomba_rrt/planning/nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/nearest_neighbors.h"
 
 namespace roomba_rrt::planning {
 

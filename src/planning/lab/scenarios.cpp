@@ -1,4 +1,4 @@
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/lab/scenarios.h"
 
 #include <initializer_list>
 
