@@ -1,11 +1,9 @@
-// The touch-up after the rows: CoveragePlanner::touchUp() and the rows along walls it plans
-// (stripRow()). What the robot left is found from its own poses (markSwept()).
-#include "roomba_rrt/coverage/coverage_planner.h"
+// The touch-up after the rows (touch_up.h): one member function per step of TouchUp::plan().
+#include "roomba_rrt/coverage/touch_up.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <optional>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -15,136 +13,164 @@ namespace roomba_rrt::coverage {
 
 CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
                                       double min_spot_area) const {
+  return TouchUp(*this, swept, at, min_spot_area).plan();
+}
+
+TouchUp::TouchUp(const CoveragePlanner& planner, const std::vector<std::uint8_t>& swept,
+                 const Point2& at, double min_spot_area)
+    : planner_(planner),
+      space_(planner.freeSpace()),
+      options_(planner.options()),
+      swept_(swept),
+      at_(at),
+      min_spot_area_(min_spot_area) {}
+
+CoveragePlan TouchUp::plan() {
   CoveragePlan plan;
-  Mask missed = reachableFloor(plan, at);
-  for (int k = 0; k < space_.size(); ++k) {
-    missed[k] = missed[k] && !(k < static_cast<int>(swept.size()) && swept[k]);
-  }
+  missedFloor(plan);
   // Where the robot can drive from here (with the clearance).
-  const std::optional<int> seed = space_.connect(at, FreeSpace::kFree);
+  const std::optional<int> seed = space_.connect(at_, FreeSpace::kFree);
   if (!seed) return plan;
-  const Mask drivable = flood(space_, *seed, FreeSpace::kFree);
+  drivable_ = flood(space_, *seed, FreeSpace::kFree);
+  unreached();
+  sweepStrips(options_.clearance);
+  // What no row at the clearance reaches (the floor within the clearance of a wall, which the
+  // rows and stops never sweep): edge cleaning, rows along the wall at the edge clearance.
+  if (options_.edge_clearance < options_.clearance) sweepStrips(options_.edge_clearance);
+  standAtSpots();
+  tour(plan);
+  return plan;
+}
+
+void TouchUp::missedFloor(CoveragePlan& plan) {
+  missed_ = planner_.reachableFloor(plan, at_);
+  for (int k = 0; k < space_.size(); ++k) {
+    missed_[k] = missed_[k] && !(k < static_cast<int>(swept_.size()) && swept_[k]);
+  }
   // The spots: 8-connected pieces of missed floor. Those under min_spot_area are not worth going
   // back for (now).
   const double h = space_.resolution();
-  const double r = space_.robotRadius();
-  std::vector<Leg> visits;  // rows to drive, in either direction
   Mask seen(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
-    if (!missed[k] || seen[k]) continue;
+    if (!missed_[k] || seen[k]) continue;
     std::vector<int> spot;
     forComponent(
-        space_, k, [&](int n) { return missed[n] != 0; }, seen, [&](int n) { spot.push_back(n); });
-    if (spot.size() * h * h < min_spot_area) {
-      for (int q : spot) missed[q] = 0;
+        space_, k, [&](int n) { return missed_[n] != 0; }, seen, [&](int n) { spot.push_back(n); });
+    if (spot.size() * h * h < min_spot_area_) {
+      for (int q : spot) missed_[q] = 0;
     }
   }
-  // First what is missed along a wall or a piece of furniture, closer to it than any drivable
-  // lattice point reaches (the floor U-turns' arcs leave between the rows' ends), in runs of a
-  // lattice column or row: a row along each run, as close as stays free (stripRow()), when the
-  // disc reaches the run from there. It sweeps the missed floor beside the run too.
-  Mask uncovered(space_.size(), 0);
+}
+
+void TouchUp::unreached() {
+  // What is missed along a wall or a piece of furniture, closer to it than any drivable lattice
+  // point reaches (the floor U-turns' arcs leave between the rows' ends).
+  const double r = space_.robotRadius();
+  uncovered_.assign(space_.size(), 0);
   for (int k = 0; k < space_.size(); ++k) {
-    if (!missed[k]) continue;
+    if (!missed_[k]) continue;
     bool reached = false;
     const Point2 p = space_.point(k);
-    forPointsNear(space_, p, p, r, [&](int c) { reached = reached || drivable[c]; });
-    uncovered[k] = !reached;
+    forPointsNear(space_, p, p, r, [&](int c) { reached = reached || drivable_[c]; });
+    uncovered_[k] = !reached;
   }
-  // A row along `points` (in order along a line), sweeping what is missed beside it; false when
-  // no free row reaches them. Too few points to be worth a row: nothing to do (true).
-  auto stripVisit = [&](const std::vector<int>& points, bool vertical, double clearance) {
-    if (static_cast<int>(points.size()) <= kStripLength) return true;
-    const std::optional<Polyline> row = stripRow(points, vertical, clearance);
-    if (!row) return false;
-    for (std::size_t k = 0; k + 1 < row->size(); ++k) {
-      forPointsNear(space_, (*row)[k], (*row)[k + 1], r,
-                    [&](int c) { uncovered[c] = missed[c] = 0; });
-    }
-    visits.push_back(Leg{Leg::Kind::kRow, *row, clearance < options_.clearance});
-    return true;
-  };
-  // A run that no free row reaches as a whole (something stands near one end: a plant in the
-  // corner) is tried in halves.
-  std::function<void(const std::vector<int>&, bool, double)> sweepRun =
-      [&](const std::vector<int>& points, bool vertical, double clearance) {
-        if (stripVisit(points, vertical, clearance)) return;
-        const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
-        sweepRun(std::vector<int>(points.begin(), middle), vertical, clearance);
-        sweepRun(std::vector<int>(middle, points.end()), vertical, clearance);
-      };
-  // Runs a short gap apart are one row: driving over a few swept centimetres costs less than a
-  // transit and two turns more. When that row is not free, each run on its own.
-  auto sweepStrip = [&](const std::vector<std::vector<int>>& runs, bool vertical,
-                        double clearance) {
-    std::vector<int> merged;
-    for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
-    if (stripVisit(merged, vertical, clearance)) return;
-    for (const auto& run : runs) sweepRun(run, vertical, clearance);
-  };
-  auto sweepStrips = [&](double clearance) {
-    for (const bool vertical : {true, false}) {
-      const int lines = vertical ? space_.width() : space_.height();
-      const int length = vertical ? space_.height() : space_.width();
-      for (int line = 0; line < lines; ++line) {
-        std::vector<std::vector<int>> runs;  // runs of uncovered points, at most kStripGap apart
-        int last = -kStripGap - 2;           // where the last uncovered point was along the line
-        for (int along = 0; along < length; ++along) {
-          const int q = vertical ? space_.index(line, along) : space_.index(along, line);
-          if (!uncovered[q]) continue;
-          if (along - last > kStripGap + 1) {
-            sweepStrip(runs, vertical, clearance);
-            runs.clear();
-          }
-          if (runs.empty() || along - last > 1) runs.emplace_back();
-          runs.back().push_back(q);
-          last = along;
+}
+
+void TouchUp::sweepStrips(double clearance) {
+  // In runs of a lattice column or row: a row along each run, as close as stays free
+  // (stripRow()), when the disc reaches the run from there. It sweeps the missed floor beside
+  // the run too.
+  for (const bool vertical : {true, false}) {
+    const int lines = vertical ? space_.width() : space_.height();
+    const int length = vertical ? space_.height() : space_.width();
+    for (int line = 0; line < lines; ++line) {
+      std::vector<std::vector<int>> runs;  // runs of uncovered points, at most kStripGap apart
+      int last = -kStripGap - 2;           // where the last uncovered point was along the line
+      for (int along = 0; along < length; ++along) {
+        const int q = vertical ? space_.index(line, along) : space_.index(along, line);
+        if (!uncovered_[q]) continue;
+        if (along - last > kStripGap + 1) {
+          sweepStrip(runs, vertical, clearance);
+          runs.clear();
         }
-        sweepStrip(runs, vertical, clearance);
+        if (runs.empty() || along - last > 1) runs.emplace_back();
+        runs.back().push_back(q);
+        last = along;
       }
+      sweepStrip(runs, vertical, clearance);
     }
-  };
-  sweepStrips(options_.clearance);
-  // What no row at the clearance reaches (the floor within the clearance of a wall, which
-  // the rows and stops never sweep: a 1 cm band is 1 % of a small room's floor): edge cleaning,
-  // rows along the wall at the edge clearance.
-  if (options_.edge_clearance < options_.clearance) sweepStrips(options_.edge_clearance);
-  // Places to stand for the rest: from the first missed point left (row by row), the drivable
-  // lattice point within the robot's radius of it whose disc covers most missed floor, a row of
-  // no length there: the robot arrives and drives on to the next spot in any heading (a short
-  // row at each spot would make it turn twice there). What it covers
-  // is no longer missed. A point no drivable lattice point covers (a corner the clearance keeps
-  // the robot out of) is dropped.
+  }
+}
+
+void TouchUp::sweepStrip(const std::vector<std::vector<int>>& runs, bool vertical,
+                         double clearance) {
+  // Driving over a few swept centimetres costs less than a transit and two turns more.
+  std::vector<int> merged;
+  for (const auto& run : runs) merged.insert(merged.end(), run.begin(), run.end());
+  if (stripVisit(merged, vertical, clearance)) return;
+  for (const auto& run : runs) sweepRun(run, vertical, clearance);
+}
+
+void TouchUp::sweepRun(const std::vector<int>& points, bool vertical, double clearance) {
+  if (stripVisit(points, vertical, clearance)) return;
+  const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
+  sweepRun(std::vector<int>(points.begin(), middle), vertical, clearance);
+  sweepRun(std::vector<int>(middle, points.end()), vertical, clearance);
+}
+
+bool TouchUp::stripVisit(const std::vector<int>& points, bool vertical, double clearance) {
+  if (static_cast<int>(points.size()) <= kStripLength) return true;
+  const std::optional<Polyline> row = stripRow(points, vertical, clearance);
+  if (!row) return false;
+  const double r = space_.robotRadius();
+  for (std::size_t k = 0; k + 1 < row->size(); ++k) {
+    forPointsNear(space_, (*row)[k], (*row)[k + 1], r,
+                  [&](int c) { uncovered_[c] = missed_[c] = 0; });
+  }
+  visits_.push_back(Leg{Leg::Kind::kRow, *row, clearance < options_.clearance});
+  return true;
+}
+
+void TouchUp::standAtSpots() {
+  // From the first missed point left (row by row), the drivable lattice point within the
+  // robot's radius of it whose disc covers most missed floor, a row of no length there: the
+  // robot arrives and drives on to the next spot in any heading (a short row at each spot would
+  // make it turn twice there). What it covers is no longer missed. A point no drivable lattice
+  // point covers (a corner the clearance keeps the robot out of) is dropped.
+  const double r = space_.robotRadius();
   for (int k = 0; k < space_.size(); ++k) {
-    if (!missed[k]) continue;
+    if (!missed_[k]) continue;
     std::optional<int> best;
     int best_count = 0;
     const Point2 p = space_.point(k);
     forPointsNear(space_, p, p, r, [&](int c) {
-      if (!drivable[c]) return;
+      if (!drivable_[c]) return;
       int count = 0;
       const Point2 centre = space_.point(c);
-      forPointsNear(space_, centre, centre, r, [&](int q) { count += missed[q]; });
+      forPointsNear(space_, centre, centre, r, [&](int q) { count += missed_[q]; });
       if (count > best_count) best = c, best_count = count;
     });
     if (!best) {
-      missed[k] = 0;
+      missed_[k] = 0;
       continue;
     }
     const Point2 centre = space_.point(*best);
-    forPointsNear(space_, centre, centre, r, [&](int q) { missed[q] = 0; });
-    visits.push_back(Leg{Leg::Kind::kRow, {centre, centre}});
+    forPointsNear(space_, centre, centre, r, [&](int q) { missed_[q] = 0; });
+    visits_.push_back(Leg{Leg::Kind::kRow, {centre, centre}});
   }
+}
+
+void TouchUp::tour(CoveragePlan& plan) {
   // In the order of touchUpTour() (tour.h: nearest first, then 2-opt), each a transit and its
   // row.
   std::vector<Polyline> paths;
-  paths.reserve(visits.size());
-  for (const Leg& visit : visits) paths.push_back(visit.points);
-  Point2 here = at;
-  for (const TourStop& stop : touchUpTour(paths, at)) {
-    Leg row = std::move(visits[stop.visit]);
+  paths.reserve(visits_.size());
+  for (const Leg& visit : visits_) paths.push_back(visit.points);
+  Point2 here = at_;
+  for (const TourStop& stop : touchUpTour(paths, at_)) {
+    Leg row = std::move(visits_[stop.visit]);
     if (stop.reversed) std::reverse(row.points.begin(), row.points.end());
-    const std::optional<Polyline> path = transit(here, row.points.front());
+    const std::optional<Polyline> path = planner_.transit(here, row.points.front());
     if (!path) continue;
     if (geometry::pathLength(*path) > kMinLegLength) {
       plan.legs.push_back(Leg{Leg::Kind::kTransit, *path});
@@ -152,11 +178,10 @@ CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, co
     here = row.points.back();
     plan.legs.push_back(std::move(row));
   }
-  return plan;
 }
 
-std::optional<Polyline> CoveragePlanner::stripRow(const std::vector<int>& points, bool vertical,
-                                                  double clearance) const {
+std::optional<Polyline> TouchUp::stripRow(const std::vector<int>& points, bool vertical,
+                                          double clearance) const {
   const double h = space_.resolution();
   const double r = space_.robotRadius();
   const double radius = r + clearance;

@@ -8,7 +8,7 @@
 // floor only they sweep (boustrophedon.h), order the cells and the rows' directions
 // (cell_order.h), join the rows with transits, and once round the walls where they lie at a slant
 // to the rows (wall_loop.h). After the rows, touchUp() plans a tour over the floor the robot did
-// not sweep (touch_up.cpp, tour.h). doc/coverage.md describes each step, why boustrophedon, the
+// not sweep (touch_up.h, tour.h). doc/coverage.md describes each step, why boustrophedon, the
 // results and the limits.
 //
 // Every row and transit segment keeps the planning radius (robot radius + clearance) from every
@@ -132,6 +132,7 @@ class CoveragePlanner {
   /// point whose disc covers most of it, then a row of no length there (the robot passes or
   /// stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
+  /// The steps are TouchUp's (touch_up.h).
   CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
                        double min_spot_area = kMinSpotArea) const;
 
@@ -142,23 +143,12 @@ class CoveragePlanner {
   const CoverageOptions& options() const { return options_; }
 
  private:
+  friend class TouchUp;  // touch_up.h: one touch-up pass, from transit() and reachableFloor()
+
   /// A collision-free polyline from `from` (where the robot stands) to `to` (a point of a row):
   /// the straight segment when it is free, else via the nearest lattice points and the shortest
   /// lattice path between them. nullopt when `to` cannot be reached.
   std::optional<Polyline> transit(const Point2& from, const Point2& to) const;
-  /// A row along `points` (lattice points of missed floor in order along one lattice column, or
-  /// one lattice row when not `vertical`: the floor a U-turn left by a wall), from the first to
-  /// the last, as close to them as keeps `clearance`, if the disc reaches them from there. Below
-  /// the planner's clearance (edge cleaning) the row ramps in from it and out to it again
-  /// (kEdgeRamp), so that it starts and ends where the robot may stand.
-  std::optional<Polyline> stripRow(const std::vector<int>& points, bool vertical,
-                                   double clearance) const;
-  /// How long a row along a wall takes to come in from the clearance and go out to it again (m).
-  static constexpr double kEdgeRamp = 0.1;
-  /// A strip of this many lattice points or fewer is left to the spots' stops.
-  static constexpr int kStripLength = 4;
-  /// Strips along one line this many lattice points apart or closer are swept by one row.
-  static constexpr int kStripGap = 16;
   /// The floor reachable from `start` (one flag per lattice point), with the plan's areas set.
   std::vector<std::uint8_t> reachableFloor(CoveragePlan& plan, const Point2& start) const;
 
