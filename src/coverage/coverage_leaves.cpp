@@ -214,15 +214,7 @@ class FollowCoverage final : public bt::LeafNode {
       error_.set("bumped");
       return Status::kFailure;
     }
-    while (!progress.done()) {
-      if (progress.leg >= progress.plan.legs.size()) {  // the rows (a pass) are driven: the spots
-        progress.plan = planner.touchUp(progress.swept, {pose->x, pose->y},
-                                        CoverageProgress::kTouchUpSpotAreas[progress.touch_ups]);
-        progress.leg = 0;
-        ++progress.touch_ups;
-        following_ = kNone;
-        continue;
-      }
+    while (progress.leg < progress.plan.legs.size()) {
       if (following_ != progress.leg) startLeg(progress);
       robot::Velocity cmd;
       const FollowStatus status = follower_.step(*pose, cmd);
@@ -316,6 +308,47 @@ class FollowCoverage final : public bt::LeafNode {
   bool contact_ = false;  ///< the bumper was pressed at the last tick (or when the leaf started)
 };
 
+class PlanTouchUp final : public bt::LeafNode {
+ public:
+  static PortList providedPorts() {
+    return {progressPort(), poseInput("where the robot is"),
+            errorOutput("why no touch-up can be planned")};
+  }
+  PlanTouchUp(const NodeSpec& spec, std::shared_ptr<LazyPlanner> planner)
+      : LeafNode(spec.name),
+        coverage_(spec.output<CoverageProgress>("coverage")),
+        pose_(spec.input<robot::Pose2D>("pose")),
+        error_(spec.output<std::string>("error")),
+        planner_(std::move(planner)) {}
+
+ private:
+  Status onTick() override {
+    const robot::Pose2D* pose = pose_.get();
+    if (!coverage_.get() || !pose) {
+      error_.set(!pose ? "no pose" : "no coverage plan to touch up");
+      return Status::kFailure;
+    }
+    CoverageProgress& progress = coverage_.value();
+    // Only once the plan in hand is driven, and only as many passes as CoverageProgress has.
+    if (progress.leg < progress.plan.legs.size() ||
+        progress.touch_ups >= CoverageProgress::kTouchUpPasses) {
+      return Status::kSuccess;
+    }
+    progress.plan =
+        planner_->get()->touchUp(progress.swept, {pose->x, pose->y},
+                                 CoverageProgress::kTouchUpSpotAreas[progress.touch_ups]);
+    progress.leg = 0;
+    ++progress.touch_ups;
+    coverage_.commit();
+    return Status::kSuccess;
+  }
+
+  OutputPort<CoverageProgress> coverage_;
+  InputPort<robot::Pose2D> pose_;
+  OutputPort<std::string> error_;
+  std::shared_ptr<LazyPlanner> planner_;
+};
+
 class ResumeCoverage final : public bt::LeafNode {
  public:
   static PortList providedPorts() {
@@ -403,6 +436,9 @@ navigation::LeafRegistrar registrar(std::shared_ptr<LazyPlanner> planner) {
           return std::make_unique<FollowCoverage>(spec, *ctx, follower, guard, edge_guard,
                                                   row_speed, planner);
         });
+    factory.registerNodeType<PlanTouchUp>("PlanTouchUp", [planner](const NodeSpec& spec) {
+      return std::make_unique<PlanTouchUp>(spec, planner);
+    });
     factory.registerNodeType<ResumeCoverage>("ResumeCoverage", [planner](const NodeSpec& spec) {
       return std::make_unique<ResumeCoverage>(spec, planner->get());
     });

@@ -131,6 +131,8 @@ struct LeafTest : ::testing::Test {
       R"(<PlanCoverage start="{pose}" coverage="{coverage}" error="{error}"/>)";
   static constexpr const char* kFollow =
       R"(<FollowCoverage coverage="{coverage}" pose="{pose}" error="{error}"/>)";
+  static constexpr const char* kTouchUp =
+      R"(<PlanTouchUp coverage="{coverage}" pose="{pose}" error="{error}"/>)";
 
   world::World world;
   std::shared_ptr<const CoveragePlanner> planner;
@@ -143,10 +145,10 @@ struct LeafTest : ::testing::Test {
 
 TEST(CoverageLeaves, the_nodes_model_lists_the_leaves_with_their_ports) {
   const std::string model = navigation::treeNodesModel({coverageLeaves(nullptr)});
-  for (const char* text :
-       {"<Action ID=\"PlanCoverage\"", "<Action ID=\"FollowCoverage\"",
-        "<Action ID=\"ResumeCoverage\"", "<Condition ID=\"CoverageDone\"", "name=\"transit_speed\"",
-        "name=\"skip_after\"", "type=\"CoverageProgress\""}) {
+  for (const char* text : {"<Action ID=\"PlanCoverage\"", "<Action ID=\"FollowCoverage\"",
+                           "<Action ID=\"PlanTouchUp\"", "<Action ID=\"ResumeCoverage\"",
+                           "<Condition ID=\"CoverageDone\"", "name=\"transit_speed\"",
+                           "name=\"skip_after\"", "type=\"CoverageProgress\""}) {
     EXPECT_NE(model.find(text), std::string::npos) << text << " not in\n" << model;
   }
   // Without the registrar the navigation model stays as it was.
@@ -229,8 +231,9 @@ TEST_F(LeafTest, follow_coverage_drives_rows_at_the_forward_speed_and_transits_f
       EXPECT_EQ(context.state_name, &follow.root().name());
     }
   }
-  EXPECT_EQ(status, bt::Status::kSuccess);
-  EXPECT_TRUE(progress().done());
+  EXPECT_EQ(status, bt::Status::kSuccess);  // the plan in hand is driven; the touch-up is not
+  EXPECT_EQ(progress().leg, progress().plan.legs.size());
+  EXPECT_FALSE(progress().touchingUp());
   EXPECT_NEAR(fastest_row, params.forward_speed, 1e-9);
   EXPECT_GT(fastest_transit, params.forward_speed);
   EXPECT_LE(fastest_transit, 0.7 + 1e-9);
@@ -477,6 +480,46 @@ TEST_F(LeafTest, coverage_done_only_when_every_leg_is_driven) {
   finished.touch_ups = CoverageProgress::kTouchUpPasses;
   board->set<CoverageProgress>("coverage", finished);
   EXPECT_EQ(done.tick(), bt::Status::kSuccess);
+}
+
+TEST_F(LeafTest, plan_touch_up_without_a_pose_or_plan_fails_with_the_reason) {
+  bt::Tree touch_up = build(kTouchUp);
+  EXPECT_EQ(touch_up.tick(), bt::Status::kFailure);
+  EXPECT_EQ(*board->get<std::string>("error"), "no coverage plan to touch up");
+}
+
+TEST_F(LeafTest, plan_touch_up_plans_each_pass_once_the_plan_in_hand_is_driven) {
+  plan();
+  bt::Tree touch_up = build(kTouchUp);
+  const std::size_t rows = progress().plan.legs.size();
+  EXPECT_EQ(touch_up.tick(), bt::Status::kSuccess);  // the rows are not driven: nothing planned
+  EXPECT_EQ(progress().touch_ups, 0);
+  EXPECT_EQ(progress().plan.legs.size(), rows);
+
+  bt::Tree follow = build(kFollow);
+  bt::Status status = bt::Status::kRunning;
+  for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) status = step(follow);
+  ASSERT_EQ(status, bt::Status::kSuccess);
+  EXPECT_EQ(touch_up.tick(), bt::Status::kSuccess);  // the large spots the rows missed
+  EXPECT_EQ(progress().touch_ups, 1);
+  EXPECT_EQ(progress().leg, 0u);
+  EXPECT_FALSE(progress().plan.legs.empty());
+  EXPECT_FALSE(progress().done());
+  const std::size_t first_pass = progress().plan.legs.size();
+  EXPECT_EQ(touch_up.tick(), bt::Status::kSuccess);  // not driven yet: planned once only
+  EXPECT_EQ(progress().touch_ups, 1);
+  EXPECT_EQ(progress().plan.legs.size(), first_pass);
+
+  // Both passes driven: a third PlanTouchUp plans nothing, and the cleaning is done.
+  for (int pass = 1; pass <= CoverageProgress::kTouchUpPasses; ++pass) {
+    status = bt::Status::kRunning;
+    for (int i = 0; i < 60 * 300 && status == bt::Status::kRunning; ++i) status = step(follow);
+    ASSERT_EQ(status, bt::Status::kSuccess);
+    EXPECT_EQ(touch_up.tick(), bt::Status::kSuccess);
+  }
+  EXPECT_EQ(progress().touch_ups, CoverageProgress::kTouchUpPasses);
+  EXPECT_TRUE(progress().done());
+  EXPECT_GT(sim.coverage(), 0.97);
 }
 
 /// The cleaning tree as roomba_bt and roomba_coverage run it.

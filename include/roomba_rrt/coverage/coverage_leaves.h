@@ -63,18 +63,23 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   and so are the way round an island and the segments of the loop along the walls:
 ///   joined_legs.h), turning in place towards each leg's start where the previous one ended. A
 ///   finished leg advances `coverage.leg` (a finished row also clears `tries`). It marks the floor
-///   under the robot in `coverage.swept` on every tick; once the rows are driven it goes back for
-///   the spots they missed (CoveragePlanner::touchUp: the corners its U-turns cut, skipped rows,
-///   the band along a wall within the clearance), in two passes
-///   (CoverageProgress::kTouchUpSpotAreas). A row along a wall (Leg::along_wall: closer than the
+///   under the robot in `coverage.swept` on every tick. A row along a wall (Leg::along_wall:
+///   closer than the
 ///   clearance) is driven on its own, never joined to the legs around it, with a guard of its own
 ///   (half the edge clearance, three ticks ahead). RUNNING with the command; SUCCESS when every
-///   leg of both touch-up passes is driven too; FAILURE with `error` when the bumper is pressed
+///   leg of the plan in hand is driven; FAILURE with `error` when the bumper is pressed
 ///   while it follows ("bumped", counted in `bumps`; a contact there when it starts is not a
 ///   bump: the robot put down against a wall drives off, where backing up would slide along the
 ///   wall), the robot strayed from the leg, the guard held it still ("blocked"), it made no
 ///   progress along the leg for 10 s (its wheels spin), or there is no progress or pose. The
 ///   leg it failed in stays `coverage.leg`, for ResumeCoverage.
+/// - PlanTouchUp coverage="{coverage}" pose="{pose}" error="{error}": once the plan in hand is
+///   driven, plans the next touch-up pass from the floor the robot marked (CoveragePlanner::
+///   touchUp, touch_up.h: the corners its U-turns cut, skipped rows, the band along a wall within
+///   the clearance) and writes it as the plan to follow (`coverage.touch_ups` counts the passes:
+///   CoverageProgress::kTouchUpSpotAreas, the large spots first). SUCCESS, also without planning
+///   while the plan in hand is not driven or every pass is planned; FAILURE when there is no
+///   progress or pose. The cleaning tree follows each PlanTouchUp with a FollowCoverage.
 /// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
 ///   of the plan from where the robot stands (CoveragePlanner::resume from `coverage.leg`: the
 ///   rest of the row it was in, or the row its transit led to). After `skip_after` resumes
