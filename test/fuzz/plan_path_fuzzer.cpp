@@ -22,7 +22,7 @@
 #include "../../src/nodes/planner_ros.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/lab/scenarios.h"
 
 namespace {
 

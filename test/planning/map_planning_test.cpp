@@ -17,7 +17,7 @@
 #include "../common/shared_maps.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/planner.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/lab/scenarios.h"
 
 namespace roomba_rrt::planning {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "roomba_rrt/planning/matlab_random.h"
+#include "roomba_rrt/planning/lab/matlab_random.h"
 
 namespace roomba_rrt::planning {
 namespace {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "planning_test_support.h"
-#include "roomba_rrt/planning/brute_force_nearest_neighbors.h"
-#include "roomba_rrt/planning/grid_nearest_neighbors.h"
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/nearest_neighbors/brute_force_nearest_neighbors.h"
+#include "roomba_rrt/planning/nearest_neighbors/grid_nearest_neighbors.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 namespace roomba_rrt::planning {
 namespace {

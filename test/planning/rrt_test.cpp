@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "planning_test_support.h"
-#include "roomba_rrt/planning/monte_carlo.h"
-#include "roomba_rrt/planning/rrt.h"
+#include "roomba_rrt/planning/lab/monte_carlo.h"
+#include "roomba_rrt/planning/planners/rrt.h"
 
 namespace roomba_rrt::planning {
 namespace {
