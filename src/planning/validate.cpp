@@ -17,15 +17,10 @@ using util::show;
 
 using util::requireFinite;
 
-// Lengths and coordinates are in metres.
-void requireRange(std::string_view field, double v, double lo, double hi, const char* unit = "m") {
-  util::requireInRange(field, v, lo, hi, unit);
-}
-
 // Both of the above, for a coordinate.
 void requireCoordinate(std::string_view field, double v) {
   requireFinite(field, v);
-  requireRange(field, v, -kMaxCoordinate, kMaxCoordinate);
+  util::requireInRange(field, v, -kMaxCoordinate, kMaxCoordinate, "m");
 }
 
 bool withinCoordinateRange(double v) { return std::abs(v) <= kMaxCoordinate; }
@@ -100,10 +95,10 @@ void validateObstacles(const std::vector<Circle>& obstacles) {
     const std::string center = member(field, "center");
     requireFinite(member(center, "x"), c.center.x);
     requireFinite(member(center, "y"), c.center.y);
-    requireRange(member(center, "x"), c.center.x, -kMaxCoordinate, kMaxCoordinate);
-    requireRange(member(center, "y"), c.center.y, -kMaxCoordinate, kMaxCoordinate);
+    util::requireInRange(member(center, "x"), c.center.x, -kMaxCoordinate, kMaxCoordinate, "m");
+    util::requireInRange(member(center, "y"), c.center.y, -kMaxCoordinate, kMaxCoordinate, "m");
     requireFinite(member(field, "radius"), c.radius);
-    requireRange(member(field, "radius"), c.radius, 0, kMaxLength);
+    util::requireInRange(member(field, "radius"), c.radius, 0, kMaxLength, "m");
   }
 }
 
@@ -140,7 +135,7 @@ void validateRobotSize(const Problem& problem) {
        {std::pair<const char*, double>{"robot_radius", problem.robot_radius},
         {"clearance", problem.clearance}}) {
     requireFinite(field, value);
-    requireRange(field, value, 0, kMaxLength);
+    util::requireInRange(field, value, 0, kMaxLength, "m");
   }
   const Bounds inner = shrink(problem.bounds, robotMargin(problem));
   if (!(inner.x_min <= inner.x_max && inner.y_min <= inner.y_max)) {
@@ -170,7 +165,7 @@ void validateProblem(const Problem& problem) {
 
 void validateOptions(const PlannerOptions& o, int max_iterations_cap) {
   requireFinite("step", o.step);
-  requireRange("step", o.step, kMinStep, kMaxLength);
+  util::requireInRange("step", o.step, kMinStep, kMaxLength, "m");
   requireFinite("goal_bias", o.goal_bias);
   if (o.goal_bias < 0 || o.goal_bias > 1) {
     util::failRule("goal_bias", "in [0, 1]", o.goal_bias);
@@ -184,9 +179,9 @@ void validateOptions(const PlannerOptions& o, int max_iterations_cap) {
                                              std::to_string(max_iterations_cap));
   }
   requireFinite("goal_tolerance", o.goal_tolerance);
-  requireRange("goal_tolerance", o.goal_tolerance, 0, kMaxLength);
+  util::requireInRange("goal_tolerance", o.goal_tolerance, 0, kMaxLength, "m");
   requireFinite("max_planning_time", o.max_planning_time);
-  requireRange("max_planning_time", o.max_planning_time, 0, kMaxPlanningTime, "s");
+  util::requireInRange("max_planning_time", o.max_planning_time, 0, kMaxPlanningTime, "s");
   if (o.max_rejection_tries < 1) throw InvalidInput("max_rejection_tries", "must be >= 1");
   if (o.smoothing_tries < 0) throw InvalidInput("smoothing_tries", "must be >= 0");
 }

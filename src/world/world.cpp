@@ -32,10 +32,6 @@ using util::show;
 
 using util::requirePositive;
 
-void requireRange(const std::string& name, double value, double min, double max) {
-  util::requireInRange(name, value, min, max);
-}
-
 /// Every named coordinate under `prefix` ("initial_pose" + ".x") is within the supported range.
 void requireCoordinates(const std::string& prefix,
                         std::initializer_list<std::pair<const char*, double>> values) {
@@ -300,11 +296,11 @@ void validate(const World& world, PoseSource pose) {
   requirePositive("robot.radius", world.robot_radius, L::kMaxRobotRadius);
   requirePositive("robot.max_linear_speed", world.max_linear_speed, L::kMaxSpeed);
   requirePositive("robot.max_angular_speed", world.max_angular_speed, L::kMaxSpeed);
-  requireRange("step", world.step, L::kMinStep, L::kMaxStep);
-  requireRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
+  util::requireInRange("step", world.step, L::kMinStep, L::kMaxStep);
+  util::requireInRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
   requirePositive("command_timeout", world.command_timeout, L::kMaxCommandTimeout);
-  requireRange("real_time_factor", world.real_time_factor, L::kMinRealTimeFactor,
-               L::kMaxRealTimeFactor);
+  util::requireInRange("real_time_factor", world.real_time_factor, L::kMinRealTimeFactor,
+                       L::kMaxRealTimeFactor);
   const std::size_t furniture = furnitureCount(world);
   if (furniture > L::kMaxFurniture) {
     fail("furniture", "has " + std::to_string(furniture) + " pieces; at most " +
