@@ -75,8 +75,8 @@ std::vector<int> parseCounts(const std::string& flag, const std::string& text) {
 
 const char* coverageUsage() { return kUsage; }
 
-CoverageOptions parseCoverageArguments(int argc, const char* const* argv) {
-  CoverageOptions o;
+CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
+  CoverageArguments o;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "-h" || flag == "--help") {

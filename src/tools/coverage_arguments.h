@@ -7,7 +7,9 @@
 
 namespace roomba_rrt::tools {
 
-struct CoverageOptions {
+/// roomba_coverage's command line (parseCoverageArguments()); not coverage::CoverageOptions, which
+/// says how the planner covers the floor.
+struct CoverageArguments {
   std::string behavior;  ///< "fsm", "bt" or "coverage" (the cleaning tree); "" with --compare
   double duration = 600;
   unsigned seed = 1;
@@ -34,6 +36,6 @@ const char* coverageUsage();
 /// Parses `--flag value` pairs. Throws std::invalid_argument naming the flag on an unknown flag, a
 /// missing or malformed value, or flags that do not go together (--tree without bt or coverage,
 /// --csv or --png with --robots, --compare with --behavior, --tree, --csv, --png or --robots).
-CoverageOptions parseCoverageArguments(int argc, const char* const* argv);
+CoverageArguments parseCoverageArguments(int argc, const char* const* argv);
 
 }  // namespace roomba_rrt::tools

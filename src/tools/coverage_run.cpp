@@ -20,7 +20,7 @@ namespace {
 /// in).
 class Driver {
  public:
-  Driver(const CoverageOptions& o, const behavior::RoombaParams& params, unsigned seed,
+  Driver(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
          const Cleaning* cleaning) {
     if (o.behavior != "coverage") {
       lab_ = makeBehavior(o, params, seed);
@@ -74,7 +74,7 @@ bool finalIsCheckpoint(double duration, double step) {
   return false;
 }
 
-std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageOptions& o,
+std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageArguments& o,
                                                        const behavior::RoombaParams& params,
                                                        unsigned seed) {
   if (o.behavior == "fsm") return std::make_unique<behavior::RoombaFsm>(params, seed);
@@ -82,7 +82,7 @@ std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageOptions& o,
   return std::make_unique<behavior::RoombaBt>(params, seed, o.tree);
 }
 
-Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, unsigned seed,
+Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
              std::ofstream* csv, bool keep_path, sim::Simulator& simulator,
              const Cleaning* cleaning) {
   simulator.reset();
@@ -141,7 +141,7 @@ Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, uns
   return run;
 }
 
-FleetRun simulateFleet(const CoverageOptions& o, const behavior::RoombaParams& params,
+FleetRun simulateFleet(const CoverageArguments& o, const behavior::RoombaParams& params,
                        unsigned seed, sim::MultiRobotSimulator& simulator) {
   simulator.reset();
   std::vector<std::unique_ptr<behavior::RoombaBehavior>> behaviors;

@@ -34,7 +34,7 @@ inline constexpr double kTargets[] = {0.90, 0.95, 0.99};
 inline constexpr double kIdealMultiples[] = {1.5, 2.0};
 
 /// The FSM or the BT (the lab's tree, or --tree's) with the rotation angle's seed.
-std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageOptions& o,
+std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageArguments& o,
                                                        const behavior::RoombaParams& params,
                                                        unsigned seed);
 
@@ -80,7 +80,7 @@ struct Run {
 /// One run of one robot from the simulator's reset state; writes the CSV when `csv` is given and
 /// keeps the path when `keep_path`. `cleaning` is needed for --behavior coverage and gives the
 /// reachable floor's measures (null: only the lab's measures, for fsm and bt).
-Run simulate(const CoverageOptions& o, const behavior::RoombaParams& params, unsigned seed,
+Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
              std::ofstream* csv, bool keep_path, sim::Simulator& simulator,
              const Cleaning* cleaning = nullptr);
 
@@ -93,7 +93,7 @@ struct FleetRun {
 
 /// The lab's step order for every robot at once: all bumpers, every behaviour, every move. Robot
 /// k of seed s runs with seed s + 1000 k.
-FleetRun simulateFleet(const CoverageOptions& o, const behavior::RoombaParams& params,
+FleetRun simulateFleet(const CoverageArguments& o, const behavior::RoombaParams& params,
                        unsigned seed, sim::MultiRobotSimulator& simulator);
 
 }  // namespace roomba_rrt::tools

@@ -36,7 +36,7 @@ namespace {
 
 /// The world as the header names it: its file, and the region --crop kept (whole cells inside
 /// the region asked: up to a cell smaller, world::cropped).
-std::string worldLabel(const CoverageOptions& o, const world::World& world) {
+std::string worldLabel(const CoverageArguments& o, const world::World& world) {
   if (o.crop.empty()) return o.world;
   char region[160];
   std::snprintf(region, sizeof region, " cut to (%.6g, %.6g) to (%.6g, %.6g)", world.origin.x,
@@ -52,7 +52,7 @@ double secondsSince(std::chrono::steady_clock::time_point begin) {
 
 /// --robots (or a world naming robots): every count × every seed, a table of union coverage, and
 /// the plot.
-int runFleets(const CoverageOptions& o, const world::World& world, const RoombaParams& params) {
+int runFleets(const CoverageArguments& o, const world::World& world, const RoombaParams& params) {
   if (!o.csv.empty() || !o.png.empty()) {
     throw std::invalid_argument("--csv and --png draw one unnamed robot; " + o.world +
                                 " names robots: use --plot");
@@ -121,7 +121,7 @@ int runFleets(const CoverageOptions& o, const world::World& world, const RoombaP
 
 /// One unnamed robot: every seed, a table of coverage, the CSV of the first seed and the picture
 /// of the typical one.
-int runOne(const CoverageOptions& o, const world::World& world, const RoombaParams& params) {
+int runOne(const CoverageArguments& o, const world::World& world, const RoombaParams& params) {
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
@@ -237,7 +237,7 @@ struct ReachableStatistics {
 /// reachable floor (the floor cells the disc swept, over the coverage planner's reachable area)
 /// at the checkpoints and at 1.5× and 2× the ideal time, the time to 90 / 95 / 99 % of it and the
 /// bumps per run, one column per behaviour; coverage's CSV and picture; --plot: the curves.
-int runReachable(const CoverageOptions& options, const world::World& world,
+int runReachable(const CoverageArguments& options, const world::World& world,
                  const RoombaParams& params, const std::vector<std::string>& behaviors) {
   std::ofstream csv;
   if (!options.csv.empty()) {
@@ -252,7 +252,7 @@ int runReachable(const CoverageOptions& options, const world::World& world,
   ProgressBar progress(options.seeds * static_cast<int>(behaviors.size()), "runs");
   const auto begin = std::chrono::steady_clock::now();
   for (const std::string& behavior : behaviors) {
-    CoverageOptions o = options;
+    CoverageArguments o = options;
     o.behavior = behavior;
     ReachableStatistics column;
     column.behavior = behavior;
@@ -286,7 +286,7 @@ int runReachable(const CoverageOptions& options, const world::World& world,
   if (!options.png.empty()) {
     const unsigned drawn_seed =
         options.seed + static_cast<unsigned>(closestToMean(columns.front().finals));
-    CoverageOptions o = options;
+    CoverageArguments o = options;
     o.behavior = behaviors.front();
     const Run drawn = simulate(o, params, drawn_seed, nullptr, true, simulator, &cleaning);
     std::snprintf(title, sizeof title,
@@ -375,7 +375,7 @@ int runReachable(const CoverageOptions& options, const world::World& world,
 }
 
 int run(int argc, char** argv) {
-  const CoverageOptions o = parseCoverageArguments(argc, argv);
+  const CoverageArguments o = parseCoverageArguments(argc, argv);
   if (o.help) {
     std::fputs(coverageUsage(), stdout);
     return 0;

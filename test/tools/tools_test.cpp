@@ -92,7 +92,7 @@ TEST(CoverageStatistics, the_band_of_one_seed_has_no_width) {
   EXPECT_EQ(two.std[1], 0.0);
 }
 
-CoverageOptions parse(std::vector<const char*> args) {
+CoverageArguments parse(std::vector<const char*> args) {
   args.insert(args.begin(), "roomba_coverage");
   return parseCoverageArguments(static_cast<int>(args.size()), args.data());
 }
@@ -100,7 +100,7 @@ CoverageOptions parse(std::vector<const char*> args) {
 TEST(CoverageArguments, coverage_is_a_behaviour_and_compare_runs_all_three) {
   EXPECT_EQ(parse({"--behavior", "coverage"}).behavior, "coverage");
   EXPECT_EQ(parse({"--behavior", "coverage", "--tree", "t.xml"}).tree, "t.xml");
-  const CoverageOptions o = parse({"--compare", "--seeds", "3", "--plot", "p.png"});
+  const CoverageArguments o = parse({"--compare", "--seeds", "3", "--plot", "p.png"});
   EXPECT_TRUE(o.compare);
   EXPECT_TRUE(o.behavior.empty());
   EXPECT_EQ(o.seeds, 3);
@@ -108,7 +108,7 @@ TEST(CoverageArguments, coverage_is_a_behaviour_and_compare_runs_all_three) {
 }
 
 TEST(CoverageArguments, defaults_are_the_lab_run_in_the_config_room) {
-  const CoverageOptions o = parse({"--behavior", "fsm"});
+  const CoverageArguments o = parse({"--behavior", "fsm"});
   EXPECT_EQ(o.duration, 600);
   EXPECT_EQ(o.seed, 1u);
   EXPECT_EQ(o.seeds, 1);
