@@ -58,7 +58,7 @@ std::vector<Leg> uTurn() {
   return {row({1, 1}, {5, 1}), transit({{5, 1}, {5, 1.33}}), row({5, 1.33}, {1, 1.33})};
 }
 
-TEST_F(JoinedLegsTest, AUTurnIsOnePathWithItsCornersRounded) {
+TEST_F(JoinedLegsTest, a_u_turn_is_one_path_with_its_corners_rounded) {
   const std::vector<Leg> legs = uTurn();
   const JoinedLegs joined = join(legs, 0);
   EXPECT_TRUE(joined.cleaning);
@@ -83,7 +83,7 @@ TEST_F(JoinedLegsTest, AUTurnIsOnePathWithItsCornersRounded) {
   EXPECT_LT(std::hypot(second.x - 5, second.y - 1.33), 0.1);
 }
 
-TEST_F(JoinedLegsTest, AStepDrivenFromItsStartTakesTheRowItLeadsTo) {
+TEST_F(JoinedLegsTest, a_step_driven_from_its_start_takes_the_row_it_leads_to) {
   const std::vector<Leg> legs = uTurn();
   const JoinedLegs joined = join(legs, 1);
   EXPECT_TRUE(joined.cleaning);  // at the cleaning speed: it is part of a U-turn
@@ -91,7 +91,7 @@ TEST_F(JoinedLegsTest, AStepDrivenFromItsStartTakesTheRowItLeadsTo) {
   EXPECT_EQ(joined.path.back().x, 1);
 }
 
-TEST_F(JoinedLegsTest, ALongTransitIsDrivenOnItsOwnAtTheTransitSpeed) {
+TEST_F(JoinedLegsTest, a_long_transit_is_driven_on_its_own_at_the_transit_speed) {
   const std::vector<Leg> legs = {row({1, 1}, {5, 1}), transit({{5, 1}, {5, 2}, {1, 2}}),
                                  row({1, 2}, {5, 2})};
   const JoinedLegs from_row = join(legs, 0);
@@ -106,7 +106,7 @@ TEST_F(JoinedLegsTest, ALongTransitIsDrivenOnItsOwnAtTheTransitSpeed) {
   EXPECT_TRUE(samePoints(from_transit.path, legs[1].points));
 }
 
-TEST_F(JoinedLegsTest, ARowAlongAWallIsNeverJoined) {
+TEST_F(JoinedLegsTest, a_row_along_a_wall_is_never_joined) {
   std::vector<Leg> legs = uTurn();
   legs[2].along_wall = true;  // its own guard: the legs round it are driven apart
   const JoinedLegs joined = join(legs, 0);
@@ -114,7 +114,7 @@ TEST_F(JoinedLegsTest, ARowAlongAWallIsNeverJoined) {
   EXPECT_TRUE(samePoints(joined.path, legs[0].points));
 }
 
-TEST_F(JoinedLegsTest, ATouchUpJoinsOnlyWhereThePathTurnsGently) {
+TEST_F(JoinedLegsTest, a_touch_up_joins_only_where_the_path_turns_gently) {
   // Two stops on one line, the second behind the first: the step back turns by π.
   const std::vector<Leg> back = {row({3, 2}, {4, 2}), transit({{4, 2}, {3.8, 2}}),
                                  row({3.8, 2}, {2.5, 2})};
@@ -126,7 +126,7 @@ TEST_F(JoinedLegsTest, ATouchUpJoinsOnlyWhereThePathTurnsGently) {
   EXPECT_EQ(join(ahead, 0, /*touching_up=*/true).ends.size(), 2u);
 }
 
-TEST_F(JoinedLegsTest, TheWayRoundAnIslandJoinsTwoPiecesOfARow) {
+TEST_F(JoinedLegsTest, the_way_round_an_island_joins_two_pieces_of_a_row) {
   // A row cut by an island between x = 2.5 and 3.5, the way round it 0.4 m above.
   const Polyline round = {{2.3, 2}, {2.5, 2.4}, {3.5, 2.4}, {3.7, 2}};
   const std::vector<Leg> legs = {row({1, 2}, {2.3, 2}), transit(round), row({3.7, 2}, {5, 2})};
@@ -146,7 +146,7 @@ TEST_F(JoinedLegsTest, TheWayRoundAnIslandJoinsTwoPiecesOfARow) {
   EXPECT_TRUE(join(far, 0).ends.empty());
 }
 
-TEST_F(JoinedLegsTest, TheLoopAlongTheWallsIsDrivenWithoutStopping) {
+TEST_F(JoinedLegsTest, the_loop_along_the_walls_is_driven_without_stopping) {
   // Segments of a loop are rows, each starting where the one before ended.
   const std::vector<Leg> legs = {row({1, 1}, {5, 1}), row({5, 1}, {5, 3}), row({5, 3}, {1, 3}),
                                  row({1, 3}, {1, 1.2})};

@@ -54,7 +54,7 @@ void expectSameRange(const std::string& name, double min, double max,
   EXPECT_TRUE(accepts(check, 0.5 * (min + max))) << "the middle";
 }
 
-TEST(ReconfigureRanges, RoombaBehaviorCfgIsRoombaParamLimits) {
+TEST(ReconfigureRanges, roomba_behavior_cfg_is_roomba_param_limits) {
   using C = RoombaBehaviorConfig;
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
@@ -82,7 +82,7 @@ TEST(ReconfigureRanges, RoombaBehaviorCfgIsRoombaParamLimits) {
   expectSameRange("spiral_factor", lo.spiral_factor, hi.spiral_factor, field(&P::spiral_factor));
 }
 
-TEST(ReconfigureRanges, RoombaSimCfgIsWorldLimits) {
+TEST(ReconfigureRanges, roomba_sim_cfg_is_world_limits) {
   using C = RoombaSimConfig;
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
@@ -106,7 +106,7 @@ TEST(ReconfigureRanges, RoombaSimCfgIsWorldLimits) {
                   field(&world::World::max_angular_speed), End::kOpen);
 }
 
-TEST(ReconfigureRanges, NavFollowerCfgIsFollowerLimits) {
+TEST(ReconfigureRanges, nav_follower_cfg_is_follower_limits) {
   using C = NavFollowerConfig;
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
@@ -129,7 +129,7 @@ TEST(ReconfigureRanges, NavFollowerCfgIsFollowerLimits) {
   expectSameRange("yaw_tolerance", lo.yaw_tolerance, hi.yaw_tolerance, field(&P::yaw_tolerance));
 }
 
-TEST(ReconfigureRanges, RrtPlannerCfgIsThePlanningLibrarysValidation) {
+TEST(ReconfigureRanges, rrt_planner_cfg_is_the_planning_librarys_validation) {
   using C = RrtPlannerConfig;
   const C& lo = C::__getMin__();
   const C& hi = C::__getMax__();
@@ -179,7 +179,7 @@ TEST(ReconfigureRanges, RrtPlannerCfgIsThePlanningLibrarysValidation) {
   EXPECT_EQ(hi.clearance, planning::kMaxLength);
 }
 
-TEST(ReconfigureRanges, RrtPlannerChoicesAreTheLibrarysNames) {
+TEST(ReconfigureRanges, rrt_planner_choices_are_the_librarys_names) {
   // The enum's values of cfg/RrtPlanner.cfg parse; the defaults are the library's.
   for (const char* name : {"rrt", "rrt_connect", "rrt_star"}) {
     EXPECT_TRUE(planning::parseAlgorithm(name).has_value()) << name;

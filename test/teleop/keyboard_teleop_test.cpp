@@ -13,7 +13,7 @@ using robot::Velocity;
 
 std::vector<Key> keys(std::initializer_list<Key> list) { return list; }
 
-TEST(KeyDecoder, ReadsLettersBothCasesAndIgnoresOtherBytes) {
+TEST(KeyDecoder, reads_letters_both_cases_and_ignores_other_bytes) {
   KeyDecoder decoder;
   EXPECT_EQ(
       decoder.feed("wWsSaAdD xXqQ"),
@@ -22,38 +22,38 @@ TEST(KeyDecoder, ReadsLettersBothCasesAndIgnoresOtherBytes) {
   EXPECT_TRUE(decoder.feed("hjkl123\n").empty());
 }
 
-TEST(KeyDecoder, CtrlCAndCtrlDQuit) {
+TEST(KeyDecoder, ctrl_c_and_ctrl_d_quit) {
   KeyDecoder decoder;
   EXPECT_EQ(decoder.feed("\x03\x04"), keys({Key::kQuit, Key::kQuit}));
 }
 
-TEST(KeyDecoder, ReadsArrowKeysInBothCursorModes) {
+TEST(KeyDecoder, reads_arrow_keys_in_both_cursor_modes) {
   KeyDecoder decoder;
   EXPECT_EQ(decoder.feed("\x1b[A\x1b[B\x1b[C\x1b[D"),
             keys({Key::kForward, Key::kBackward, Key::kRight, Key::kLeft}));
   EXPECT_EQ(decoder.feed("\x1bOA\x1bOD"), keys({Key::kForward, Key::kLeft}));
 }
 
-TEST(KeyDecoder, AssemblesAnArrowSplitAcrossReads) {
+TEST(KeyDecoder, assembles_an_arrow_split_across_reads) {
   KeyDecoder decoder;
   EXPECT_TRUE(decoder.feed("\x1b").empty());
   EXPECT_TRUE(decoder.feed("[").empty());
   EXPECT_EQ(decoder.feed("Aw"), keys({Key::kForward, Key::kForward}));
 }
 
-TEST(KeyDecoder, ModifiedArrowsAreArrowsAndOtherSequencesAreDropped) {
+TEST(KeyDecoder, modified_arrows_are_arrows_and_other_sequences_are_dropped) {
   KeyDecoder decoder;
   // Ctrl+Up (ESC [ 1 ; 5 A) is still up; F5 (ESC [ 1 5 ~) is no key, and the w after it counts.
   EXPECT_EQ(decoder.feed("\x1b[1;5A"), keys({Key::kForward}));
   EXPECT_EQ(decoder.feed("\x1b[15~w"), keys({Key::kForward}));
 }
 
-TEST(KeyDecoder, ALoneEscapeDoesNotSwallowTheNextKey) {
+TEST(KeyDecoder, a_lone_escape_does_not_swallow_the_next_key) {
   KeyDecoder decoder;
   EXPECT_EQ(decoder.feed("\x1bq"), keys({Key::kQuit}));
 }
 
-TEST(ApplyKey, EachPressIsOneStepAndTheCommandStays) {
+TEST(ApplyKey, each_press_is_one_step_and_the_command_stays) {
   const TeleopLimits limits;
   Velocity c;
   for (int i = 0; i < 3; ++i) c = applyKey(c, Key::kForward, limits);
@@ -70,7 +70,7 @@ TEST(ApplyKey, EachPressIsOneStepAndTheCommandStays) {
   EXPECT_EQ(c.w, 0);
 }
 
-TEST(ApplyKey, BackwardsPastZeroReversesAndComesBackToExactlyZero) {
+TEST(ApplyKey, backwards_past_zero_reverses_and_comes_back_to_exactly_zero) {
   const TeleopLimits limits;
   Velocity c;
   for (int i = 0; i < 7; ++i) c = applyKey(c, Key::kForward, limits);
@@ -80,7 +80,7 @@ TEST(ApplyKey, BackwardsPastZeroReversesAndComesBackToExactlyZero) {
   EXPECT_NEAR(c.v, -0.1, 1e-12);
 }
 
-TEST(ApplyKey, NeverExceedsTheRobotsLimits) {
+TEST(ApplyKey, never_exceeds_the_robots_limits) {
   TeleopLimits limits;
   limits.max_linear_speed = 0.35;
   limits.max_angular_speed = 1.0;
@@ -95,14 +95,14 @@ TEST(ApplyKey, NeverExceedsTheRobotsLimits) {
   EXPECT_NEAR(c.v, -0.3, 1e-12);
 }
 
-TEST(ApplyKey, QuitLeavesTheCommandToTheCaller) {
+TEST(ApplyKey, quit_leaves_the_command_to_the_caller) {
   const Velocity c{0.2, -0.5};
   const Velocity after = applyKey(c, Key::kQuit, TeleopLimits{});
   EXPECT_EQ(after.v, 0.2);
   EXPECT_EQ(after.w, -0.5);
 }
 
-TEST(Validate, NamesTheFieldThatCannotBeUsed) {
+TEST(Validate, names_the_field_that_cannot_be_used) {
   TeleopLimits limits;
   limits.linear_step = -0.1;
   EXPECT_THROW(
@@ -124,7 +124,7 @@ TEST(Validate, NamesTheFieldThatCannotBeUsed) {
   EXPECT_NO_THROW(validate(TeleopLimits{}));
 }
 
-TEST(StatusLine, ShowsTheCommandAndTheBumper) {
+TEST(StatusLine, shows_the_command_and_the_bumper) {
   EXPECT_EQ(statusLine({0.3, -0.5}, {}, false),
             "v +0.30 m/s  w -0.50 rad/s  bumper: no bumper message yet");
   EXPECT_EQ(statusLine({0, 0}, {}, true), "v +0.00 m/s  w +0.00 rad/s  bumper: free");
@@ -136,7 +136,7 @@ TEST(StatusLine, ShowsTheCommandAndTheBumper) {
             "v +1.00 m/s  w +0.00 rad/s  bumper: pressed (right)");
 }
 
-TEST(HelpText, NamesEveryKeyAndTheLimits) {
+TEST(HelpText, names_every_key_and_the_limits) {
   const std::string help = helpText(TeleopLimits{});
   for (const char* word :
        {"w / up", "s / down", "a / left", "d / right", "space", "q / Ctrl-C", "1.00", "2.00"}) {
