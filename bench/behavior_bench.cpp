@@ -15,6 +15,7 @@
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 #include "roomba_switch.h"
 

@@ -15,20 +15,21 @@
 
 #include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace {
 
 using namespace roomba_rrt;
 
 void planAndReport(benchmark::State& state, const world::World& world) {
-  const coverage::Point2 start{world.initial_pose.x, world.initial_pose.y};
+  const coverage::Point2 start{world.robot().initial_pose.x, world.robot().initial_pose.y};
   coverage::CoveragePlan plan;
   for (auto _ : state) {
     const coverage::CoveragePlanner planner(world);
     plan = planner.plan(start);
     benchmark::DoNotOptimize(plan.legs.data());
   }
-  const double ideal = plan.reachable_area / (2 * world.robot_radius);
+  const double ideal = plan.reachable_area / (2 * world.robot().radius);
   state.counters["coverage_pct"] = 100 * plan.swept_area / plan.reachable_area;
   state.counters["plan_m"] = plan.length();
   state.counters["ideal_m"] = ideal;
@@ -56,7 +57,7 @@ void BM_CoveragePlanWillowFull(benchmark::State& state) {
     return;
   }
   world::World world = world::loadWorld(yaml);
-  world.initial_pose = {-12.0, 0.0, 0.0};  // in the offices on the left
+  world.robot().initial_pose = {-12.0, 0.0, 0.0};  // in the offices on the left
   planAndReport(state, world);
 }
 BENCHMARK(BM_CoveragePlanWillowFull)->Unit(benchmark::kMillisecond)->Iterations(1);

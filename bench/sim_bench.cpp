@@ -13,6 +13,7 @@
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace {
 
@@ -131,7 +132,7 @@ void BM_MarkCoverageDisc(benchmark::State& state) {
   CoverageGrid grid(world);
   double x = 1.0;
   for (auto _ : state) {
-    grid.markDisc(x, 2.4, world.robot_radius);
+    grid.markDisc(x, 2.4, world.robot().radius);
     x = x > 5.0 ? 1.0 : x + 0.008;
   }
 }

@@ -2,7 +2,7 @@
 # the simulator's settings (config/roomba_world.yaml documents the format). ROS-free, below both
 # the simulator and the planner, which read the same files.
 
-add_library(roomba_world src/world/world.cpp)
+add_library(roomba_world src/world/world.cpp src/world/world_file.cpp)
 target_include_directories(roomba_world PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_world PUBLIC roomba_geometry yaml-cpp)
 

@@ -72,17 +72,18 @@ std::optional<world::World> withoutIslands(const FreeSpace& space) {
     return space.inside(i, j) && island[space.index(i, j)];
   };
   world::World open = space.world();
-  open.circles.erase(std::remove_if(open.circles.begin(), open.circles.end(),
-                                    [&](const world::Circle& c) { return onIsland(c.center); }),
-                     open.circles.end());
-  open.rectangles.erase(
-      std::remove_if(open.rectangles.begin(), open.rectangles.end(),
+  open.room.circles.erase(
+      std::remove_if(open.room.circles.begin(), open.room.circles.end(),
+                     [&](const world::Circle& c) { return onIsland(c.center); }),
+      open.room.circles.end());
+  open.room.rectangles.erase(
+      std::remove_if(open.room.rectangles.begin(), open.room.rectangles.end(),
                      [&](const world::Rectangle& r) {
                        return onIsland({(r.min_x + r.max_x) / 2, (r.min_y + r.max_y) / 2});
                      }),
-      open.rectangles.end());
-  if (open.map) {
-    auto grid = std::make_shared<geometry::OccupancyGrid>(*open.map);
+      open.room.rectangles.end());
+  if (open.room.map) {
+    auto grid = std::make_shared<geometry::OccupancyGrid>(*open.room.map);
     for (int j = 0; j < grid->height; ++j) {
       for (int i = 0; i < grid->width; ++i) {
         const Point2 c{grid->origin.x + (i + 0.5) * grid->resolution,
@@ -93,7 +94,7 @@ std::optional<world::World> withoutIslands(const FreeSpace& space) {
         }
       }
     }
-    open.map = grid;
+    open.room.map = grid;
   }
   return open;
 }
@@ -116,14 +117,14 @@ double CoveragePlan::rowLength() const {
 
 namespace {
 const CoverageOptions& validated(const world::World& world, const CoverageOptions& options) {
-  util::requirePositive("swath", options.swath, 2 * world.robot_radius, "m");
-  util::requireInRange("resolution", options.resolution, 1e-3, world.robot_radius, "m");
+  util::requirePositive("swath", options.swath, 2 * world.robot().radius, "m");
+  util::requireInRange("resolution", options.resolution, 1e-3, world.robot().radius, "m");
   util::require(options.swath >= 2 * options.resolution, "swath", "at least twice the resolution",
                 options.swath);
-  util::requireInRange("clearance", options.clearance, 0.0, world.robot_radius, "m");
-  util::requireInRange("edge_clearance", options.edge_clearance, 0.0, world.robot_radius, "m");
-  const double points =
-      std::ceil(world.width / options.resolution) * std::ceil(world.height / options.resolution);
+  util::requireInRange("clearance", options.clearance, 0.0, world.robot().radius, "m");
+  util::requireInRange("edge_clearance", options.edge_clearance, 0.0, world.robot().radius, "m");
+  const double points = std::ceil(world.room.width / options.resolution) *
+                        std::ceil(world.room.height / options.resolution);
   util::require(points <= kMaxLatticePoints, "resolution",
                 "coarse enough for at most 2e7 lattice points in this world", options.resolution);
   return options;
@@ -135,7 +136,7 @@ CoverageOptions cleaningOptions(const world::World& world) {
   options.resolution = world.coverage_cell_size;
   // The strips of neighbouring rows overlap: the Roomba's 0.335 m for its 0.17 m radius.
   options.swath =
-      std::max(2 * world.robot_radius - CoverageOptions::kMinOverlap, 2 * options.resolution);
+      std::max(2 * world.robot().radius - CoverageOptions::kMinOverlap, 2 * options.resolution);
   return options;
 }
 

@@ -69,12 +69,12 @@ class SearchRecords {
 
 FreeSpace::FreeSpace(const world::World& world, double clearance, double resolution)
     : world_(world),
-      robot_radius_(world.robot_radius),
-      radius_(world.robot_radius + clearance),
+      robot_radius_(world.robot().radius),
+      radius_(world.robot().radius + clearance),
       h_(resolution),
-      origin_(world.origin) {
-  width_ = std::max(1, static_cast<int>(std::ceil(world.width / h_ - 1e-9)));
-  height_ = std::max(1, static_cast<int>(std::ceil(world.height / h_ - 1e-9)));
+      origin_(world.room.origin) {
+  width_ = std::max(1, static_cast<int>(std::ceil(world.room.width / h_ - 1e-9)));
+  height_ = std::max(1, static_cast<int>(std::ceil(world.room.height / h_ - 1e-9)));
   const double half_diagonal_sq = h_ * h_ / 2;
   const double slack = half_diagonal_sq / radius_ + kSlackTolerance;  // δ (see the header)
   classes_.assign(size(), kBlocked);
@@ -130,21 +130,21 @@ FreeSpace::FreeSpace(const world::World& world, double clearance, double resolut
 bool FreeSpace::segmentFree(const Point2& a, const Point2& b, double radius) const {
   const double r = radius - world::kPenetrationTolerance;
   // The walls bound a convex box of centres: the segment is inside when both ends are.
-  const double x0 = world_.origin.x, y0 = world_.origin.y;
+  const double x0 = world_.room.origin.x, y0 = world_.room.origin.y;
   for (const Point2& p : {a, b}) {
-    if (p.x < x0 + r || p.y < y0 + r || p.x > x0 + world_.width - r ||
-        p.y > y0 + world_.height - r) {
+    if (p.x < x0 + r || p.y < y0 + r || p.x > x0 + world_.room.width - r ||
+        p.y > y0 + world_.room.height - r) {
       return false;
     }
   }
   const geometry::Segment s{a, b};
-  for (const world::Circle& c : world_.circles) {
+  for (const world::Circle& c : world_.room.circles) {
     if (geometry::segmentMeets(s, c, r)) return false;
   }
-  for (const world::Rectangle& box : world_.rectangles) {
+  for (const world::Rectangle& box : world_.room.rectangles) {
     if (geometry::segmentMeets(s, box, r)) return false;
   }
-  return !(world_.map && geometry::segmentMeetsBlocked(*world_.map, s, r));
+  return !(world_.room.map && geometry::segmentMeetsBlocked(*world_.room.map, s, r));
 }
 
 std::optional<int> FreeSpace::connect(const Point2& p, Class least) const {

@@ -19,6 +19,7 @@
 #include <roomba_rrt/PlanCoverage.h>
 #include <roomba_rrt/util/require.h>
 #include <roomba_rrt/world/world.h>
+#include <roomba_rrt/world/world_file.h>
 
 #include "coverage_ros.h"
 #include "map_messages.h"
@@ -36,12 +37,12 @@ class CoveragePlannerNode {
         params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
     defaults_.room = std::make_shared<const world::World>(
         world::loadWorld(world_file, world::PoseSource::kElsewhere));
-    map_robot_radius_ = params.get("robot_radius", defaults_.room->robot_radius);
+    map_robot_radius_ = params.get("robot_radius", defaults_.room->robot().radius);
     util::requireInRange("~robot_radius", map_robot_radius_, 1e-3,
                          world::WorldLimits::kMaxRobotRadius, "m");
     defaults_.clearance = params.get("clearance", defaults_.clearance);
     util::requireInRange("~clearance", defaults_.clearance, 0.0,
-                         std::min(defaults_.room->robot_radius, map_robot_radius_), "m");
+                         std::min(defaults_.room->robot().radius, map_robot_radius_), "m");
     defaults_.frame_id = params.get<std::string>("frame_id", "map");
     const std::string map_topic = params.get<std::string>("map_topic", "/map");
     path_pub_ = pnh.advertise<nav_msgs::Path>("coverage_path", 1, true);

@@ -29,14 +29,14 @@ world::World requestedWorld(const PlanCoverage::Request& r, const CoverageDefaul
   if (r.robot_radius != 0) {
     util::requireInRange("robot_radius", r.robot_radius, 1e-3, world::WorldLimits::kMaxRobotRadius,
                          "m");
-    w.robot_radius = r.robot_radius;
+    w.robot().radius = r.robot_radius;
   }
   if (r.x_min != 0 || r.x_max != 0 || r.y_min != 0 || r.y_max != 0) {
     w = world::cropped(std::move(w), {r.x_min, r.y_min, r.x_max, r.y_max}, "x_min..y_max");
   }
   try {
-    world::validate(w, world::PoseSource::kElsewhere);
-  } catch (const util::InvalidInput& e) {  // ~world_file's world was valid: the request's fault
+    world::validateRoom(w, w.robot().radius);  // the room it describes, not the robots' rules
+  } catch (const util::InvalidInput& e) {      // ~world_file's world was valid: the request's fault
     const std::string field = r.robot_radius != 0 ? "robot_radius" : "x_min..y_max";
     throw util::InvalidInput(field, "the world is not valid with it: " + std::string(e.what()));
   }
@@ -47,13 +47,13 @@ world::World requestedWorld(const PlanCoverage::Request& r, const CoverageDefaul
 coverage::CoverageOptions requestedOptions(const PlanCoverage::Request& r,
                                            const CoverageDefaults& d, const world::World& w) {
   coverage::CoverageOptions o = coverage::cleaningOptions(w);
-  if (w.robot_radius < o.resolution) {  // the lattice the world's floor is sampled on
+  if (w.robot().radius < o.resolution) {  // the lattice the world's floor is sampled on
     throw util::InvalidInput("robot_radius", "must be at least the world's lattice edge (" +
                                                  util::show(o.resolution) + " m), got " +
-                                                 util::show(w.robot_radius));
+                                                 util::show(w.robot().radius));
   }
   o.clearance = r.clearance != 0 ? r.clearance : d.clearance;
-  if (r.clearance != 0) util::requireInRange("clearance", r.clearance, 0.0, w.robot_radius, "m");
+  if (r.clearance != 0) util::requireInRange("clearance", r.clearance, 0.0, w.robot().radius, "m");
   if (r.swath != 0) o.swath = r.swath;  // else the robot's diameter less the overlap
   return o;
 }
@@ -64,14 +64,15 @@ void addWorld(const world::World& w, const std::string& frame, const ros::Time& 
   using visualization_msgs::Marker;
   const std_msgs::ColorRGBA grey = nodes::color(0.35f, 0.35f, 0.35f);
   array.markers.push_back(
-      nodes::outline({w.origin.x, w.origin.y, w.origin.x + w.width, w.origin.y + w.height},
+      nodes::outline({w.room.origin.x, w.room.origin.y, w.room.origin.x + w.room.width,
+                      w.room.origin.y + w.room.height},
                      nodes::makeMarker(frame, stamp, "room", 0, Marker::LINE_STRIP, grey), 0.03));
   int id = 0;
-  for (const geometry::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.room.circles) {
     array.markers.push_back(nodes::flatFurniture(
         c, nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CYLINDER, grey)));
   }
-  for (const geometry::Rectangle& r : w.rectangles) {
+  for (const geometry::Rectangle& r : w.room.rectangles) {
     array.markers.push_back(nodes::flatFurniture(
         r, nodes::makeMarker(frame, stamp, "furniture", id++, Marker::CUBE, grey)));
   }
@@ -165,11 +166,13 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
     const coverage::CoverageOptions options = requestedOptions(request, defaults, world);
     // Checked before the planner samples the world (seconds on a whole building's map).
     const coverage::Point2 start{request.start.x, request.start.y};
-    const double x1 = world.origin.x + world.width, y1 = world.origin.y + world.height;
-    if (!(start.x >= world.origin.x && start.x <= x1 && start.y >= world.origin.y &&
+    const double x1 = world.room.origin.x + world.room.width,
+                 y1 = world.room.origin.y + world.room.height;
+    if (!(start.x >= world.room.origin.x && start.x <= x1 && start.y >= world.room.origin.y &&
           start.y <= y1)) {
-      throw util::InvalidInput("start", "must lie in the world (" + util::show(world.origin.x) +
-                                            ", " + util::show(world.origin.y) + ") to (" +
+      throw util::InvalidInput("start", "must lie in the world (" +
+                                            util::show(world.room.origin.x) + ", " +
+                                            util::show(world.room.origin.y) + ") to (" +
                                             util::show(x1) + ", " + util::show(y1) + ")");
     }
     const auto started = std::chrono::steady_clock::now();

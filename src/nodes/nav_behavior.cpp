@@ -19,6 +19,7 @@
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/util/require.h"
+#include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::nav_node {

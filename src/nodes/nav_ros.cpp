@@ -51,15 +51,15 @@ geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::s
 }
 
 std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y) {
-  const double margin = world.robot_radius + clearance;
-  const double x0 = world.origin.x, y0 = world.origin.y;
-  const double x1 = x0 + world.width, y1 = y0 + world.height;
+  const double margin = world.robot().radius + clearance;
+  const double x0 = world.room.origin.x, y0 = world.room.origin.y;
+  const double x1 = x0 + world.room.width, y1 = y0 + world.room.height;
   if (x < x0 || x > x1 || y < y0 || y > y1) {
     return format("goal (%.2f, %.2f) is outside the room [%g, %g] x ", x, y, x0, x1) +
            format("[%g, %g]", y0, y1);
   }
-  for (std::size_t i = 0; i < world.rectangles.size(); ++i) {
-    const auto& r = world.rectangles[i];
+  for (std::size_t i = 0; i < world.room.rectangles.size(); ++i) {
+    const auto& r = world.room.rectangles[i];
     const double dx = std::max({r.min_x - x, 0.0, x - r.max_x});
     const double dy = std::max({r.min_y - y, 0.0, y - r.max_y});
     if (std::hypot(dx, dy) < margin) {
@@ -68,8 +68,8 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
              format("[%g, %g], grown by %.2f m for the robot)", r.min_y, r.max_y, margin);
     }
   }
-  for (std::size_t i = 0; i < world.circles.size(); ++i) {
-    const auto& c = world.circles[i];
+  for (std::size_t i = 0; i < world.room.circles.size(); ++i) {
+    const auto& c = world.room.circles[i];
     if (std::hypot(x - c.center.x, y - c.center.y) < c.radius + margin) {
       return format("goal (%.2f, %.2f) is inside furniture (circle %.0f at (%g, %g)", x, y,
                     static_cast<double>(i), c.center.x, c.center.y) +
@@ -80,7 +80,7 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
     return format("goal (%.2f, %.2f) is too close to a wall (the robot needs %.2f m)", x, y,
                   margin);
   }
-  if (world.map && geometry::blockedWithin(*world.map, {x, y}, margin)) {
+  if (world.room.map && geometry::blockedWithin(*world.room.map, {x, y}, margin)) {
     return format("goal (%.2f, %.2f) is in or too close to a wall of the map (an occupied or ", x,
                   y) +
            format("unknown cell; the robot needs %.2f m)", margin, 0);

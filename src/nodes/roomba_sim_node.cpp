@@ -40,6 +40,7 @@
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 #include "sim_ros.h"
 
 namespace roomba_rrt {
@@ -61,15 +62,17 @@ constexpr Seconds kMaxSleep(0.05);           // longest uninterrupted sleep
 /// back while the node runs (NodeParams deletes those the user did not set when it exits, so that
 /// none is left pinned to override the next world file). Throws std::invalid_argument naming the
 /// bad parameter.
-World loadWorldParameters(nodes::NodeParams& params) {
+world::WorldFile loadWorldParameters(nodes::NodeParams& params) {
   const std::string world_file =
       params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
-  World world = world::readWorldFile(world_file);
+  world::WorldFile file = world::readWorldFile(world_file);
+  World& world = file.world;
   try {
     world::validate(world);  // the file as it is, named in the message
+    world::validate(file.simulator);
   } catch (const util::InvalidInput& e) {
     // A map world starts at the map's origin unless told otherwise: ~initial_pose may move it.
-    if (!(world.map && e.field() == "initial_pose")) throw e.in(world_file);
+    if (!(world.room.map && e.field() == "initial_pose")) throw e.in(world_file);
   }
   // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
   const std::string notice = world::defaultsNotice(world, world_file);
@@ -78,39 +81,46 @@ World loadWorldParameters(nodes::NodeParams& params) {
   } else if (!notice.empty()) {
     ROS_INFO("roomba_sim: %s", notice.c_str());
   }
+  world::RobotSpec& robot = world.robot();
   const std::vector<std::pair<const char*, double*>> overrides = {
-      {"room/width", &world.width},
-      {"room/height", &world.height},
-      {"robot/radius", &world.robot_radius},
-      {"robot/max_linear_speed", &world.max_linear_speed},
-      {"robot/max_angular_speed", &world.max_angular_speed},
-      {"initial_pose/x", &world.initial_pose.x},
-      {"initial_pose/y", &world.initial_pose.y},
-      {"initial_pose/theta", &world.initial_pose.theta},
+      {"room/width", &world.room.width},
+      {"room/height", &world.room.height},
+      {"robot/radius", &robot.radius},
+      {"robot/max_linear_speed", &robot.max_linear_speed},
+      {"robot/max_angular_speed", &robot.max_angular_speed},
+      {"initial_pose/x", &robot.initial_pose.x},
+      {"initial_pose/y", &robot.initial_pose.y},
+      {"initial_pose/theta", &robot.initial_pose.theta},
       {"step", &world.step},
       {"coverage_cell_size", &world.coverage_cell_size},
-      {"command_timeout", &world.command_timeout},
-      {"real_time_factor", &world.real_time_factor},
+      {"command_timeout", &file.simulator.command_timeout},
+      {"real_time_factor", &file.simulator.real_time_factor},
   };
-  if (!world.robots.empty() && params.has("initial_pose")) {
+  if (world.namedRobots() && params.has("initial_pose")) {
     throw std::invalid_argument("~initial_pose cannot be used with the world file's robots");
   }
   for (const auto& [name, value] : overrides) {
-    // With named robots the initial poses are the robots' own: nothing to show or override.
+    // Named robots are each the world file's: their poses, radii and limits are not overridden.
     // A map's extent is its room.
-    const bool applies =
-        (world.robots.empty() || std::string(name).rfind("initial_pose/", 0) != 0) &&
-        !(world.map && std::string(name).rfind("room/", 0) == 0);
+    const bool robot_key = std::string(name).rfind("initial_pose/", 0) == 0 ||
+                           std::string(name).rfind("robot/", 0) == 0;
+    const bool applies = (!world.namedRobots() || !robot_key) &&
+                         !(world.room.map && std::string(name).rfind("room/", 0) == 0);
     if (applies) *value = params.get(name, *value);
   }
   world::validate(world);
-  return world;
+  world::validate(file.simulator);
+  return file;
 }
 
 class RoombaSimNode {
  public:
-  RoombaSimNode(const World& world, bool use_sim_time)
-      : pnh_("~"), sim_(world), use_sim_time_(use_sim_time), robots_(sim_.size()) {
+  RoombaSimNode(const World& world, const world::SimulatorSettings& settings, bool use_sim_time)
+      : pnh_("~"),
+        sim_(world),
+        use_sim_time_(use_sim_time),
+        settings_(settings),
+        robots_(sim_.size()) {
     if (use_sim_time_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("clock", 10);
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     coverage_pub_ = pnh_.advertise<std_msgs::Float32>("coverage", 1, true);
@@ -134,7 +144,7 @@ class RoombaSimNode {
       trails_.push_back(sim_node::makeTrail(i));
     }
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
-    if (sim_.world().map) publishMap(*sim_.world().map);
+    if (sim_.world().room.map) publishMap(*sim_.world().room.map);
     publishStaticTransforms();
     world_markers_ = sim_node::worldMarkers(sim_.world());
     startReconfigure();
@@ -148,8 +158,8 @@ class RoombaSimNode {
     const ros::Time stamp = ros::Time::now();
     map_pub_.publish(nodes::toMapMessage(grid, stamp));
     map_metadata_pub_.publish(nodes::toMapMetaData(grid, stamp));
-    ROS_INFO("roomba_sim: map %s, %d x %d cells of %g m, on /map", sim_.world().map_file.c_str(),
-             grid.width, grid.height, grid.resolution);
+    ROS_INFO("roomba_sim: map %s, %d x %d cells of %g m, on /map",
+             sim_.world().room.map_file.c_str(), grid.width, grid.height, grid.resolution);
   }
 
   /// The fixed-step loop: sense contact, publish the state, apply the latest command, keep pace
@@ -159,7 +169,7 @@ class RoombaSimNode {
     while (ros::ok()) {
       ros::spinOnce();
       // Read every step: dynamic_reconfigure may change the factor between two.
-      const double factor = use_sim_time_ ? real_time_factor_ : 1.0;
+      const double factor = use_sim_time_ ? settings_.real_time_factor : 1.0;
       const auto wall_step =
           std::chrono::duration_cast<Clock::duration>(Seconds(sim_.world().step / factor));
       const ros::Time now = currentTime();
@@ -213,7 +223,7 @@ class RoombaSimNode {
   /// Robot i's latest command, or a stop when it is older than command_timeout.
   robot::Velocity activeCommand(std::size_t robot, const ros::Time& now) const {
     const RobotIo& io = robots_[robot];
-    if (!io.command_time || (now - *io.command_time).toSec() > command_timeout_) {
+    if (!io.command_time || (now - *io.command_time).toSec() > settings_.command_timeout) {
       return {};
     }
     return io.command;
@@ -234,19 +244,18 @@ class RoombaSimNode {
   /// every robot's speed limits, from the next step; refused (and kept) when World's rules say no.
   void startReconfigure() {
     RoombaSimConfig in_force;
-    in_force.real_time_factor = real_time_factor_;
-    in_force.command_timeout = command_timeout_;
-    in_force.max_linear_speed = sim_.world().max_linear_speed;
-    in_force.max_angular_speed = sim_.world().max_angular_speed;
+    in_force.real_time_factor = settings_.real_time_factor;
+    in_force.command_timeout = settings_.command_timeout;
+    in_force.max_linear_speed = sim_.world().robot().max_linear_speed;
+    in_force.max_angular_speed = sim_.world().robot().max_angular_speed;
     reconfigure_ = std::make_unique<nodes::Reconfigure<RoombaSimConfig>>(
         pnh_, in_force, [this](const RoombaSimConfig& c) {
-          World next = sim_.world();
+          world::SimulatorSettings next;
           next.real_time_factor = c.real_time_factor;
           next.command_timeout = c.command_timeout;
           world::validate(next);
           sim_.setSpeedLimits(c.max_linear_speed, c.max_angular_speed);
-          real_time_factor_ = c.real_time_factor;
-          command_timeout_ = c.command_timeout;
+          settings_ = next;
           if (!use_sim_time_ && c.real_time_factor != 1.0) {
             ROS_WARN(
                 "roomba_sim: ~real_time_factor %g needs /use_sim_time true; running in real "
@@ -315,8 +324,7 @@ class RoombaSimNode {
   ros::NodeHandle pnh_;
   sim::MultiRobotSimulator sim_;
   const bool use_sim_time_;
-  double real_time_factor_ = sim_.world().real_time_factor;  ///< dynamic_reconfigure may change
-  double command_timeout_ = sim_.world().command_timeout;    ///< these two while running
+  world::SimulatorSettings settings_;  ///< dynamic_reconfigure may change them while running
   std::unique_ptr<nodes::Reconfigure<RoombaSimConfig>> reconfigure_;
   long steps_ = 0;  ///< steps since start (never reset: simulated time only moves forward)
 
@@ -351,26 +359,28 @@ int main(int argc, char** argv) {
   ros::NodeHandle pnh("~");
   const bool use_sim_time = ros::param::param("/use_sim_time", false);
   roomba_rrt::nodes::NodeParams params(pnh);
-  roomba_rrt::world::World world;
+  roomba_rrt::world::WorldFile file;
   try {
-    world = roomba_rrt::loadWorldParameters(params);
+    file = roomba_rrt::loadWorldParameters(params);
   } catch (const std::invalid_argument& e) {
     ROS_FATAL("roomba_sim: invalid world: %s", e.what());
     return 1;
   }
-  if (!use_sim_time && world.real_time_factor != 1.0) {
+  const roomba_rrt::world::World& world = file.world;
+  if (!use_sim_time && file.simulator.real_time_factor != 1.0) {
     ROS_WARN("roomba_sim: ~real_time_factor %g needs /use_sim_time true; running in real time",
-             world.real_time_factor);
+             file.simulator.real_time_factor);
   }
   roomba_rrt::nodes::MasterWatch master_watch;
-  roomba_rrt::RoombaSimNode node(world, use_sim_time);
+  roomba_rrt::RoombaSimNode node(world, file.simulator, use_sim_time);
   for (const std::string& name : roomba_rrt::nodes::parameterNames<roomba_rrt::RoombaSimConfig>()) {
     params.expect(name);  // dynamic_reconfigure's (cfg/RoombaSim.cfg)
   }
   params.warnUnknown();
-  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s, %s", world.width,
-           world.height, world.circles.size() + world.rectangles.size(),
-           std::max<std::size_t>(1, world.robots.size()), world.robots.size() > 1 ? "s" : "",
+  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s, %s",
+           world.room.width, world.room.height,
+           world.room.circles.size() + world.room.rectangles.size(), world.robots.size(),
+           world.robots.size() > 1 ? "s" : "",
            use_sim_time ? "publishing /clock" : "wall-clock time");
   node.run();
   return master_watch.exitCode();

@@ -34,6 +34,7 @@
 #include <roomba_rrt/planning/planner.h>
 #include <roomba_rrt/util/require.h>
 #include <roomba_rrt/world_planning/room_problem.h>
+#include "roomba_rrt/world/world_file.h"
 
 #include "make_plan_ros.h"
 #include "map_messages.h"
@@ -130,12 +131,12 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
     // their own start.
     const world::World world = world::loadWorld(world_file, world::PoseSource::kElsewhere);
     d.room = world_planning::roomProblem(world);
-    if (world.map) {
+    if (world.room.map) {
       // Scenario "map": the map alone. Its unknown cells are walls in the room too, so the room's
       // inflated map serves unless ~allow_unknown asks for another.
       planning::Problem map;
       map.bounds = d.room->bounds;
-      map.map = d.allow_unknown ? planning::mapProblem(world.map, true).map : d.room->map;
+      map.map = d.allow_unknown ? planning::mapProblem(world.room.map, true).map : d.room->map;
       d.world_map = std::make_shared<const planning::Problem>(std::move(map));
     }
   }

@@ -184,7 +184,8 @@ void extendTrail(const robot::Pose2D& pose, Marker& trail) {
 
 std::vector<Marker> worldMarkers(const world::World& w) {
   const double t = kWallThickness;
-  const double x0 = w.origin.x, y0 = w.origin.y, x1 = x0 + w.width, y1 = y0 + w.height;
+  const double x0 = w.room.origin.x, y0 = w.room.origin.y, x1 = x0 + w.room.width,
+               y1 = y0 + w.room.height;
   std::vector<Marker> markers = {
       makeBox("walls", 0, x0 - t, y0 - t, x0, y1 + t, kWallHeight, kWallColour),
       makeBox("walls", 1, x1, y0 - t, x1 + t, y1 + t, kWallHeight, kWallColour),
@@ -192,7 +193,7 @@ std::vector<Marker> worldMarkers(const world::World& w) {
       makeBox("walls", 3, x0, y1, x1, y1 + t, kWallHeight, kWallColour),
   };
   int id = 0;
-  for (const geometry::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.room.circles) {
     auto m = makeMarker("furniture", id++, Marker::CYLINDER, kFurnitureColour);
     m.pose.position.x = c.center.x;
     m.pose.position.y = c.center.y;
@@ -201,7 +202,7 @@ std::vector<Marker> worldMarkers(const world::World& w) {
     m.scale.z = kFurnitureHeight;
     markers.push_back(m);
   }
-  for (const geometry::Rectangle& b : w.rectangles) {
+  for (const geometry::Rectangle& b : w.room.rectangles) {
     markers.push_back(makeBox("furniture", id++, b.min_x, b.min_y, b.max_x, b.max_y,
                               kFurnitureHeight, kFurnitureColour));
   }

@@ -64,16 +64,16 @@ bool pushOutOfMap(const geometry::OccupancyGrid& map, const double r, double& x,
 bool pushOutOnce(const world::World& world, const double r, double& x, double& y) {
   bool pushed = false;
   // Walls: the normal is an axis, so pushing back is a clamp (exactly onto the wall).
-  const double x0 = world.origin.x, y0 = world.origin.y;
-  if (x < x0 + r || x > x0 + world.width - r) {
-    x = std::clamp(x, x0 + r, x0 + world.width - r);
+  const double x0 = world.room.origin.x, y0 = world.room.origin.y;
+  if (x < x0 + r || x > x0 + world.room.width - r) {
+    x = std::clamp(x, x0 + r, x0 + world.room.width - r);
     pushed = true;
   }
-  if (y < y0 + r || y > y0 + world.height - r) {
-    y = std::clamp(y, y0 + r, y0 + world.height - r);
+  if (y < y0 + r || y > y0 + world.room.height - r) {
+    y = std::clamp(y, y0 + r, y0 + world.room.height - r);
     pushed = true;
   }
-  for (const geometry::Circle& c : world.circles) {
+  for (const geometry::Circle& c : world.room.circles) {
     const double dx = x - c.center.x, dy = y - c.center.y;
     const double reach = c.radius + r;
     const double d2 = geometry::squaredDistance(geometry::Point2{x, y}, c.center);
@@ -87,9 +87,9 @@ bool pushOutOnce(const world::World& world, const double r, double& x, double& y
     }
     pushed = true;
   }
-  for (const geometry::Rectangle& box : world.rectangles)
+  for (const geometry::Rectangle& box : world.room.rectangles)
     pushed = pushOutOf(box, r, x, y) || pushed;
-  if (world.map) pushed = pushOutOfMap(*world.map, r, x, y) || pushed;
+  if (world.room.map) pushed = pushOutOfMap(*world.room.map, r, x, y) || pushed;
   return pushed;
 }
 
@@ -127,22 +127,22 @@ robot::BumperState senseDisc(const world::World& world, const double radius,
     closeSwitches(bumper, cos_t, sin_t, nx, ny);
   };
   const double x = pose.x, y = pose.y;
-  const double x0 = world.origin.x, y0 = world.origin.y;
+  const double x0 = world.room.origin.x, y0 = world.room.origin.y;
   if (x <= x0 + r) contact(-1, 0);
-  if (x >= x0 + world.width - r) contact(1, 0);
+  if (x >= x0 + world.room.width - r) contact(1, 0);
   if (y <= y0 + r) contact(0, -1);
-  if (y >= y0 + world.height - r) contact(0, 1);
+  if (y >= y0 + world.room.height - r) contact(0, 1);
   const geometry::Point2 p{x, y};
-  for (const geometry::Circle& c : world.circles) {
+  for (const geometry::Circle& c : world.room.circles) {
     if (geometry::withinMargin(c, p, r)) contact(c.center.x - x, c.center.y - y);
   }
-  for (const geometry::Rectangle& box : world.rectangles) {
+  for (const geometry::Rectangle& box : world.room.rectangles) {
     const geometry::Point2 q = geometry::closestPoint(box, p);
     if (geometry::withinMargin(box, p, r)) contact(q.x - x, q.y - y);
   }
-  if (world.map) {
+  if (world.room.map) {
     thread_local std::vector<geometry::Rectangle> squares;
-    geometry::blockedSquaresNear(*world.map, p, r, squares);
+    geometry::blockedSquaresNear(*world.room.map, p, r, squares);
     for (const geometry::Rectangle& square : squares) {
       const geometry::Point2 q = geometry::closestPoint(square, p);
       contact(q.x - x, q.y - y);
@@ -154,11 +154,11 @@ robot::BumperState senseDisc(const world::World& world, const double radius,
 }  // namespace
 
 bool resolvePenetration(const world::World& world, double& x, double& y) {
-  return resolveDisc(world, world.robot_radius, x, y);
+  return resolveDisc(world, world.robot().radius, x, y);
 }
 
 robot::BumperState senseBumper(const world::World& world, const robot::Pose2D& pose) {
-  return senseDisc(world, world.robot_radius, pose);
+  return senseDisc(world, world.robot().radius, pose);
 }
 
 bool resolvePenetration(const world::World& world, double radius, double& x, double& y) {

@@ -11,11 +11,12 @@ namespace {
 constexpr int kBitsPerWord = 64;
 
 bool insideFurniture(const world::World& world, double x, double y) {
-  if (world.map && world.map->blocked(world.map->column(x), world.map->row(y))) return true;
-  for (const geometry::Circle& c : world.circles) {
+  if (world.room.map && world.room.map->blocked(world.room.map->column(x), world.room.map->row(y)))
+    return true;
+  for (const geometry::Circle& c : world.room.circles) {
     if (std::hypot(x - c.center.x, y - c.center.y) <= c.radius) return true;
   }
-  for (const geometry::Rectangle& box : world.rectangles) {
+  for (const geometry::Rectangle& box : world.room.rectangles) {
     if (geometry::contains(box, {x, y})) return true;
   }
   return false;
@@ -51,9 +52,9 @@ std::uint64_t spanMask(int first, int last) {
 CoverageGrid::CoverageGrid(const world::World& world)
     : cell_(world.coverage_cell_size),
       inverse_cell_(1.0 / cell_),
-      origin_(world.origin),
-      columns_(static_cast<int>(std::ceil(world.width / cell_ - 1e-9))),
-      rows_(static_cast<int>(std::ceil(world.height / cell_ - 1e-9))),
+      origin_(world.room.origin),
+      columns_(static_cast<int>(std::ceil(world.room.width / cell_ - 1e-9))),
+      rows_(static_cast<int>(std::ceil(world.room.height / cell_ - 1e-9))),
       words_per_row_((columns_ + kBitsPerWord - 1) / kBitsPerWord),
       free_(static_cast<std::size_t>(rows_) * words_per_row_, 0),
       swept_(free_.size(), 0) {
@@ -61,7 +62,7 @@ CoverageGrid::CoverageGrid(const world::World& world)
     const double y = origin_.y + (row + 0.5) * cell_;
     for (int column = 0; column < columns_; ++column) {
       const double x = origin_.x + (column + 0.5) * cell_;
-      if (x > origin_.x + world.width || y > origin_.y + world.height ||
+      if (x > origin_.x + world.room.width || y > origin_.y + world.room.height ||
           insideFurniture(world, x, y)) {
         continue;
       }

@@ -32,16 +32,16 @@ double largestRadius(const std::vector<world::RobotSpec>& specs) {
 
 MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
     : world_(validated(world)),
-      specs_(robotsOf(world_)),
+      specs_(world_.robots),
       robots_(specs_.size()),
       coverage_(specs_.size(), CoverageGrid(world_)),
-      grid_(world_.width, world_.height, 2 * largestRadius(specs_) + 2 * kContactTolerance,
-            static_cast<int>(specs_.size())),
+      grid_(world_.room.width, world_.room.height,
+            2 * largestRadius(specs_) + 2 * kContactTolerance, static_cast<int>(specs_.size())),
       max_radius_(largestRadius(specs_)) {
   for (std::size_t i = 0; i < specs_.size(); ++i) {
     const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
-    grid_.insert(static_cast<int>(i), p.x - world_.origin.x, p.y - world_.origin.y);
+    grid_.insert(static_cast<int>(i), p.x - world_.room.origin.x, p.y - world_.room.origin.y);
   }
   reset();
 }
@@ -49,7 +49,7 @@ MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
 bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& y) const {
   const double r = specs_[robot].radius;
   bool pushed = false;
-  grid_.forEachNear(x - world_.origin.x, y - world_.origin.y, [&](int j) {
+  grid_.forEachNear(x - world_.room.origin.x, y - world_.room.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
     const robot::Pose2D& q = robots_[j].pose;
     const double reach = r + specs_[j].radius;
@@ -71,7 +71,7 @@ bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& 
 bool MultiRobotSimulator::overlapsRobot(std::size_t robot, double x, double y) const {
   const double r = specs_[robot].radius - kPenetrationTolerance;
   bool overlaps = false;
-  grid_.forEachNear(x - world_.origin.x, y - world_.origin.y, [&](int j) {
+  grid_.forEachNear(x - world_.room.origin.x, y - world_.room.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
     const double reach = r + specs_[j].radius;
     const double dx = x - robots_[j].pose.x, dy = y - robots_[j].pose.y;
@@ -98,13 +98,15 @@ void MultiRobotSimulator::senseContact() {
     resolvePenetration(world_, r, robot.pose.x, robot.pose.y);
     robot.bumper = senseBumper(world_, r, robot.pose);
     if (!others) continue;
-    grid_.forEachNear(robot.pose.x - world_.origin.x, robot.pose.y - world_.origin.y, [&](int j) {
-      if (static_cast<std::size_t>(j) == i) return;
-      const robot::Pose2D& q = robots_[j].pose;
-      const double reach = r + specs_[j].radius + kContactTolerance;
-      const double dx = q.x - robot.pose.x, dy = q.y - robot.pose.y;
-      if (dx * dx + dy * dy <= reach * reach) pressBumper(robot.bumper, robot.pose, dx, dy);
-    });
+    grid_.forEachNear(robot.pose.x - world_.room.origin.x, robot.pose.y - world_.room.origin.y,
+                      [&](int j) {
+                        if (static_cast<std::size_t>(j) == i) return;
+                        const robot::Pose2D& q = robots_[j].pose;
+                        const double reach = r + specs_[j].radius + kContactTolerance;
+                        const double dx = q.x - robot.pose.x, dy = q.y - robot.pose.y;
+                        if (dx * dx + dy * dy <= reach * reach)
+                          pressBumper(robot.bumper, robot.pose, dx, dy);
+                      });
   }
 }
 
@@ -127,8 +129,8 @@ void MultiRobotSimulator::move(const std::vector<robot::Velocity>& commands) {
     }
     if (robot.pose.x != previous.x || robot.pose.y != previous.y) {
       coverage_[i].markDisc(robot.pose.x, robot.pose.y, spec.radius);
-      grid_.move(static_cast<int>(i), robot.pose.x - world_.origin.x,
-                 robot.pose.y - world_.origin.y);
+      grid_.move(static_cast<int>(i), robot.pose.x - world_.room.origin.x,
+                 robot.pose.y - world_.room.origin.y);
     }
   }
   ++steps_;
@@ -160,7 +162,8 @@ void MultiRobotSimulator::setPose(std::size_t robot, const robot::Pose2D& pose) 
   }
   Robot& r = robots_[robot];
   r.pose = placed;
-  grid_.move(static_cast<int>(robot), placed.x - world_.origin.x, placed.y - world_.origin.y);
+  grid_.move(static_cast<int>(robot), placed.x - world_.room.origin.x,
+             placed.y - world_.room.origin.y);
   r.bumper = senseBumper(world_, specs_[robot].radius, r.pose);
   coverage_[robot].markDisc(r.pose.x, r.pose.y, specs_[robot].radius);
 }
@@ -172,7 +175,7 @@ void MultiRobotSimulator::reset() {
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     const robot::Pose2D& p = specs_[i].initial_pose;
     robots_[i].pose = p;
-    grid_.move(static_cast<int>(i), p.x - world_.origin.x, p.y - world_.origin.y);
+    grid_.move(static_cast<int>(i), p.x - world_.room.origin.x, p.y - world_.room.origin.y);
   }
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     coverage_[i].clear();
@@ -186,22 +189,22 @@ std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n) {
     throw std::invalid_argument("spreadRobots: the number of robots must be in [1, " +
                                 std::to_string(world::kMaxRobots) + "], got " + std::to_string(n));
   }
-  const double r = world.robot_radius;
+  const double r = world.robot().radius;
   for (int cells = n; cells <= 64 * n; ++cells) {
-    const int rows =
-        std::max(1, static_cast<int>(std::lround(std::sqrt(cells * world.height / world.width))));
+    const int rows = std::max(
+        1, static_cast<int>(std::lround(std::sqrt(cells * world.room.height / world.room.width))));
     const int columns = (cells + rows - 1) / rows;
-    const double w = world.width / columns, h = world.height / rows;
+    const double w = world.room.width / columns, h = world.room.height / rows;
     if (std::min(w, h) < 2 * r) break;  // neighbours would overlap
     std::vector<world::RobotSpec> robots;
     for (int row = 0; row < rows && static_cast<int>(robots.size()) < n; ++row) {
       for (int column = 0; column < columns && static_cast<int>(robots.size()) < n; ++column) {
-        const double x = world.origin.x + (column + 0.5) * w;
-        const double y = world.origin.y + (row + 0.5) * h;
+        const double x = world.room.origin.x + (column + 0.5) * w;
+        const double y = world.room.origin.y + (row + 0.5) * h;
         if (penetrates(world, r, x, y)) continue;
-        robots.push_back(world::RobotSpec{"robot" + std::to_string(robots.size() + 1),
-                                          robot::Pose2D{x, y, 0.0}, r, world.max_linear_speed,
-                                          world.max_angular_speed});
+        robots.push_back(
+            world::RobotSpec{"robot" + std::to_string(robots.size() + 1), robot::Pose2D{x, y, 0.0},
+                             r, world.robot().max_linear_speed, world.robot().max_angular_speed});
       }
     }
     if (static_cast<int>(robots.size()) == n) return robots;
@@ -212,8 +215,6 @@ std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n) {
 
 void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_angular_speed) {
   world::World next = world_;
-  next.max_linear_speed = max_linear_speed;
-  next.max_angular_speed = max_angular_speed;
   for (world::RobotSpec& robot : next.robots) {
     robot.max_linear_speed = max_linear_speed;
     robot.max_angular_speed = max_angular_speed;

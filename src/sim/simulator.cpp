@@ -27,7 +27,8 @@ robot::BumperState Simulator::senseContact() {
 }
 
 void Simulator::move(const robot::Velocity& cmd) {
-  last_command_ = robot::clampCommand(cmd, world_.max_linear_speed, world_.max_angular_speed);
+  last_command_ =
+      robot::clampCommand(cmd, world_.robot().max_linear_speed, world_.robot().max_angular_speed);
   const robot::Pose2D previous = pose_;
   pose_ = robot::integrateArc(pose_, last_command_, world_.step);
   // Push back onto whatever the step ran into; where the disc does not fit at all, stay put.
@@ -36,7 +37,7 @@ void Simulator::move(const robot::Velocity& cmd) {
     pose_.y = previous.y;
   }
   if (pose_.x != previous.x || pose_.y != previous.y) {
-    coverage_.markDisc(pose_.x, pose_.y, world_.robot_radius);
+    coverage_.markDisc(pose_.x, pose_.y, world_.robot().radius);
   }
   ++steps_;
 }
@@ -57,14 +58,14 @@ void Simulator::setPose(const robot::Pose2D& pose) {
   }
   pose_ = placed;
   bumper_ = senseBumper(world_, pose_);
-  coverage_.markDisc(pose_.x, pose_.y, world_.robot_radius);
+  coverage_.markDisc(pose_.x, pose_.y, world_.robot().radius);
 }
 
 void Simulator::reset() {
   coverage_.clear();
   last_command_ = {};
   steps_ = 0;
-  setPose(world_.initial_pose);
+  setPose(world_.robot().initial_pose);
 }
 
 }  // namespace roomba_rrt::sim

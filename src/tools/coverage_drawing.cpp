@@ -208,8 +208,8 @@ void drawRunPicture(const std::string& file, const sim::Simulator& simulator, co
   const world::World& world = simulator.world();
   const RoomCanvas c = roomCanvas(world);
   const double legend = 190.0;
-  PngImage image(static_cast<int>(world.width * c.scale + 2 * c.margin + legend),
-                 static_cast<int>(world.height * c.scale + 2 * c.margin + c.header));
+  PngImage image(static_cast<int>(world.room.width * c.scale + 2 * c.margin + legend),
+                 static_cast<int>(world.room.height * c.scale + 2 * c.margin + c.header));
   cairo_t* cr = image.cr();
   drawFloor(cr, world, c);
   drawCleanedFloor(cr, simulator.coverageGrid(), c);
@@ -217,8 +217,8 @@ void drawRunPicture(const std::string& file, const sim::Simulator& simulator, co
   drawPath(cr, run.path, c);
 
   drawTitle(cr, title, c.margin, 26, 15);
-  drawRunLegend(cr, c.px(world.origin.x + world.width) + 25,
-                c.py(world.origin.y + world.height) + 10);
+  drawRunLegend(cr, c.px(world.room.origin.x + world.room.width) + 25,
+                c.py(world.room.origin.y + world.room.height) + 10);
   image.write(file);
 }
 

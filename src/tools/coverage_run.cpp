@@ -57,10 +57,11 @@ double reachableCoverage(const sim::Simulator& simulator, const Cleaning& cleani
 Cleaning::Cleaning(const world::World& world, const behavior::RoombaParams& params) {
   planner =
       std::make_shared<const coverage::CoveragePlanner>(world, coverage::cleaningOptions(world));
-  const coverage::CoveragePlan plan = planner->plan({world.initial_pose.x, world.initial_pose.y});
+  const coverage::CoveragePlan plan =
+      planner->plan({world.robot().initial_pose.x, world.robot().initial_pose.y});
   reachable_area = plan.reachable_area;
   floor_area = plan.floor_area;
-  ideal_time = reachable_area / (2 * world.robot_radius * params.forward_speed);
+  ideal_time = reachable_area / (2 * world.robot().radius * params.forward_speed);
   config = navigation::inProcessNavConfig(world_planning::roomProblem(world));
   config.params = params;
   config.follower.rate = params.rate;

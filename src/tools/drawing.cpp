@@ -45,16 +45,16 @@ void drawTitle(cairo_t* cr, const std::string& title, double x, double baseline,
 }
 
 RoomCanvas roomCanvas(const world::World& world) {
-  RoomCanvas c{world.height};
-  c.scale = std::min(100.0, 1200.0 / std::max(world.width, world.height));
-  c.origin = world.origin;
+  RoomCanvas c{world.room.height};
+  c.scale = std::min(100.0, 1200.0 / std::max(world.room.width, world.room.height));
+  c.origin = world.room.origin;
   return c;
 }
 
 void drawFloor(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
-  cairo_rectangle(cr, c.px(world.origin.x), c.py(world.origin.y + world.height),
-                  world.width * c.scale, world.height * c.scale);
+  cairo_rectangle(cr, c.px(world.room.origin.x), c.py(world.room.origin.y + world.room.height),
+                  world.room.width * c.scale, world.room.height * c.scale);
   cairo_fill(cr);
 }
 
@@ -78,26 +78,26 @@ void fillCells(cairo_t* cr, const RoomCanvas& c, const geometry::Point2& origin,
 
 void drawFurnitureAndWalls(cairo_t* cr, const world::World& world, const RoomCanvas& c) {
   cairo_set_source_rgb(cr, 0.45, 0.40, 0.35);
-  for (const geometry::Circle& circle : world.circles) {
+  for (const geometry::Circle& circle : world.room.circles) {
     cairo_new_sub_path(cr);
     cairo_arc(cr, c.px(circle.center.x), c.py(circle.center.y), circle.radius * c.scale, 0,
               2 * kPi);
   }
-  for (const geometry::Rectangle& r : world.rectangles) {
+  for (const geometry::Rectangle& r : world.room.rectangles) {
     cairo_rectangle(cr, c.px(r.min_x), c.py(r.max_y), (r.max_x - r.min_x) * c.scale,
                     (r.max_y - r.min_y) * c.scale);
   }
   cairo_fill(cr);
-  if (world.map) {  // its blocked cells, dark grey
-    const geometry::OccupancyGrid& map = *world.map;
+  if (world.room.map) {  // its blocked cells, dark grey
+    const geometry::OccupancyGrid& map = *world.room.map;
     cairo_set_source_rgb(cr, 0.30, 0.30, 0.30);
     fillCells(cr, c, map.origin, map.resolution, map.width, map.height,
               [&map](int i, int j) { return map.blocked(i, j); });
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 3);
-  cairo_rectangle(cr, c.px(world.origin.x), c.py(world.origin.y + world.height),
-                  world.width * c.scale, world.height * c.scale);
+  cairo_rectangle(cr, c.px(world.room.origin.x), c.py(world.room.origin.y + world.room.height),
+                  world.room.width * c.scale, world.room.height * c.scale);
   cairo_stroke(cr);
 }
 

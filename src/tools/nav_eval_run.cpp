@@ -18,32 +18,32 @@ using planning::Point2;
 /// Whether the disc of radius `margin` around p is inside the room (the map's extent) and clear
 /// of the furniture and the map's blocked cells.
 bool discFree(const world::World& w, const Point2& p, double margin) {
-  if (p.x < w.origin.x + margin || p.x > w.origin.x + w.width - margin ||
-      p.y < w.origin.y + margin || p.y > w.origin.y + w.height - margin) {
+  if (p.x < w.room.origin.x + margin || p.x > w.room.origin.x + w.room.width - margin ||
+      p.y < w.room.origin.y + margin || p.y > w.room.origin.y + w.room.height - margin) {
     return false;
   }
-  for (const geometry::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.room.circles) {
     if (geometry::distance(p, c.center) < c.radius + margin) return false;
   }
-  for (const geometry::Rectangle& r : w.rectangles) {
+  for (const geometry::Rectangle& r : w.room.rectangles) {
     if (geometry::distance(r, p) < margin) return false;
   }
-  return !w.map || !geometry::blockedWithin(*w.map, p, margin);
+  return !w.room.map || !geometry::blockedWithin(*w.room.map, p, margin);
 }
 
 /// Whether the disc swept along a-b stays free (the room is convex: the end points decide it).
 bool sweepFree(const world::World& w, const Point2& a, const Point2& b, double margin) {
   if (!discFree(w, a, margin) || !discFree(w, b, margin)) return false;
   const geometry::Segment sweep{a, b};
-  for (const geometry::Circle& c : w.circles) {
+  for (const geometry::Circle& c : w.room.circles) {
     if (geometry::distance(c.center, geometry::closestPoint(sweep, c.center)) < c.radius + margin) {
       return false;
     }
   }
-  for (const geometry::Rectangle& r : w.rectangles) {
+  for (const geometry::Rectangle& r : w.room.rectangles) {
     if (geometry::distance(r, sweep) < margin) return false;
   }
-  return !w.map || !geometry::segmentMeetsBlocked(*w.map, sweep, margin);
+  return !w.room.map || !geometry::segmentMeetsBlocked(*w.room.map, sweep, margin);
 }
 
 /// Records every finished plan's time.
@@ -76,13 +76,13 @@ double median(std::vector<double> values) {
 double shortestDiscPathLength(const world::World& world, const robot::Pose2D& start,
                               const robot::Pose2D& goal, double cell) {
   const double inf = std::numeric_limits<double>::infinity();
-  const double r = world.robot_radius;
+  const double r = world.robot().radius;
   const Point2 s{start.x, start.y}, g{goal.x, goal.y};
   if (!discFree(world, s, r - 1e-9) || !discFree(world, g, r - 1e-9)) return inf;
   if (sweepFree(world, s, g, r)) return std::hypot(g.x - s.x, g.y - s.y);
-  const int nx = static_cast<int>(std::ceil(world.width / cell));
-  const int ny = static_cast<int>(std::ceil(world.height / cell));
-  const Point2 o = world.origin;
+  const int nx = static_cast<int>(std::ceil(world.room.width / cell));
+  const int ny = static_cast<int>(std::ceil(world.room.height / cell));
+  const Point2 o = world.room.origin;
   const auto centre = [&](int i, int j) {
     return Point2{o.x + (i + 0.5) * cell, o.y + (j + 0.5) * cell};
   };
@@ -182,9 +182,10 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
   navigation::NavBt nav(config, options.seed, tree_file);
   sim::Simulator simulator(world);
   std::mt19937 rng(options.seed);
-  std::uniform_real_distribution<double> ux(world.origin.x, world.origin.x + world.width),
-      uy(world.origin.y, world.origin.y + world.height), ut(-M_PI, M_PI);
-  const double margin = world.robot_radius + options.clearance;
+  std::uniform_real_distribution<double> ux(world.room.origin.x,
+                                            world.room.origin.x + world.room.width),
+      uy(world.room.origin.y, world.room.origin.y + world.room.height), ut(-M_PI, M_PI);
+  const double margin = world.robot().radius + options.clearance;
   const long max_ticks = std::lround(options.timeout_s / world.step);
 
   for (int n = 0; n < options.goals; ++n) {

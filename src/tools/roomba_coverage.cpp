@@ -39,8 +39,9 @@ namespace {
 std::string worldLabel(const CoverageArguments& o, const world::World& world) {
   if (o.crop.empty()) return o.world;
   char region[160];
-  std::snprintf(region, sizeof region, " cut to (%.6g, %.6g) to (%.6g, %.6g)", world.origin.x,
-                world.origin.y, world.origin.x + world.width, world.origin.y + world.height);
+  std::snprintf(region, sizeof region, " cut to (%.6g, %.6g) to (%.6g, %.6g)", world.room.origin.x,
+                world.room.origin.y, world.room.origin.x + world.room.width,
+                world.room.origin.y + world.room.height);
   return o.world + region;
 }
 
@@ -385,7 +386,7 @@ int run(int argc, char** argv) {
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
   if (o.compare) return runReachable(o, world, params, {"fsm", "bt", "coverage"});
   if (o.behavior == "coverage") return runReachable(o, world, params, {"coverage"});
-  if (!o.robots.empty() || !world.robots.empty()) return runFleets(o, world, params);
+  if (!o.robots.empty() || world.namedRobots()) return runFleets(o, world, params);
   if (!o.plot.empty()) throw std::invalid_argument("--plot needs --robots");
   return runOne(o, world, params);
 }

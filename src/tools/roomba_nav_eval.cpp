@@ -44,8 +44,8 @@ const char* const kUsage =
 void drawPng(const std::string& file, const roomba_rrt::world::World& world,
              const roomba_rrt::tools::NavEvalReport& report, const std::string& title) {
   const roomba_rrt::tools::RoomCanvas c = roomba_rrt::tools::roomCanvas(world);
-  const int width = static_cast<int>(world.width * c.scale + 2 * c.margin);
-  const int height = static_cast<int>(world.height * c.scale + 2 * c.margin + c.header);
+  const int width = static_cast<int>(world.room.width * c.scale + 2 * c.margin);
+  const int height = static_cast<int>(world.room.height * c.scale + 2 * c.margin + c.header);
   roomba_rrt::tools::PngImage image(width, height);
   cairo_t* cr = image.cr();
   roomba_rrt::tools::drawFloor(cr, world, c);

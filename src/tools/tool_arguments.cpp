@@ -9,6 +9,7 @@
 
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::tools {
@@ -50,7 +51,7 @@ std::string worldFile(const std::string& value) {
 
 world::World loadToolWorld(const std::string& file, const std::string& pose,
                            const std::string& crop) {
-  world::World world = world::readWorldFile(file);
+  world::World world = world::readWorldFile(file).world;
   if (!crop.empty()) {
     const std::vector<double> box = parseNumbers("--crop", crop);
     if (box.size() != 4) bad("--crop", "expected X0,Y0,X1,Y1, got '" + crop + "'");
@@ -60,7 +61,7 @@ world::World loadToolWorld(const std::string& file, const std::string& pose,
     const std::vector<double> xyt = parseNumbers("--pose", pose);
     if (xyt.size() < 2 || xyt.size() > 3)
       bad("--pose", "expected X,Y or X,Y,THETA, got '" + pose + "'");
-    world.initial_pose = {xyt[0], xyt[1], xyt.size() == 3 ? xyt[2] : 0.0};
+    world.robot().initial_pose = {xyt[0], xyt[1], xyt.size() == 3 ? xyt[2] : 0.0};
   }
   try {
     world::validate(world);
@@ -89,7 +90,7 @@ planning::Problem worldProblem(std::map<std::string, std::string>& tool, std::st
     if (!tool.count(required)) bad(required, "required with " + flag + " (X,Y)");
   }
   // The world's own initial pose does not matter here (a map's (0, 0) may be in a wall).
-  planning::Problem problem = world_planning::roomProblem(world::readWorldFile(file));
+  planning::Problem problem = world_planning::roomProblem(world::readWorldFile(file).world);
   problem.start = parsePointFlag("--start", tool["--start"]);
   problem.goal = parsePointFlag("--goal", tool["--goal"]);
   *name = problem.map ? "map" : "room";

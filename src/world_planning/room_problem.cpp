@@ -1,15 +1,16 @@
 #include "roomba_rrt/world_planning/room_problem.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::world_planning {
 
 planning::Problem roomProblem(const world::World& world) {
-  planning::Problem p = world.map ? planning::mapProblem(world.map) : planning::Problem{};
-  p.bounds = {world.origin.x, world.origin.x + world.width, world.origin.y,
-              world.origin.y + world.height};
-  p.obstacles = world.circles;
-  p.rectangles = world.rectangles;
-  p.robot_radius = world.robot_radius;
-  p.start = p.goal = {world.initial_pose.x, world.initial_pose.y};
+  planning::Problem p = world.room.map ? planning::mapProblem(world.room.map) : planning::Problem{};
+  p.bounds = {world.room.origin.x, world.room.origin.x + world.room.width, world.room.origin.y,
+              world.room.origin.y + world.room.height};
+  p.obstacles = world.room.circles;
+  p.rectangles = world.room.rectangles;
+  p.robot_radius = world.robot().radius;
+  p.start = p.goal = {world.robot().initial_pose.x, world.robot().initial_pose.y};
   return p;
 }
 

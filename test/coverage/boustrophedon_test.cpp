@@ -14,6 +14,7 @@
 #include "roomba_rrt/coverage/cell_order.h"
 #include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 using roomba_rrt::coverage::Cell;
 using roomba_rrt::coverage::cellRows;
@@ -85,7 +86,7 @@ TEST(Boustrophedon, an_empty_room_is_one_cell_of_all_its_free_points) {
 
 TEST(Boustrophedon, a_table_in_the_middle_splits_the_room_into_four_cells) {
   World world = emptyRoom();
-  world.rectangles.push_back(Rectangle{2.5, 1.8, 3.9, 3.0});
+  world.room.rectangles.push_back(Rectangle{2.5, 1.8, 3.9, 3.0});
   const Sampled s(world);
   const std::vector<Cell> cells = decompose(s.space, s.region);
   // Below the table, left and right of it (the sweep line meets it: a split), above it (the two
@@ -110,7 +111,7 @@ TEST(Boustrophedon, a_table_in_the_middle_splits_the_room_into_four_cells) {
 
 TEST(Boustrophedon, an_l_shaped_room_narrows_but_stays_one_cell_with_a_row_along_its_step) {
   World world = emptyRoom();
-  world.rectangles.push_back(Rectangle{3.2, 2.4, 6.4, 4.8});  // the upper right quarter
+  world.room.rectangles.push_back(Rectangle{3.2, 2.4, 6.4, 4.8});  // the upper right quarter
   const Sampled s(world);
   const std::vector<Cell> cells = decompose(s.space, s.region);
   ASSERT_EQ(cells.size(), 1u);  // each lattice row meets the L in one interval
@@ -134,14 +135,14 @@ TEST(Boustrophedon, rows_are_at_most_a_swath_apart_and_the_outer_ones_at_the_pla
   const double swath = CoverageOptions{}.swath, R = s.space.planningRadius();
   const std::vector<Row> rows = cellRows(s.space, cells[0], swath);
   // 4.8 m less twice the planning radius, in as few gaps of at most a swath as there can be.
-  const double span = world.height - 2 * R;
+  const double span = world.room.height - 2 * R;
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(std::ceil(span / swath)) + 1);
   EXPECT_NEAR(rows.front().left.y, R, 1e-3);
-  EXPECT_NEAR(rows.back().left.y, world.height - R, 1e-3);
+  EXPECT_NEAR(rows.back().left.y, world.room.height - R, 1e-3);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     EXPECT_EQ(rows[k].left.y, rows[k].right.y) << "row " << k << " is not along x";
     EXPECT_NEAR(rows[k].left.x, R, 1e-3) << "row " << k;
-    EXPECT_NEAR(rows[k].right.x, world.width - R, 1e-3) << "row " << k;
+    EXPECT_NEAR(rows[k].right.x, world.room.width - R, 1e-3) << "row " << k;
     EXPECT_TRUE(s.space.segmentFree(rows[k].left, rows[k].right)) << "row " << k;
     if (k > 0) {
       EXPECT_LE(rows[k].left.y - rows[k - 1].left.y, swath + 1e-9) << "row " << k;

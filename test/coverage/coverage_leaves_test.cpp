@@ -12,6 +12,7 @@
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::coverage {
@@ -25,9 +26,9 @@ const std::string kCoverageTree = ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.x
 
 world::World smallRoom() {
   world::World world;
-  world.width = 2.0;
-  world.height = 1.5;
-  world.initial_pose = {1.0, 0.75, 0.0};
+  world.room.width = 2.0;
+  world.room.height = 1.5;
+  world.robot().initial_pose = {1.0, 0.75, 0.0};
   return world;
 }
 
@@ -41,10 +42,10 @@ NavLeafConfig cleaningConfig(const world::World& world,
 /// A 3 m × 2 m room with a pillar in the middle, which its rows pass round.
 world::World pillarRoom() {
   world::World world;
-  world.width = 3.0;
-  world.height = 2.0;
-  world.circles.push_back({{1.5, 1.0}, 0.12});
-  world.initial_pose = {0.5, 0.5, 0.0};
+  world.room.width = 3.0;
+  world.room.height = 2.0;
+  world.room.circles.push_back({{1.5, 1.0}, 0.12});
+  world.robot().initial_pose = {0.5, 0.5, 0.0};
   return world;
 }
 
@@ -55,7 +56,7 @@ struct LeafTest : ::testing::Test {
         planner(std::make_shared<const CoveragePlanner>(world)),
         context(1),
         sim(world) {
-    board->set<robot::Pose2D>("pose", world.initial_pose);
+    board->set<robot::Pose2D>("pose", world.robot().initial_pose);
     context.params = &params;
     navigation::registerNavLeaves(factory, cleaningConfig(world, planner), context);
   }
@@ -188,16 +189,16 @@ TEST_F(LeafTest, plan_coverage_writes_the_plan_from_the_pose) {
   EXPECT_EQ(p.leg, 0u);
   EXPECT_EQ(p.tries, 0);
   EXPECT_FALSE(p.done());
-  EXPECT_EQ(p.plan.legs.front().points.front().x, world.initial_pose.x);
-  EXPECT_EQ(p.plan.legs.front().points.front().y, world.initial_pose.y);
+  EXPECT_EQ(p.plan.legs.front().points.front().x, world.robot().initial_pose.x);
+  EXPECT_EQ(p.plan.legs.front().points.front().y, world.robot().initial_pose.y);
   // What is left to drive, for ~coverage_path: every leg's points, joined.
   const Polyline rest = remainingPath(p);
-  EXPECT_EQ(rest.front().x, world.initial_pose.x);
+  EXPECT_EQ(rest.front().x, world.robot().initial_pose.x);
   EXPECT_EQ(rest.back().x, p.plan.legs.back().points.back().x);
 }
 
 TEST_F(LeafTest, plan_coverage_inside_furniture_fails_and_leaves_nothing_to_do) {
-  world.circles.push_back({{1.0, 0.75}, 0.3});
+  world.room.circles.push_back({{1.0, 0.75}, 0.3});
   LeafTest::planner = std::make_shared<const CoveragePlanner>(world);
   bt::TreeFactory other;
   navigation::registerNavLeaves(other, cleaningConfig(world, planner), context);
@@ -330,7 +331,7 @@ TEST_F(LeafTest, a_touch_up_stop_the_way_turns_back_at_is_reached_not_cut) {
 /// lattice column stands 5.5 mm from it (floor the rows' 1 cm clearance keeps them from).
 world::World offLatticeRoom() {
   world::World world = smallRoom();
-  world.width -= 0.007;
+  world.room.width -= 0.007;
   return world;
 }
 
@@ -348,7 +349,7 @@ TEST_F(EdgeTest, a_row_along_the_wall_is_driven_closer_than_the_rows_guard_allow
   int band = 0;
   for (int k = 0; k < space.size(); ++k) {
     const Point2 p = space.point(k);
-    if (p.x > world.width - 0.01 && p.y > 0.3 && p.y < 1.2) touch_up.swept[k] = 0, ++band;
+    if (p.x > world.room.width - 0.01 && p.y > 0.3 && p.y < 1.2) touch_up.swept[k] = 0, ++band;
   }
   ASSERT_GT(band, 30);
   touch_up.plan = planner->touchUp(touch_up.swept, {1.0, 0.75});
@@ -356,12 +357,12 @@ TEST_F(EdgeTest, a_row_along_the_wall_is_driven_closer_than_the_rows_guard_allow
                           [](const Leg& leg) { return leg.along_wall; }));
   board->set<CoverageProgress>("coverage", touch_up);
   bt::Tree follow = build(kFollow);
-  double closest = world.width;  // the disc's least gap to the right wall
+  double closest = world.room.width;  // the disc's least gap to the right wall
   bool contact = false;
   bt::Status status = bt::Status::kRunning;
   for (int i = 0; i < 60 * 30 && status == bt::Status::kRunning; ++i) {
     status = step(follow);
-    closest = std::min(closest, world.width - sim.pose().x - world.robot_radius);
+    closest = std::min(closest, world.room.width - sim.pose().x - world.robot().radius);
     contact = contact || sim.senseContact().pressed;
   }
   EXPECT_EQ(status, bt::Status::kSuccess);
@@ -545,7 +546,7 @@ struct CleaningLoop {
   double reachableCoverage() const {
     const sim::CoverageGrid& grid = sim.coverageGrid();
     const double reachable =
-        planner->plan({world.initial_pose.x, world.initial_pose.y}).reachable_area;
+        planner->plan({world.robot().initial_pose.x, world.robot().initial_pose.y}).reachable_area;
     return grid.sweptFreeCells() * grid.cellSize() * grid.cellSize() / reachable;
   }
   world::World world;
@@ -573,7 +574,7 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   // beyond the chair on those rows stays dirty, but the rest of the plan goes on.
   CleaningLoop loop("roomba_world.yaml");
   world::World with_chair = loop.world;
-  with_chair.circles.push_back({{1.5, 3.0}, 0.2});
+  with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
   loop.sim = sim::Simulator(with_chair);
   loop.run(600);
   const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
@@ -593,7 +594,7 @@ TEST(CoverageTree, placed_against_a_wall_it_cleans_instead_of_backing_up_along_i
   // instead of backing up along the wall, 5 cm at a time, into the corner.
   CleaningLoop loop("roomba_world.yaml");
   world::World against_wall = loop.world;
-  against_wall.initial_pose = {3.2, against_wall.robot_radius, 0.0};
+  against_wall.robot().initial_pose = {3.2, against_wall.robot().radius, 0.0};
   loop.sim = sim::Simulator(against_wall);
   ASSERT_TRUE(loop.sim.senseContact().pressed);
   loop.run(600);
@@ -620,7 +621,7 @@ world::World emptyMap() {
       }
     }
   }
-  return world::mapWorld(grid, world::World{}.robot_radius);
+  return world::mapWorld(grid, world::RobotSpec{}.radius);
 }
 
 TEST(CoverageTree, a_map_cut_anywhere_is_cleaned_to_99_percent) {
@@ -629,7 +630,7 @@ TEST(CoverageTree, a_map_cut_anywhere_is_cleaned_to_99_percent) {
   // 98.3 % of the reachable floor for good. The region is kept in whole cells, so its walls lie
   // between lattice points.
   world::World region = world::cropped(emptyMap(), {0.41, 0.38, 3.9245, 3.1445}, "--crop");
-  region.initial_pose = {2.0, 2.0, 0.0};
+  region.robot().initial_pose = {2.0, 2.0, 0.0};
   CleaningLoop loop(region);
   loop.run(300);  // the ideal time is 55 s
   const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());

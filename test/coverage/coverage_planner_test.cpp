@@ -12,6 +12,7 @@
 
 #include "../common/shared_maps.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 using roomba_rrt::coverage::cleaningOptions;
 using roomba_rrt::coverage::CoverageOptions;
@@ -62,9 +63,10 @@ void expectSafe(const World& world, const CoveragePlan& plan) {
 /// grid closer than the robot's radius to a row; with `transits`, to any leg.
 double sweptByRows(const World& world, const CoveragePlan& plan, bool transits = false) {
   constexpr double kStep = 0.01;
-  const int nx = static_cast<int>(world.width / kStep), ny = static_cast<int>(world.height / kStep);
+  const int nx = static_cast<int>(world.room.width / kStep),
+            ny = static_cast<int>(world.room.height / kStep);
   std::vector<char> swept(static_cast<std::size_t>(nx) * ny, 0);
-  const double r = world.robot_radius;
+  const double r = world.robot().radius;
   std::vector<roomba_rrt::geometry::Segment> segments;
   for (const Leg& leg : plan.legs) {
     if (leg.kind != Leg::Kind::kRow && !transits) continue;
@@ -73,13 +75,16 @@ double sweptByRows(const World& world, const CoveragePlan& plan, bool transits =
     }
   }
   for (const roomba_rrt::geometry::Segment& s : segments) {
-    const int i0 = std::max(0, int((std::min(s.a.x, s.b.x) - r - world.origin.x) / kStep) - 1);
-    const int i1 = std::min(nx - 1, int((std::max(s.a.x, s.b.x) + r - world.origin.x) / kStep) + 1);
-    const int j0 = std::max(0, int((std::min(s.a.y, s.b.y) - r - world.origin.y) / kStep) - 1);
-    const int j1 = std::min(ny - 1, int((std::max(s.a.y, s.b.y) + r - world.origin.y) / kStep) + 1);
+    const int i0 = std::max(0, int((std::min(s.a.x, s.b.x) - r - world.room.origin.x) / kStep) - 1);
+    const int i1 =
+        std::min(nx - 1, int((std::max(s.a.x, s.b.x) + r - world.room.origin.x) / kStep) + 1);
+    const int j0 = std::max(0, int((std::min(s.a.y, s.b.y) - r - world.room.origin.y) / kStep) - 1);
+    const int j1 =
+        std::min(ny - 1, int((std::max(s.a.y, s.b.y) + r - world.room.origin.y) / kStep) + 1);
     for (int j = j0; j <= j1; ++j) {
       for (int i = i0; i <= i1; ++i) {
-        const Point2 p{world.origin.x + (i + 0.5) * kStep, world.origin.y + (j + 0.5) * kStep};
+        const Point2 p{world.room.origin.x + (i + 0.5) * kStep,
+                       world.room.origin.y + (j + 0.5) * kStep};
         if (roomba_rrt::geometry::distance(roomba_rrt::geometry::closestPoint(s, p), p) < r &&
             !roomba_rrt::world::penetrates(world, 1e-6, p.x, p.y)) {
           swept[static_cast<std::size_t>(j) * nx + i] = 1;
@@ -120,7 +125,7 @@ CoveragePlan planChecked(const World& world, const Point2& start,
 }
 
 CoveragePlan planChecked(const World& world) {
-  return planChecked(world, {world.initial_pose.x, world.initial_pose.y});
+  return planChecked(world, {world.robot().initial_pose.x, world.robot().initial_pose.y});
 }
 
 double rowCoverage(const World& world, const CoveragePlan& plan) {
@@ -143,7 +148,7 @@ Checked planAndReport(const char* name, const World& world, const Point2& start)
   Checked out{planChecked(world, start)};
   const CoveragePlan& plan = out.plan;
   out.coverage = rowCoverage(world, plan);
-  const double ideal = plan.reachable_area / (2 * world.robot_radius);
+  const double ideal = plan.reachable_area / (2 * world.robot().radius);
   std::printf(
       "%s: %d cells, %zu legs, floor %.2f m², reachable %.2f m², rows sweep %.1f %% (planner: "
       "%.1f %%), plan %.1f m (rows %.1f m), ideal %.1f m (%.2fx)\n",
@@ -158,7 +163,7 @@ Checked planAndReport(const char* name, const World& world, const Point2& start)
 std::optional<World> sharedMap(const std::string& name) {
   const std::string path = ::roomba_rrt::test::sharedMapPath(name);
   if (!std::filesystem::exists(path)) return std::nullopt;
-  return roomba_rrt::world::readWorldFile(path);
+  return roomba_rrt::world::readWorldFile(path).world;
 }
 
 /// The furnished room's plan from its initial pose, for the resume tests.
@@ -166,7 +171,8 @@ class ResumeTest : public ::testing::Test {
  protected:
   const World world = furnishedRoom();
   const CoveragePlanner planner{world};
-  const CoveragePlan plan = planner.plan({world.initial_pose.x, world.initial_pose.y});
+  const CoveragePlan plan =
+      planner.plan({world.robot().initial_pose.x, world.robot().initial_pose.y});
 
   /// The first leg of `kind` from the middle of the plan on, at least `length` long.
   std::size_t legFromTheMiddle(Leg::Kind kind, double length = 0) const {
@@ -185,9 +191,10 @@ TEST(CoveragePlanner, empty_room_is_one_cell_whose_rows_cover_95_percent_of_the_
   const World world = emptyRoom();
   const CoveragePlan plan = planChecked(world);
   EXPECT_EQ(plan.cells, 1);
-  const double reachable = world.width * world.height - 4 * cornerLoss(world.robot_radius);
+  const double reachable =
+      world.room.width * world.room.height - 4 * cornerLoss(world.robot().radius);
   EXPECT_NEAR(plan.reachable_area, reachable, 0.01 * reachable);
-  EXPECT_NEAR(plan.floor_area, world.width * world.height, 1e-6);
+  EXPECT_NEAR(plan.floor_area, world.room.width * world.room.height, 1e-6);
   EXPECT_GE(rowCoverage(world, plan), 0.95);
   // Rows along x, at most a swath apart, from the bottom wall to the top wall.
   std::vector<double> ys;
@@ -204,10 +211,10 @@ TEST(CoveragePlanner, empty_room_is_one_cell_whose_rows_cover_95_percent_of_the_
 
 TEST(CoveragePlanner, central_round_table_is_swept_around) {
   World world = emptyRoom();
-  world.circles.push_back(Circle{{3.2, 2.4}, 0.5});
+  world.room.circles.push_back(Circle{{3.2, 2.4}, 0.5});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
   const double reachable =
-      world.width * world.height - kPi * 0.25 - 4 * cornerLoss(world.robot_radius);
+      world.room.width * world.room.height - kPi * 0.25 - 4 * cornerLoss(world.robot().radius);
   EXPECT_NEAR(plan.reachable_area, reachable, 0.01 * reachable);
   EXPECT_GE(plan.cells, 3);  // below, beside (two), above the table
   EXPECT_GE(rowCoverage(world, plan), 0.95);
@@ -215,7 +222,7 @@ TEST(CoveragePlanner, central_round_table_is_swept_around) {
 
 TEST(CoveragePlanner, a_pillar_standing_free_is_passed_around_and_does_not_split_the_room) {
   World world = emptyRoom();
-  world.circles.push_back(Circle{{3.2, 2.4}, 0.15});
+  world.room.circles.push_back(Circle{{3.2, 2.4}, 0.15});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
   EXPECT_EQ(plan.cells, 1);  // not below, beside (two) and above it
   EXPECT_GE(rowCoverage(world, plan), 0.95);
@@ -236,15 +243,15 @@ TEST(CoveragePlanner, a_pillar_standing_free_is_passed_around_and_does_not_split
   }
   EXPECT_GE(crossings, 2);
   // Beside a wall, with no room to pass between them, it splits the room as any furniture.
-  world.circles.back().center = {3.2, 0.4};
+  world.room.circles.back().center = {3.2, 0.4};
   EXPECT_GE(planChecked(world, {1.0, 2.0}).cells, 2);
 }
 
 TEST(CoveragePlanner, central_rectangular_table_is_swept_around) {
   World world = emptyRoom();
-  world.rectangles.push_back(Rectangle{2.5, 1.8, 3.9, 3.0});
+  world.room.rectangles.push_back(Rectangle{2.5, 1.8, 3.9, 3.0});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
-  const double reachable = world.width * world.height - 1.4 * 1.2 - 4 * cornerLoss(0.17);
+  const double reachable = world.room.width * world.room.height - 1.4 * 1.2 - 4 * cornerLoss(0.17);
   EXPECT_NEAR(plan.reachable_area, reachable, 0.01 * reachable);
   EXPECT_GE(rowCoverage(world, plan), 0.95);
 }
@@ -252,7 +259,7 @@ TEST(CoveragePlanner, central_rectangular_table_is_swept_around) {
 TEST(CoveragePlanner, l_shaped_free_space_is_covered) {
   World world = emptyRoom();
   // The upper right quarter is walled off: the floor is an L with five concave corners.
-  world.rectangles.push_back(Rectangle{3.2, 2.4, 6.4, 4.8});
+  world.room.rectangles.push_back(Rectangle{3.2, 2.4, 6.4, 4.8});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
   const double reachable = 6.4 * 4.8 - 3.2 * 2.4 - 5 * cornerLoss(0.17);
   EXPECT_NEAR(plan.reachable_area, reachable, 0.01 * reachable);
@@ -263,8 +270,8 @@ TEST(CoveragePlanner, l_shaped_free_space_is_covered) {
 TEST(CoveragePlanner, passage_narrower_than_the_disc_is_reported_unreachable_never_crossed) {
   World world = emptyRoom();
   // A wall across the room at x = 3.1..3.3 with a 0.30 m gap: the disc (0.34 m) cannot pass.
-  world.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
-  world.rectangles.push_back(Rectangle{3.1, 2.3, 3.3, 4.8});
+  world.room.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
+  world.room.rectangles.push_back(Rectangle{3.1, 2.3, 3.3, 4.8});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
   for (const Leg& leg : plan.legs) {
     for (const Point2& p : leg.points) EXPECT_LT(p.x, 3.1) << "crossed the wall";
@@ -278,8 +285,8 @@ TEST(CoveragePlanner, passage_narrower_than_the_disc_is_reported_unreachable_nev
 TEST(CoveragePlanner, passage_the_disc_just_fits_through_is_crossed_and_both_sides_covered) {
   World world = emptyRoom();
   // A 0.40 m gap: the disc with its clearance (0.36 m) fits.
-  world.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
-  world.rectangles.push_back(Rectangle{3.1, 2.4, 3.3, 4.8});
+  world.room.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
+  world.room.rectangles.push_back(Rectangle{3.1, 2.4, 3.3, 4.8});
   const CoveragePlan plan = planChecked(world, {1.0, 1.0});
   const double floor = 6.4 * 4.8 - 0.2 * 4.4;
   EXPECT_GT(plan.reachable_area, 0.97 * floor);
@@ -295,14 +302,14 @@ TEST(FreeSpace, shortest_path_goes_round_a_wall_and_none_leads_into_a_closed_roo
     return k.value_or(0);
   };
   World world = emptyRoom();
-  world.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 4.3});
+  world.room.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 4.3});
   const FreeSpace door(world, 0.01, 0.025);
   const std::optional<Polyline> path =
       door.shortestPath(point(door, 1.0, 1.0), point(door, 5.5, 1.0));
   ASSERT_TRUE(path);
   EXPECT_GT(roomba_rrt::geometry::pathLength(*path), 8.0);  // up to the door and down: not 4.5
   EXPECT_TRUE(std::any_of(path->begin(), path->end(), [](const Point2& p) { return p.y > 4.3; }));
-  world.rectangles.back().max_y = 4.8;  // the door closed
+  world.room.rectangles.back().max_y = 4.8;  // the door closed
   const FreeSpace closed(world, 0.01, 0.025);
   EXPECT_FALSE(closed.shortestPath(point(closed, 1.0, 1.0), point(closed, 5.5, 1.0)));
   EXPECT_TRUE(closed.shortestPath(point(closed, 1.0, 1.0), point(closed, 2.5, 4.0)));
@@ -344,7 +351,7 @@ TEST(FreeSpace, rounded_turns_a_u_turn_on_arcs_and_keeps_a_corner_a_bin_stands_i
   // bin's clearance, so that corner is kept; with no turn, nothing changes.
   World bin = world;
   const double grown = 0.05 + 0.18;  // the bin's radius + the planning radius
-  bin.circles.push_back(Circle{{4.0 - grown - 0.02, 1.0 + grown + 0.02}, 0.05});
+  bin.room.circles.push_back(Circle{{4.0 - grown - 0.02, 1.0 + grown + 0.02}, 0.05});
   const FreeSpace beside(bin, 0.01, 0.025);
   const Polyline corner{{2.0, 1.0}, {4.0, 1.0}, {4.0, 3.0}};
   ASSERT_TRUE(beside.segmentFree(corner[0], corner[1]) && beside.segmentFree(corner[1], corner[2]));
@@ -372,9 +379,9 @@ TEST(CoveragePlanner, one_cell_wide_corridor_of_a_map_is_unreachable_and_never_c
     }
   }
   World world;
-  world.map = grid;
-  world.width = 4.0;
-  world.height = 2.0;
+  world.room.map = grid;
+  world.room.width = 4.0;
+  world.room.height = 2.0;
   const CoveragePlan plan = planChecked(world, {0.5, 0.5});
   for (const Leg& leg : plan.legs) {
     for (const Point2& p : leg.points) EXPECT_LT(p.x, 1.9) << "crossed the wall";
@@ -387,28 +394,31 @@ TEST(CoveragePlanner, one_cell_wide_corridor_of_a_map_is_unreachable_and_never_c
 /// (edge h from the world's origin): a floor point counts when a free centre (world::penetrates)
 /// on a grid of h/10 lies closer than r to it. For a world whose free space is one piece.
 double reachableByBruteForce(const World& world, double h) {
-  const double r = world.robot_radius;
+  const double r = world.robot().radius;
   const double step = h / 10;
-  const int nx = static_cast<int>(std::ceil(world.width / step));
-  const int ny = static_cast<int>(std::ceil(world.height / step));
+  const int nx = static_cast<int>(std::ceil(world.room.width / step));
+  const int ny = static_cast<int>(std::ceil(world.room.height / step));
   std::vector<char> free(static_cast<std::size_t>(nx) * ny);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       free[static_cast<std::size_t>(j) * nx + i] = !roomba_rrt::world::penetrates(
-          world, r, world.origin.x + i * step, world.origin.y + j * step);
+          world, r, world.room.origin.x + i * step, world.room.origin.y + j * step);
     }
   }
   const int reach = static_cast<int>(std::ceil(r / step)) + 1;
   double area = 0;
-  for (double y = world.origin.y + h / 2; y < world.origin.y + world.height; y += h) {
-    for (double x = world.origin.x + h / 2; x < world.origin.x + world.width; x += h) {
+  for (double y = world.room.origin.y + h / 2; y < world.room.origin.y + world.room.height;
+       y += h) {
+    for (double x = world.room.origin.x + h / 2; x < world.room.origin.x + world.room.width;
+         x += h) {
       if (roomba_rrt::world::penetrates(world, 1e-6, x, y)) continue;  // not floor
-      const int ci = static_cast<int>(std::lround((x - world.origin.x) / step));
-      const int cj = static_cast<int>(std::lround((y - world.origin.y) / step));
+      const int ci = static_cast<int>(std::lround((x - world.room.origin.x) / step));
+      const int cj = static_cast<int>(std::lround((y - world.room.origin.y) / step));
       bool reached = false;
       for (int j = std::max(0, cj - reach); j <= std::min(ny - 1, cj + reach) && !reached; ++j) {
         for (int i = std::max(0, ci - reach); i <= std::min(nx - 1, ci + reach) && !reached; ++i) {
-          const double dx = world.origin.x + i * step - x, dy = world.origin.y + j * step - y;
+          const double dx = world.room.origin.x + i * step - x,
+                       dy = world.room.origin.y + j * step - y;
           reached = free[static_cast<std::size_t>(j) * nx + i] && dx * dx + dy * dy < r * r;
         }
       }
@@ -436,8 +446,8 @@ TEST(CoveragePlanner,
     }
   }
   World world;
-  world.map = grid;
-  world.width = world.height = 1.6;
+  world.room.map = grid;
+  world.room.width = world.room.height = 1.6;
   const CoveragePlan plan = planChecked(world, {0.6, 0.5});
   const double brute = reachableByBruteForce(world, CoverageOptions().resolution);
   // Within 2 lattice points (the brute force's grid and the planner's directions are millimetres
@@ -450,20 +460,20 @@ TEST(CoveragePlanner, reachable_floor_ends_at_a_thin_wall_with_a_closed_room_beh
   // A 2 m × 1.2 m room cut by a 2 cm wall at x = 0.99..1.01, no door. The disc reaches the floor
   // beside the wall on the far side only from centres on that side, which the robot cannot take.
   World world;
-  world.width = 2.0;
-  world.height = 1.2;
-  world.rectangles.push_back(Rectangle{0.99, 0.0, 1.01, 1.2});
+  world.room.width = 2.0;
+  world.room.height = 1.2;
+  world.room.rectangles.push_back(Rectangle{0.99, 0.0, 1.01, 1.2});
   const CoveragePlan plan = planChecked(world, {0.5, 0.6});
   World near_side = world;  // the same lattice, up to the wall
-  near_side.width = 0.99;
-  near_side.rectangles.clear();
+  near_side.room.width = 0.99;
+  near_side.room.rectangles.clear();
   const double brute = reachableByBruteForce(near_side, CoverageOptions().resolution);
   EXPECT_NEAR(plan.reachable_area, brute, 2 * 0.025 * 0.025) << "brute force " << brute;
 }
 
 TEST(CoveragePlanner, same_world_and_start_give_the_same_plan) {
   const World world = furnishedRoom();
-  const Point2 start{world.initial_pose.x, world.initial_pose.y};
+  const Point2 start{world.robot().initial_pose.x, world.robot().initial_pose.y};
   EXPECT_TRUE(samePlan(CoveragePlanner(world).plan(start), CoveragePlanner(world).plan(start)));
 }
 
@@ -472,8 +482,8 @@ TEST(CoveragePlanner, a_plan_does_not_depend_on_what_was_planned_before) {
   // for each transit was most of the planning time): nothing of one search may leak into the next.
   const World room = furnishedRoom();
   const World map = roomba_rrt::world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml");
-  const Point2 room_start{room.initial_pose.x, room.initial_pose.y};
-  const Point2 map_start{map.initial_pose.x, map.initial_pose.y};
+  const Point2 room_start{room.robot().initial_pose.x, room.robot().initial_pose.y};
+  const Point2 map_start{map.robot().initial_pose.x, map.robot().initial_pose.y};
   const CoveragePlanner room_planner(room), map_planner(map);
   const CoveragePlan room_first = room_planner.plan(room_start);
   const CoveragePlan map_first = map_planner.plan(map_start);
@@ -487,7 +497,7 @@ TEST(CoveragePlanner, floor_above_a_sideboard_against_the_wall_is_swept_too) {
   // The cell widens where the sweep line passes the sideboard's top: its even rows may pass that
   // level by most of a swath and leave a strip along the sideboard; a row beside the step does not.
   World world = emptyRoom();
-  world.rectangles.push_back(Rectangle{0.0, 0.0, 2.2, 0.5});
+  world.room.rectangles.push_back(Rectangle{0.0, 0.0, 2.2, 0.5});
   const CoveragePlan plan = planChecked(world, {5.0, 1.0});
   int unswept = 0;
   for (double y = 0.54; y <= 0.8; y += 0.02) {
@@ -497,7 +507,7 @@ TEST(CoveragePlanner, floor_above_a_sideboard_against_the_wall_is_swept_too) {
         const roomba_rrt::geometry::Segment s{leg.points.front(), leg.points.back()};
         swept |= leg.kind == Leg::Kind::kRow &&
                  roomba_rrt::geometry::distance(roomba_rrt::geometry::closestPoint(s, {x, y}),
-                                                {x, y}) < world.robot_radius;
+                                                {x, y}) < world.robot().radius;
       }
       unswept += !swept;
     }
@@ -508,12 +518,12 @@ TEST(CoveragePlanner, floor_above_a_sideboard_against_the_wall_is_swept_too) {
 
 TEST(CoveragePlanner, furnished_room_rows_cover_95_percent_of_the_reachable_floor) {
   const World world = furnishedRoom();
-  const auto [plan, coverage] =
-      planAndReport("furnished room", world, {world.initial_pose.x, world.initial_pose.y});
+  const auto [plan, coverage] = planAndReport(
+      "furnished room", world, {world.robot().initial_pose.x, world.robot().initial_pose.y});
   EXPECT_GE(coverage, 0.95);
   EXPECT_NEAR(plan.swept_area / plan.reachable_area, coverage, 0.02);
   // The ideal time, 162 s at 0.5 m/s: the reachable floor is about 27.5 m².
-  EXPECT_NEAR(plan.reachable_area / (2 * world.robot_radius) / 0.5, 162, 3);
+  EXPECT_NEAR(plan.reachable_area / (2 * world.robot().radius) / 0.5, 162, 3);
 }
 
 TEST(CoveragePlanner, apartment_map_is_covered_safely) {
@@ -660,8 +670,8 @@ TEST_F(ResumeTest, in_a_transit_goes_to_the_next_row_never_back_to_the_start) {
 TEST(CoveragePlanner, resume_skips_a_row_it_cannot_reach) {
   World world = emptyRoom();
   // A wall across the room with a gap the disc cannot pass: the right half is out of reach.
-  world.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
-  world.rectangles.push_back(Rectangle{3.1, 2.3, 3.3, 4.8});
+  world.room.rectangles.push_back(Rectangle{3.1, 0.0, 3.3, 2.0});
+  world.room.rectangles.push_back(Rectangle{3.1, 2.3, 3.3, 4.8});
   const CoveragePlanner planner(world);
   const CoveragePlan plan = planner.plan({1.0, 1.0});
   // A plan whose next row is in the right half, then the left half's rows.
@@ -682,7 +692,7 @@ TEST(CoveragePlanner, resume_skips_a_row_it_cannot_reach) {
 
 TEST(CoveragePlanner, start_inside_furniture_plans_nothing_and_reaches_nothing) {
   World world = emptyRoom();
-  world.circles.push_back(Circle{{3.2, 2.4}, 0.5});
+  world.room.circles.push_back(Circle{{3.2, 2.4}, 0.5});
   const CoveragePlan plan = CoveragePlanner(world).plan({3.2, 2.4});
   EXPECT_TRUE(plan.legs.empty());
   EXPECT_EQ(plan.reachable_area, 0);
@@ -700,11 +710,11 @@ TEST(CoveragePlanner, cleaning_options_space_the_rows_by_the_robots_own_diameter
   // and needlessly close for a 0.5 m one (half as many rows again to drive).
   for (const double radius : {0.10, 0.17, 0.25}) {
     World world = furnishedRoom();
-    world.robot_radius = radius;
+    world.robot().radius = radius;
     const CoverageOptions options = cleaningOptions(world);
     EXPECT_NEAR(options.swath, 2 * radius - CoverageOptions::kMinOverlap, 1e-12) << radius;
     const CoveragePlan plan =
-        planChecked(world, {world.initial_pose.x, world.initial_pose.y}, options);
+        planChecked(world, {world.robot().initial_pose.x, world.robot().initial_pose.y}, options);
     EXPECT_GE(rowCoverage(world, plan), 0.9) << radius;
     const double ideal = plan.reachable_area / (2 * radius);  // m of rows, each floor point once
     std::printf("radius %.2f m: rows %.1f m for an ideal %.1f m\n", radius, plan.rowLength(),
@@ -738,7 +748,8 @@ struct Driven {
 TEST(CoveragePlanner, touch_up_goes_back_for_a_skipped_row_and_then_has_nothing_left) {
   const World world = furnishedRoom();
   const CoveragePlanner planner(world);
-  const CoveragePlan plan = planner.plan({world.initial_pose.x, world.initial_pose.y});
+  const CoveragePlan plan =
+      planner.plan({world.robot().initial_pose.x, world.robot().initial_pose.y});
   Driven all;
   all.drive(planner, plan.legs);
   // The longest row skipped, with the pieces of it beyond the islands it passes around: the
@@ -827,7 +838,7 @@ TEST(CoveragePlanner, touch_up_sweeps_a_strip_along_a_wall_with_one_row_beside_i
   ASSERT_EQ(rows.size(), 1u);
   const Point2 a = rows[0].points.front(), b = rows[0].points.back();
   EXPECT_NEAR(a.x, b.x, 1e-9);  // along the wall
-  EXPECT_LT(a.x, world.robot_radius + planner.options().clearance + 0.003);
+  EXPECT_LT(a.x, world.robot().radius + planner.options().clearance + 0.003);
   EXPECT_NEAR(std::fabs(a.y - b.y), 1.5, 0.05);
   Driven driven{swept};
   driven.drive(planner, touch_up.legs);
@@ -841,7 +852,7 @@ TEST(CoveragePlanner, touch_up_sweeps_a_strip_along_a_wall_with_one_row_beside_i
 struct OffLatticeWall {
   World world = [] {
     World w = emptyRoom();
-    w.width -= 0.007;
+    w.room.width -= 0.007;
     return w;
   }();
   std::vector<std::uint8_t> band(const CoveragePlanner& planner, int& points) const {
@@ -850,7 +861,7 @@ struct OffLatticeWall {
     points = 0;
     for (int k = 0; k < space.size(); ++k) {
       const Point2 p = space.point(k);
-      if (p.x > world.width - planner.options().clearance && p.y > 1.0 && p.y < 3.0) {
+      if (p.x > world.room.width - planner.options().clearance && p.y > 1.0 && p.y < 3.0) {
         swept[k] = 0, ++points;
       }
     }
@@ -872,7 +883,7 @@ TEST(CoveragePlanner, touch_up_cleans_along_a_wall_closer_than_the_clearance_kee
   }
   ASSERT_EQ(edges.size(), 1u);
   // Where the robot arrives and leaves, the clearance; along the wall, the edge clearance.
-  const double r = room.world.robot_radius, wall = room.world.width;
+  const double r = room.world.robot().radius, wall = room.world.room.width;
   const Polyline& row = edges[0].points;
   ASSERT_EQ(row.size(), 4u);
   EXPECT_NEAR(wall - row.front().x, r + planner.options().clearance, 1e-4);

@@ -10,6 +10,7 @@
 
 #include "roomba_rrt/geometry/geometry.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::coverage {
 namespace {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::coverage {
 namespace {
@@ -36,9 +37,9 @@ world::World diamondMap() {
     }
   }
   world::World world;
-  world.map = grid;
-  world.width = 4.0;
-  world.height = 4.0;
+  world.room.map = grid;
+  world.room.width = 4.0;
+  world.room.height = 4.0;
   return world;
 }
 
@@ -56,7 +57,7 @@ void expectClosedAndSafe(const world::World& world, const Polyline& loop) {
   ASSERT_GE(loop.size(), 4u);
   EXPECT_EQ(loop.front().x, loop.back().x);
   EXPECT_EQ(loop.front().y, loop.back().y);
-  const double planning_radius = world.robot_radius + kClearance;
+  const double planning_radius = world.robot().radius + kClearance;
   for (std::size_t s = 0; s + 1 < loop.size(); ++s) {
     const Point2 a = loop[s], b = loop[s + 1];
     const int samples = 1 + static_cast<int>(std::ceil(geometry::distance(a, b) / 1e-3));
@@ -80,13 +81,13 @@ double enclosedArea(const Polyline& loop) {
 
 TEST(WallLoop, goes_round_the_empty_room_at_the_planning_radius_from_its_walls) {
   const world::World room = emptyRoom();
-  const Polyline loop = loopIn(room, {room.initial_pose.x, room.initial_pose.y});
+  const Polyline loop = loopIn(room, {room.robot().initial_pose.x, room.robot().initial_pose.y});
   expectClosedAndSafe(room, loop);
-  const double inset = room.robot_radius + kClearance;
+  const double inset = room.robot().radius + kClearance;
   for (const Point2& p : loop) {  // pushed out from the lattice onto the walls' clearance
     EXPECT_TRUE(world::penetrates(room, inset + 1e-3, p.x, p.y)) << p.x << ", " << p.y;
   }
-  const double width = room.width - 2 * inset, height = room.height - 2 * inset;
+  const double width = room.room.width - 2 * inset, height = room.room.height - 2 * inset;
   EXPECT_NEAR(geometry::pathLength(loop), 2 * (width + height), 0.01 * 2 * (width + height));
   EXPECT_NEAR(enclosedArea(loop), width * height, 0.01 * width * height);
 }
@@ -96,7 +97,7 @@ TEST(WallLoop, follows_the_steps_of_map_walls_at_a_slant_to_the_lattice) {
   const Polyline loop = loopIn(diamond, {2.0, 2.0});
   expectClosedAndSafe(diamond, loop);
   // Each corner within a lattice step of a wall (its steps' corners) ...
-  const double inset = diamond.robot_radius + kClearance;
+  const double inset = diamond.robot().radius + kClearance;
   for (const Point2& p : loop) {
     EXPECT_TRUE(world::penetrates(diamond, inset + kResolution, p.x, p.y)) << p.x << ", " << p.y;
   }
@@ -114,12 +115,12 @@ TEST(WallLoop, follows_the_steps_of_map_walls_at_a_slant_to_the_lattice) {
 
 TEST(WallLoop, passes_furniture_standing_free_in_the_room_by) {
   world::World room = emptyRoom();
-  room.circles.push_back({{3.2, 2.4}, 0.5});  // a round table in the middle
-  room.initial_pose = {1.0, 1.0, 0.0};
+  room.room.circles.push_back({{3.2, 2.4}, 0.5});  // a round table in the middle
+  room.robot().initial_pose = {1.0, 1.0, 0.0};
   const Polyline loop = loopIn(room, {1.0, 1.0});
   expectClosedAndSafe(room, loop);
   for (const Point2& p : loop) {
-    EXPECT_GT(geometry::distance(p, {3.2, 2.4}), 0.5 + room.robot_radius + 0.5);
+    EXPECT_GT(geometry::distance(p, {3.2, 2.4}), 0.5 + room.robot().radius + 0.5);
   }
   const Polyline without = loopIn(emptyRoom(), {1.0, 1.0});
   EXPECT_NEAR(geometry::pathLength(loop), geometry::pathLength(without), 1e-9);

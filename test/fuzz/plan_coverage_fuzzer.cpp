@@ -17,6 +17,7 @@
 #include "../../src/nodes/coverage_ros.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace {
 

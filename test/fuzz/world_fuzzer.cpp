@@ -7,6 +7,7 @@
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using roomba_rrt::sim::Simulator;
@@ -19,6 +20,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   Simulator simulator(world);
   for (int i = 0; i < 50; ++i)
-    simulator.step({world.max_linear_speed, 0.3 * world.max_angular_speed});
+    simulator.step({world.robot().max_linear_speed, 0.3 * world.robot().max_angular_speed});
   return 0;
 }

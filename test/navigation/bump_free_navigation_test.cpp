@@ -12,6 +12,7 @@
 #include "nav_eval_run.h"
 #include "roomba_rrt/navigation/motion_guard.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::navigation {
 namespace {

@@ -10,6 +10,7 @@
 #include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::navigation {

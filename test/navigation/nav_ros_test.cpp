@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../../src/nodes/nav_ros.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::nav_node {
 namespace {

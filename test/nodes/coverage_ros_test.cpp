@@ -14,6 +14,7 @@
 
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::coverage_node {
 namespace {
@@ -55,7 +56,7 @@ TEST(CoverageRos, the_furnished_room_is_covered_by_rows_a_disc_can_drive) {
   ASSERT_GT(r.path.poses.size(), 40u);
   EXPECT_DOUBLE_EQ(r.path.poses.front().pose.position.x, 1.0);  // from where the robot is
   EXPECT_DOUBLE_EQ(r.path.poses.front().pose.position.y, 1.0);
-  expectDrivable(*d.room, r.path, d.room->robot_radius + d.clearance - 1e-6);
+  expectDrivable(*d.room, r.path, d.room->robot().radius + d.clearance - 1e-6);
   // The floor is the room less its furniture; the reachable part is most of it, and the rows
   // sweep most of that (the touch-up of roomba_bt's tree does the rest).
   EXPECT_NEAR(r.floor_area, 6.4 * 4.8 - 1.6 * 0.6 - 0.8 * 1.5 - 1.2 * 0.4 - M_PI * 0.13, 0.1);
@@ -172,7 +173,7 @@ TEST(CoverageRos, another_robot_gets_rows_a_swath_of_its_own_apart) {
   const PlanCoverage::Response r = planCoverage(request, d, ros::Time(0));
   ASSERT_TRUE(r.success) << r.message;
   world::World big = *d.room;
-  big.robot_radius = 0.25;
+  big.robot().radius = 0.25;
   expectDrivable(big, r.path, 0.25 + d.clearance - 1e-6);
   const PlanCoverage::Response roomba = planCoverage(from(1.0, 1.5), d, ros::Time(0));
   EXPECT_LT(r.row_length, 0.8 * roomba.row_length);  // rows up to 0.49 m apart, not 0.335

@@ -20,6 +20,7 @@
 #include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/validate.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt {
 namespace {
@@ -89,21 +90,28 @@ TEST(ReconfigureRanges, roomba_sim_cfg_is_world_limits) {
   // A world where a speed limit is bounded only by its range: the smallest step, a large robot.
   world::World base;
   base.step = world::WorldLimits::kMinStep;
-  const auto field = [base](double world::World::*member) {
+  const auto robot = [base](double world::RobotSpec::*member) {
     return [base, member](double v) {
       world::World w = base;
-      w.*member = v;
+      w.robot().*member = v;
       world::validate(w);
     };
   };
+  const auto setting = [](double world::SimulatorSettings::*member) {
+    return [member](double v) {
+      world::SimulatorSettings s;
+      s.*member = v;
+      world::validate(s);
+    };
+  };
   expectSameRange("real_time_factor", lo.real_time_factor, hi.real_time_factor,
-                  field(&world::World::real_time_factor));
+                  setting(&world::SimulatorSettings::real_time_factor));
   expectSameRange("command_timeout", lo.command_timeout, hi.command_timeout,
-                  field(&world::World::command_timeout), End::kOpen);
+                  setting(&world::SimulatorSettings::command_timeout), End::kOpen);
   expectSameRange("max_linear_speed", lo.max_linear_speed, hi.max_linear_speed,
-                  field(&world::World::max_linear_speed), End::kOpen);
+                  robot(&world::RobotSpec::max_linear_speed), End::kOpen);
   expectSameRange("max_angular_speed", lo.max_angular_speed, hi.max_angular_speed,
-                  field(&world::World::max_angular_speed), End::kOpen);
+                  robot(&world::RobotSpec::max_angular_speed), End::kOpen);
 }
 
 TEST(ReconfigureRanges, nav_follower_cfg_is_follower_limits) {

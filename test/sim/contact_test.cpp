@@ -11,8 +11,8 @@ using namespace roomba_rrt::world;
 namespace {
 World furnishedRoom() {
   World world;
-  world.circles = {{2.0, 2.0, 0.5}};
-  world.rectangles = {{5.0, 0.0, 6.4, 1.0}};
+  world.room.circles = {{2.0, 2.0, 0.5}};
+  world.room.rectangles = {{5.0, 0.0, 6.4, 1.0}};
   return world;
 }
 }  // namespace
@@ -44,7 +44,7 @@ TEST(ResolvePenetration, settles_in_the_corner_between_furniture_and_wall) {
 
 TEST(ResolvePenetration, reports_a_gap_narrower_than_the_robot) {
   World world;
-  world.rectangles = {{0.0, 0.0, 3.0, 2.3}, {0.0, 2.5, 3.0, 4.8}};  // a 0.2 m slot
+  world.room.rectangles = {{0.0, 0.0, 3.0, 2.3}, {0.0, 2.5, 3.0, 4.8}};  // a 0.2 m slot
   double x = 1.0, y = 2.4;
   EXPECT_FALSE(resolvePenetration(world, x, y));
 }

@@ -18,7 +18,7 @@ TEST(CoverageGrid, covers_the_room_with_cells_of_the_configured_size) {
 
 TEST(CoverageGrid, furniture_is_not_free_floor) {
   World world;
-  world.rectangles = {{0.0, 0.0, 1.0, 1.0}};
+  world.room.rectangles = {{0.0, 0.0, 1.0, 1.0}};
   const CoverageGrid grid{world};
   EXPECT_EQ(grid.freeCells(), 256 * 192 - 40 * 40);
   EXPECT_FALSE(grid.isFree(10, 10));
@@ -40,7 +40,7 @@ TEST(CoverageGrid, a_disc_marks_its_area_and_marking_twice_counts_once) {
 
 TEST(CoverageGrid, swept_furniture_cells_do_not_count) {
   World world;
-  world.circles = {{3.2, 2.4, 0.1}};
+  world.room.circles = {{3.2, 2.4, 0.1}};
   CoverageGrid grid{world};
   grid.markDisc(3.2, 2.4, 0.5);
   CoverageGrid empty{World{}};

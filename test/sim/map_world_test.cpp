@@ -16,6 +16,7 @@
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 using namespace roomba_rrt;
 
@@ -84,12 +85,12 @@ TEST_F(MapWorld, a_map_yaml_is_a_world_whose_room_is_the_map) {
   const std::string world_file =
       write("w.yaml", "map: m.yaml\ninitial_pose: {x: -0.5, y: 0.25, theta: 0}\n");
   const world::World w = world::loadWorld(world_file);
-  ASSERT_TRUE(w.map);
-  EXPECT_DOUBLE_EQ(w.origin.x, -1.0);
-  EXPECT_DOUBLE_EQ(w.origin.y, -0.5);
-  EXPECT_DOUBLE_EQ(w.width, 2.0);
-  EXPECT_DOUBLE_EQ(w.height, 1.5);
-  EXPECT_EQ(w.map_file, (dir_ / "m.yaml").string());
+  ASSERT_TRUE(w.room.map);
+  EXPECT_DOUBLE_EQ(w.room.origin.x, -1.0);
+  EXPECT_DOUBLE_EQ(w.room.origin.y, -0.5);
+  EXPECT_DOUBLE_EQ(w.room.width, 2.0);
+  EXPECT_DOUBLE_EQ(w.room.height, 1.5);
+  EXPECT_EQ(w.room.map_file, (dir_ / "m.yaml").string());
   EXPECT_THROW(world::loadWorld(write("r.yaml", "map: m.yaml\nroom: {width: 3, height: 3}\n")),
                util::InvalidInput);
   try {
@@ -110,21 +111,21 @@ TEST_F(MapWorld, a_slam_maps_unknown_border_is_not_part_of_the_room) {
   draw(rows);  // origin (-1, -0.5): the room's cells 70..109 x 20..49 (rows from the bottom)
   const world::World w =
       world::loadWorld(write("w.yaml", "map: m.yaml\ninitial_pose: {x: 3.2, y: 1.6, theta: 0}\n"));
-  EXPECT_DOUBLE_EQ(w.origin.x, -1.0 + 70 * 0.05);
-  EXPECT_DOUBLE_EQ(w.origin.y, -0.5 + 20 * 0.05);
-  EXPECT_NEAR(w.width, 2.0, 1e-12);
-  EXPECT_NEAR(w.height, 1.5, 1e-12);
+  EXPECT_DOUBLE_EQ(w.room.origin.x, -1.0 + 70 * 0.05);
+  EXPECT_DOUBLE_EQ(w.room.origin.y, -0.5 + 20 * 0.05);
+  EXPECT_NEAR(w.room.width, 2.0, 1e-12);
+  EXPECT_NEAR(w.room.height, 1.5, 1e-12);
   EXPECT_EQ(w.coverage_cell_size, 0.025);  // the room's, not the image's 8 m x 4.5 m
   // The whole image can still be named when cutting a region; what is kept is the room's part.
   const world::World part = world::cropped(w, {-1.0, -0.5, 3.5, 1.5}, "--crop");
-  EXPECT_DOUBLE_EQ(part.origin.x, w.origin.x);
-  EXPECT_NEAR(part.origin.x + part.width, 3.5, 1e-12);
-  EXPECT_NEAR(part.origin.y + part.height, 1.5, 1e-12);
+  EXPECT_DOUBLE_EQ(part.room.origin.x, w.room.origin.x);
+  EXPECT_NEAR(part.room.origin.x + part.room.width, 3.5, 1e-12);
+  EXPECT_NEAR(part.room.origin.y + part.room.height, 1.5, 1e-12);
   EXPECT_THROW(world::cropped(w, {-1.0, -0.5, 2.0, 0.4}, "--crop"), util::InvalidInput);
   // Driving: the same walls as the room alone (its inner wall at its column 20).
   sim::Simulator sim(w);
   for (int i = 0; i < 120; ++i) sim.step({0.5, 0.0});
-  EXPECT_NEAR(sim.pose().x, w.origin.x + 20 * 0.05 - w.robot_radius, 1e-9);
+  EXPECT_NEAR(sim.pose().x, w.room.origin.x + 20 * 0.05 - w.robot().radius, 1e-9);
 }
 
 TEST_F(MapWorld, a_region_is_kept_in_whole_cells_inside_it) {
@@ -134,21 +135,21 @@ TEST_F(MapWorld, a_region_is_kept_in_whole_cells_inside_it) {
   const world::World w =
       world::loadWorld(write("w.yaml", "map: m.yaml\ninitial_pose: {x: -0.5, y: 0.6, theta: 0}\n"));
   const world::World part = world::cropped(w, {-0.98, -0.47, 0.93, 0.96}, "--crop");
-  EXPECT_NEAR(part.origin.x, -0.95, 1e-12);  // in, to the map's grid
-  EXPECT_NEAR(part.origin.y, -0.45, 1e-12);
+  EXPECT_NEAR(part.room.origin.x, -0.95, 1e-12);  // in, to the map's grid
+  EXPECT_NEAR(part.room.origin.y, -0.45, 1e-12);
   EXPECT_EQ(part.coverage_cell_size, 0.025);
-  EXPECT_NEAR(part.width, 75 * 0.025, 1e-12);   // 1.88 m: 75 whole cells of the lattice
-  EXPECT_NEAR(part.height, 56 * 0.025, 1e-12);  // 1.41 m
+  EXPECT_NEAR(part.room.width, 75 * 0.025, 1e-12);   // 1.88 m: 75 whole cells of the lattice
+  EXPECT_NEAR(part.room.height, 56 * 0.025, 1e-12);  // 1.41 m
   // A room without a map: its corner stays, the size shrinks to whole cells unless it reaches
   // the room's wall.
   world::World room;
-  room.width = 2.0;
-  room.height = 1.5;
+  room.room.width = 2.0;
+  room.room.height = 1.5;
   const world::World in_room = world::cropped(room, {0.013, 0.02, 1.9, 1.5}, "--crop");
-  EXPECT_DOUBLE_EQ(in_room.origin.x, 0.013);
-  EXPECT_DOUBLE_EQ(in_room.origin.y, 0.02);
-  EXPECT_NEAR(in_room.width, 75 * 0.025, 1e-12);  // 1.887 m
-  EXPECT_NEAR(in_room.height, 1.48, 1e-12);       // to the room's top wall, where it was asked
+  EXPECT_DOUBLE_EQ(in_room.room.origin.x, 0.013);
+  EXPECT_DOUBLE_EQ(in_room.room.origin.y, 0.02);
+  EXPECT_NEAR(in_room.room.width, 75 * 0.025, 1e-12);  // 1.887 m
+  EXPECT_NEAR(in_room.room.height, 1.48, 1e-12);       // to the room's top wall, where it was asked
   // Wider than the robot (0.34 m) as asked, 0.33 m once on the map's grid: refused.
   EXPECT_THROW(world::cropped(w, {-0.98, -0.47, -0.62, 0.5}, "--crop"), util::InvalidInput);
 }
@@ -161,7 +162,7 @@ TEST_F(MapWorld, driving_into_a_wall_of_cells_stops_exactly_at_its_face_with_bot
   robot::BumperState bumper;
   for (int i = 0; i < 120; ++i) bumper = sim.step({0.5, 0.0});
   // The wall's cells start at x = -1 + 20 * 0.05 = 0.
-  EXPECT_NEAR(sim.pose().x, 0.0 - w.robot_radius, 1e-9);
+  EXPECT_NEAR(sim.pose().x, 0.0 - w.robot().radius, 1e-9);
   EXPECT_NEAR(sim.pose().y, 0.6, 1e-9);  // no sideways nudge at the seams between cells
   EXPECT_TRUE(bumper.pressed);
   EXPECT_TRUE(bumper.left);

@@ -9,6 +9,7 @@
 
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/world/world_file.h"
 
 using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
@@ -111,8 +112,8 @@ TEST(MultiRobotSimulator, ten_robots_never_overlap_over_1e5_random_commands) {
         ASSERT_FALSE(penetrates(world, p.x, p.y)) << "robot " << a << " step " << i;
         for (std::size_t b = 0; b < a; ++b) {
           const double d = std::hypot(p.x - sim.pose(b).x, p.y - sim.pose(b).y);
-          ASSERT_GE(d, 2 * world.robot_radius - 1e-9) << a << " overlaps " << b << " step " << i;
-          contacts += d <= 2 * world.robot_radius + kContactTolerance;
+          ASSERT_GE(d, 2 * world.robot().radius - 1e-9) << a << " overlaps " << b << " step " << i;
+          contacts += d <= 2 * world.robot().radius + kContactTolerance;
         }
       }
     }

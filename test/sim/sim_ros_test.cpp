@@ -100,12 +100,12 @@ TEST(SimRos, coverage_map_shows_swept_floor_unswept_floor_and_furniture) {
   // A 1 m × 0.5 m room of 25 cm cells (4 × 2), a box over the top-right cell, and a 10 cm robot
   // whose disc covers only the centre of cell (0, 0).
   world::World world;
-  world.width = 1.0;
-  world.height = 0.5;
+  world.room.width = 1.0;
+  world.room.height = 0.5;
   world.coverage_cell_size = 0.25;
-  world.robot_radius = 0.1;
-  world.initial_pose = {0.15, 0.15, 0.0};
-  world.rectangles = {{0.75, 0.25, 1.0, 0.5}};
+  world.robot().radius = 0.1;
+  world.robot().initial_pose = {0.15, 0.15, 0.0};
+  world.room.rectangles = {{0.75, 0.25, 1.0, 0.5}};
   const sim::MultiRobotSimulator sim(world);
 
   const nav_msgs::OccupancyGrid map = toCoverageMap(sim.unionCoverageGrid(), kStamp);
@@ -125,8 +125,8 @@ TEST(SimRos, coverage_map_shows_swept_floor_unswept_floor_and_furniture) {
 
 TEST(SimRos, world_markers_are_four_walls_and_each_piece_of_furniture_in_map) {
   world::World world;
-  world.circles = {{{1.3, 3.5}, 0.3}};
-  world.rectangles = {{0.0, 0.0, 1.6, 0.6}};
+  world.room.circles = {{{1.3, 3.5}, 0.3}};
+  world.room.rectangles = {{0.0, 0.0, 1.6, 0.6}};
   const std::vector<Marker> markers = worldMarkers(world);
   ASSERT_EQ(markers.size(), 6u);
   for (int i = 0; i < 4; ++i) {
@@ -192,7 +192,7 @@ TEST(SimRos, named_robots_get_a_disc_a_heading_and_their_name_with_ids_by_index)
 
 TEST(SimRos, the_unnamed_robot_has_no_name_and_turns_red_while_its_bumper_is_pressed) {
   world::World world;
-  world.initial_pose = {0.17, 2.4, M_PI};  // touching the left wall
+  world.robot().initial_pose = {0.17, 2.4, M_PI};  // touching the left wall
   sim::MultiRobotSimulator sim(world);
   sim.senseContact();
   ASSERT_TRUE(sim.bumper(0).pressed);

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "roomba_rrt/sim/contact.h"
+#include "roomba_rrt/world/world_file.h"
 
 using namespace roomba_rrt::robot;
 using namespace roomba_rrt::sim;
@@ -130,7 +131,7 @@ TEST(Simulator, coverage_of_a_straight_one_metre_sweep_is_2r_plus_pi_r_squared) 
   Simulator sim{World{}};
   run(sim, {1.0, 0.0}, 60);  // 1 m to (4.2, 2.4)
   const CoverageGrid& grid = sim.coverageGrid();
-  const double cell = grid.cellSize(), r = sim.world().robot_radius;
+  const double cell = grid.cellSize(), r = sim.world().robot().radius;
   const double swept_area = grid.sweptFreeCells() * cell * cell;
   EXPECT_NEAR(swept_area, 2 * r * 1.0 + M_PI * r * r, 1.0 * cell);  // within one cell row
   EXPECT_NEAR(sim.coverage(), swept_area / (6.4 * 4.8), 1e-12);
@@ -158,6 +159,6 @@ TEST(Simulator, set_pose_into_furniture_is_pushed_out_and_nan_pose_is_rejected) 
 
 TEST(Simulator, rejects_an_invalid_world) {
   World world;
-  world.robot_radius = -0.1;
+  world.robot().radius = -0.1;
   EXPECT_THROW(Simulator{world}, std::invalid_argument);
 }

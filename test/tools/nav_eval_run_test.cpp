@@ -5,15 +5,16 @@
 #include <cmath>
 
 #include "nav_eval_run.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::tools {
 namespace {
 
 world::World emptyRoom() {
   world::World world;
-  world.width = 4;
-  world.height = 4;
-  world.robot_radius = 0.2;
+  world.room.width = 4;
+  world.room.height = 4;
+  world.robot().radius = 0.2;
   return world;
 }
 
@@ -23,7 +24,7 @@ TEST(ShortestDiscPath, is_the_straight_line_when_nothing_is_in_the_way) {
 
 TEST(ShortestDiscPath, goes_around_a_disc_within_one_percent_of_the_exact_length) {
   world::World world = emptyRoom();
-  world.circles = {{2, 2, 0.5}};
+  world.room.circles = {{2, 2, 0.5}};
   // Start and goal on either side: the exact shortest path hugs the grown disc (radius 0.7):
   // two tangents and an arc.
   const double R = 0.7, d = 1.5;  // distance from the centre to start and goal
@@ -37,7 +38,7 @@ TEST(ShortestDiscPath, goes_around_a_disc_within_one_percent_of_the_exact_length
 
 TEST(ShortestDiscPath, goes_around_a_rectangle_and_is_infinite_when_walled_off) {
   world::World world = emptyRoom();
-  world.rectangles = {{1.9, 0.0, 2.1, 3.0}};  // a wall from the bottom, gap of 1 m at the top
+  world.room.rectangles = {{1.9, 0.0, 2.1, 3.0}};  // a wall from the bottom, gap of 1 m at the top
   const double length = shortestDiscPathLength(world, {1, 1, 0}, {3, 1, 0});
   // Exact: a tangent to each rounded corner (centres (1.9, 3) and (2.1, 3), radius 0.2), the
   // arcs around them and the 0.2 m over the top.
@@ -46,7 +47,7 @@ TEST(ShortestDiscPath, goes_around_a_rectangle_and_is_infinite_when_walled_off) 
   const double exact = 2 * std::sqrt(d * d - r * r) + 2 * r * turn + 0.2;
   EXPECT_GE(length, exact - 1e-9);
   EXPECT_LE(length, exact * 1.01);
-  world.rectangles = {{1.9, 0.0, 2.1, 4.0}};
+  world.room.rectangles = {{1.9, 0.0, 2.1, 4.0}};
   EXPECT_TRUE(std::isinf(shortestDiscPathLength(world, {1, 1, 0}, {3, 1, 0})));
 }
 

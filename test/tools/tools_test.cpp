@@ -170,12 +170,12 @@ TEST(ToolArguments, crop_keeps_a_region_of_the_world_whose_edges_become_walls) {
   const std::string apartment = worldFile("apartment");
   const roomba_rrt::world::World whole = loadToolWorld(apartment, "");
   const roomba_rrt::world::World part = loadToolWorld(apartment, "", "-2,-1.5,2,1.5");
-  EXPECT_EQ(part.origin.x, -2.0);
-  EXPECT_EQ(part.origin.y, -1.5);
-  EXPECT_EQ(part.width, 4.0);
-  EXPECT_EQ(part.height, 3.0);
-  ASSERT_TRUE(part.map);
-  EXPECT_EQ(part.map_file, whole.map_file);  // the same grid, fewer rooms of it
+  EXPECT_EQ(part.room.origin.x, -2.0);
+  EXPECT_EQ(part.room.origin.y, -1.5);
+  EXPECT_EQ(part.room.width, 4.0);
+  EXPECT_EQ(part.room.height, 3.0);
+  ASSERT_TRUE(part.room.map);
+  EXPECT_EQ(part.room.map_file, whole.room.map_file);  // the same grid, fewer rooms of it
   EXPECT_EQ(parse({"--behavior", "coverage", "--crop", "-1,-2,3,4"}).crop, "-1,-2,3,4");
   EXPECT_EQ(refusal([&] { loadToolWorld(apartment, "", "0,0,4"); }),
             "--crop: expected X0,Y0,X1,Y1, got '0,0,4'");

@@ -1,5 +1,6 @@
 #include "roomba_rrt/world/world.h"
 #include "../common/shared_maps.h"
+#include "roomba_rrt/world/world_file.h"
 
 #include <gtest/gtest.h>
 
@@ -26,28 +27,31 @@ std::string errorFor(const std::string& yaml) {
 
 TEST(World, default_file_is_the_labs_empty_room) {
   const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
-  EXPECT_EQ(world.width, 6.4);
-  EXPECT_EQ(world.height, 4.8);
-  EXPECT_EQ(world.robot_radius, 0.17);
-  EXPECT_EQ(world.max_linear_speed, 1.0);
-  EXPECT_EQ(world.max_angular_speed, 2.0);
+  EXPECT_EQ(world.room.width, 6.4);
+  EXPECT_EQ(world.room.height, 4.8);
+  EXPECT_EQ(world.robot().radius, 0.17);
+  EXPECT_EQ(world.robot().max_linear_speed, 1.0);
+  EXPECT_EQ(world.robot().max_angular_speed, 2.0);
   EXPECT_EQ(world.step, 1.0 / 60.0);
-  EXPECT_EQ(world.initial_pose.x, 3.2);
-  EXPECT_EQ(world.initial_pose.y, 2.4);
-  EXPECT_TRUE(world.circles.empty());
-  EXPECT_TRUE(world.rectangles.empty());
-  EXPECT_EQ(world.command_timeout, 0.5);
+  EXPECT_EQ(world.robot().initial_pose.x, 3.2);
+  EXPECT_EQ(world.robot().initial_pose.y, 2.4);
+  EXPECT_TRUE(world.room.circles.empty());
+  EXPECT_TRUE(world.room.rectangles.empty());
+  const roomba_rrt::world::SimulatorSettings simulator =
+      roomba_rrt::world::readWorldFile(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml").simulator;
+  EXPECT_EQ(simulator.command_timeout, 0.5);
+  EXPECT_EQ(simulator.real_time_factor, 1.0);
 }
 
 TEST(World, furnished_file_has_five_pieces) {
   const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
-  EXPECT_EQ(world.circles.size() + world.rectangles.size(), 5u);
+  EXPECT_EQ(world.room.circles.size() + world.room.rectangles.size(), 5u);
 }
 
 TEST(World, missing_keys_keep_the_lab_defaults) {
   const World world = parseWorld("robot: {radius: 0.2}");
-  EXPECT_EQ(world.robot_radius, 0.2);
-  EXPECT_EQ(world.width, 6.4);
+  EXPECT_EQ(world.robot().radius, 0.2);
+  EXPECT_EQ(world.room.width, 6.4);
 }
 
 TEST(World, negative_radius_is_named) {
@@ -136,15 +140,15 @@ TEST(World, a_world_too_large_for_the_default_coverage_cell_gets_a_coarser_one) 
             std::string::npos);
   ROOMBA_RRT_REQUIRE_SHARED_MAP("nav2_bench_100by100_15");
   const std::string map = ::roomba_rrt::test::sharedMapPath("nav2_bench_100by100_15");
-  EXPECT_EQ(roomba_rrt::world::readWorldFile(map).coverage_cell_size, 0.05);
+  EXPECT_EQ(roomba_rrt::world::readWorldFile(map).world.coverage_cell_size, 0.05);
 }
 
 TEST(World, a_node_that_takes_the_pose_from_elsewhere_accepts_an_initial_pose_in_a_wall) {
   World world = parseWorld("furniture: {circles: [{x: 1, y: 1, radius: 0.5}]}");
-  world.initial_pose = {1.0, 1.0, 0.0};
+  world.robot().initial_pose = {1.0, 1.0, 0.0};
   EXPECT_THROW(roomba_rrt::world::validate(world), std::invalid_argument);
   EXPECT_NO_THROW(roomba_rrt::world::validate(world, roomba_rrt::world::PoseSource::kElsewhere));
-  world.initial_pose.x = 1e300;  // its coordinates are still checked
+  world.robot().initial_pose.x = 1e300;  // its coordinates are still checked
   EXPECT_THROW(roomba_rrt::world::validate(world, roomba_rrt::world::PoseSource::kElsewhere),
                std::invalid_argument);
 }
@@ -153,7 +157,7 @@ TEST(World, a_large_room_within_the_limits_loads) {
   const World world = parseWorld(
       "room: {width: 1000, height: 1000}\ncoverage_cell_size: 0.5\n"
       "initial_pose: {x: 500, y: 500}");
-  EXPECT_EQ(world.width, 1000);
+  EXPECT_EQ(world.room.width, 1000);
 }
 
 TEST(World, node_parameters_outside_their_ranges_are_named) {
@@ -210,11 +214,11 @@ TEST(World, a_path_that_is_not_a_small_regular_file_is_named) {
 
 TEST(World, without_robots_the_world_has_one_unnamed_robot_from_the_shared_fields) {
   const World world = loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
-  EXPECT_TRUE(world.robots.empty());
-  const auto robots = roomba_rrt::world::robotsOf(world);
+  EXPECT_FALSE(world.namedRobots());
+  const auto& robots = world.robots;
   ASSERT_EQ(robots.size(), 1u);
   EXPECT_EQ(robots[0].name, "");
-  EXPECT_EQ(robots[0].radius, world.robot_radius);
+  EXPECT_EQ(robots[0].radius, world.robot().radius);
   EXPECT_EQ(robots[0].initial_pose.x, 3.2);
   EXPECT_EQ(robots[0].max_linear_speed, 1.0);
 }
@@ -226,7 +230,7 @@ TEST(World, two_robots_file_names_two_robots_in_the_lab_room) {
   EXPECT_EQ(world.robots[1].name, "robot2");
   EXPECT_EQ(world.robots[0].initial_pose.x, 1.6);
   EXPECT_EQ(world.robots[1].radius, 0.17);
-  EXPECT_EQ(world.width, 6.4);
+  EXPECT_EQ(world.room.width, 6.4);
 }
 
 TEST(World, robots_take_the_shared_limits_unless_they_override_them) {

@@ -43,7 +43,7 @@ class FreeSpace {
  public:
   enum Class : std::uint8_t { kBlocked = 0, kTight = 1, kFree = 2 };
 
-  /// Samples the world (world.robot_radius + clearance is the planning radius R) on a lattice of
+  /// Samples the world (world.robot().radius + clearance is the planning radius R) on a lattice of
   /// edge `resolution`. Cost: one world::penetrates per point (two near obstacles).
   FreeSpace(const world::World& world, double clearance, double resolution);
 

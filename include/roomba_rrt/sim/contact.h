@@ -19,7 +19,7 @@ constexpr double kContactTolerance = 1e-6;
 /// callers then keep the previous position.
 bool resolvePenetration(const world::World& world, double& x, double& y);
 
-/// The same for a disc of radius `radius` (a named robot's own), in place of world.robot_radius.
+/// The same for a disc of radius `radius` (a named robot's own), in place of world.robot().radius.
 bool resolvePenetration(const world::World& world, double radius, double& x, double& y);
 robot::BumperState senseBumper(const world::World& world, double radius, const robot::Pose2D& pose);
 

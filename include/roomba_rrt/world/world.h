@@ -1,5 +1,6 @@
-// The simulated world: a rectangular room, furniture (circles and axis-aligned rectangles) and the
-// robot's physical parameters, loaded from YAML (config/roomba_world.yaml documents the format).
+// The simulated world: a room (walls, furniture as circles and axis-aligned rectangles, or a map)
+// and the robots in it, with the simulator's step and coverage cell. world_file.h reads it from
+// YAML (config/roomba_world.yaml documents the format).
 #pragma once
 
 #include <cstddef>
@@ -21,20 +22,9 @@ using geometry::Rectangle;
 /// At most this many robots under `robots:`.
 constexpr std::size_t kMaxRobots = 1000;
 
-/// One robot of a world that lists several under `robots:`. Radius and speed limits default to the
-/// world's shared `robot:` values.
-struct RobotSpec {
-  std::string name;  ///< namespace and tf prefix: a letter, then letters, digits or '_'
-  robot::Pose2D initial_pose{3.2, 2.4, 0.0};
-  double radius = 0.17;            ///< m
-  double max_linear_speed = 1.0;   ///< m/s
-  double max_angular_speed = 2.0;  ///< rad/s
-};
-
-/// Everything the simulator needs to know about the room and the robot. Defaults are the lab's
-/// simulation: a 6.4 m × 4.8 m empty room, a 0.17 m Roomba at the centre facing +x, 1.0 m/s and
-/// 2.0 rad/s speed limits, steps of 1/60 s.
-struct World {
+/// The room the robots live in: its walls, its furniture and, for a map world, its map. Every
+/// node that knows the world shares it (the simulator, the planner, navigation, cleaning).
+struct Room {
   double width = 6.4;   ///< walls at x = origin.x and x = origin.x + width
   double height = 4.8;  ///< walls at y = origin.y and y = origin.y + height
   /// The room's lower-left corner: (0, 0) for a room of the world file; when the world is a map,
@@ -49,12 +39,29 @@ struct World {
   std::string map_file;  ///< the map's YAML, "" without a map
   std::vector<Circle> circles;
   std::vector<Rectangle> rectangles;
+};
 
-  double robot_radius = 0.17;      ///< m
+/// One robot: its size, speed limits and where it starts. The lab's Roomba by default: 0.17 m,
+/// 1.0 m/s and 2.0 rad/s, at the lab room's centre facing +x.
+struct RobotSpec {
+  /// Its namespace and tf prefix (a letter, then letters, digits or '_'), when the world file
+  /// names its robots (`robots:`); "" for the one robot of a world file without `robots:`.
+  std::string name;
+  robot::Pose2D initial_pose{3.2, 2.4, 0.0};
+  double radius = 0.17;            ///< m
   double max_linear_speed = 1.0;   ///< |v| is clamped to this, m/s
   double max_angular_speed = 2.0;  ///< |w| is clamped to this, rad/s
-  double step = 1.0 / 60.0;        ///< integration step, s
-  robot::Pose2D initial_pose{3.2, 2.4, 0.0};
+};
+
+/// Everything the simulator needs to know about the room and the robots, and what the planners
+/// and behaviours read of it. Defaults are the lab's simulation: a 6.4 m × 4.8 m empty room, one
+/// Roomba, steps of 1/60 s.
+struct World {
+  Room room;
+  /// At least one. One unnamed robot is the lab's simulation; named robots (`robots:`) each
+  /// get a namespace.
+  std::vector<RobotSpec> robots{RobotSpec{}};
+  double step = 1.0 / 60.0;  ///< integration step, s
 
   /// Edge of a coverage grid cell, m. A world file that does not set it gets
   /// defaultCoverageCellSize(): this, or coarser for a world too large for it.
@@ -62,34 +69,32 @@ struct World {
   /// The world file set coverage_cell_size (false: the default chose it, and a tool that keeps
   /// a region of the world chooses again for the region).
   bool coverage_cell_size_given = false;
-  double command_timeout = 0.5;   ///< node: stop when no command arrived for this long, s
-  double real_time_factor = 1.0;  ///< node: simulated seconds per wall-clock second
-
-  /// Named robots (`robots:` in YAML). Empty: one unnamed robot with the fields above, exactly
-  /// the lab's simulation. When given, `initial_pose` is not used.
-  std::vector<RobotSpec> robots;
 
   /// The sections (room, furniture, robot, initial_pose) the world file did not set at all, in
   /// that order: their keys have the defaults above (see defaultsNotice()).
   std::vector<std::string> defaulted_sections;
+
+  /// The first robot: the only one unless the world names several. A node that drives one robot
+  /// (roomba_bt, the planner's room) plans for this one.
+  const RobotSpec& robot() const { return robots.front(); }
+  RobotSpec& robot() { return robots.front(); }
+  /// The robots have names (`robots:` in the world file): each its own namespace.
+  bool namedRobots() const { return !robots.front().name.empty(); }
 };
 
 /// The supported ranges (validate() refuses anything outside them, naming the parameter). They
 /// keep every computation finite and the coverage grid's memory and set-up time small.
 struct WorldLimits {
-  static constexpr double kMaxRoomSize = 1000;        ///< room.width, room.height ≤ this, m
-  static constexpr double kMaxRobotRadius = 10;       ///< m
-  static constexpr double kMaxSpeed = 100;            ///< m/s and rad/s
-  static constexpr double kMinStep = 1e-4;            ///< s
-  static constexpr double kMaxStep = 1;               ///< s
-  static constexpr double kMinCellSize = 1e-3;        ///< coverage_cell_size ≥ this, m
-  static constexpr double kMaxCoverageCells = 1e7;    ///< cells in the grid (2.5 MB of bits)
-  static constexpr double kMaxGridWork = 5e7;         ///< cells × (1 + furniture) at start
-  static constexpr std::size_t kMaxFurniture = 1000;  ///< circles + rectangles
-  static constexpr double kMaxCoordinate = 1e4;       ///< |furniture, pose coordinates|, m
-  static constexpr double kMaxCommandTimeout = 1e6;   ///< s
-  static constexpr double kMinRealTimeFactor = 1e-4;
-  static constexpr double kMaxRealTimeFactor = 1e4;
+  static constexpr double kMaxRoomSize = 1000;           ///< room.width, room.height ≤ this, m
+  static constexpr double kMaxRobotRadius = 10;          ///< m
+  static constexpr double kMaxSpeed = 100;               ///< m/s and rad/s
+  static constexpr double kMinStep = 1e-4;               ///< s
+  static constexpr double kMaxStep = 1;                  ///< s
+  static constexpr double kMinCellSize = 1e-3;           ///< coverage_cell_size ≥ this, m
+  static constexpr double kMaxCoverageCells = 1e7;       ///< cells in the grid (2.5 MB of bits)
+  static constexpr double kMaxGridWork = 5e7;            ///< cells × (1 + furniture) at start
+  static constexpr std::size_t kMaxFurniture = 1000;     ///< circles + rectangles
+  static constexpr double kMaxCoordinate = 1e4;          ///< |furniture, pose coordinates|, m
   static constexpr std::size_t kMaxFileBytes = 1 << 20;  ///< a world file is at most 1 MiB
 };
 
@@ -100,30 +105,27 @@ constexpr double kPenetrationTolerance = 1e-9;
 /// blocked map cell by more than kPenetrationTolerance (where a robot may not be: validate() and
 /// the simulator's contact).
 inline bool penetrates(const World& world, double radius, double x, double y) {
+  const Room& room = world.room;
   const double r = radius - kPenetrationTolerance;
-  const double x0 = world.origin.x, y0 = world.origin.y;
-  if (x < x0 + r || y < y0 + r || x > x0 + world.width - r || y > y0 + world.height - r) {
+  const double x0 = room.origin.x, y0 = room.origin.y;
+  if (x < x0 + r || y < y0 + r || x > x0 + room.width - r || y > y0 + room.height - r) {
     return true;
   }
   const geometry::Point2 p{x, y};
-  for (const Circle& c : world.circles) {
+  for (const Circle& c : room.circles) {
     const double reach = c.radius + r;
     if (geometry::squaredDistance(p, c.center) < reach * reach) return true;
   }
-  for (const Rectangle& box : world.rectangles) {
+  for (const Rectangle& box : room.rectangles) {
     if (geometry::squaredDistance(box, p) < r * r) return true;
   }
-  return world.map && geometry::blockedWithin(*world.map, p, r);
+  return room.map && geometry::blockedWithin(*room.map, p, r);
 }
 
-/// The same for a disc of the world's robot_radius.
+/// The same for a disc of the world's (first) robot's radius.
 inline bool penetrates(const World& world, double x, double y) {
-  return penetrates(world, world.robot_radius, x, y);
+  return penetrates(world, world.robot().radius, x, y);
 }
-
-/// The robots a simulator holds: `world.robots`, or when it is empty the one unnamed robot
-/// (name "") made of robot_radius, the speed limits and initial_pose.
-std::vector<RobotSpec> robotsOf(const World& world);
 
 /// Where a node takes the robot's pose from: the world file (roomba_sim, the tools), or elsewhere
 /// (tf and requests: roomba_bt and rrt_planner, which must not refuse a map whose (0, 0) is a wall
@@ -135,9 +137,14 @@ enum class PoseSource { kWorldFile, kElsewhere };
 /// WorldLimits, a room smaller than the robot, furniture with a non-positive size, a coverage grid
 /// too large for its limits, an initial pose that is not finite or puts the disc into a wall or
 /// furniture; for named robots also a bad or repeated name and two robots whose discs overlap.
-/// The single robot's initial pose must be free only when the node takes the robot's pose from
+/// An unnamed robot's initial pose must be free only when the node takes the robot's pose from
 /// the world file (`pose`; its coordinates are checked either way).
 void validate(const World& world, PoseSource pose = PoseSource::kWorldFile);
+
+/// The room alone (validate()'s room, furniture, map and coverage-grid checks, for a disc of
+/// `robot_radius`): what a request that describes a room to plan in must pass, without the
+/// robots' rules (their speeds, names and poses).
+void validateRoom(const World& world, double robot_radius);
 
 /// Whether a coverage grid of `cell_size` over the world's room stays within WorldLimits (its
 /// cells, and the cell × furniture tests at start).
@@ -147,10 +154,15 @@ bool coverageGridFits(const World& world, double cell_size);
 /// until the grid fits (coverageGridFits): 0.05 m for a 100 × 100 m map, 0.1 m up to 316 m.
 double defaultCoverageCellSize(const World& world);
 
+/// Makes `grid` (read from `map_file`, "" when it came in a message) the world's map: the room
+/// becomes its known part, and the (first) robot starts at the map's origin (0, 0).
+void useMap(World& world, std::shared_ptr<const geometry::OccupancyGrid> grid,
+            const std::string& map_file);
+
 /// The world a map makes on its own (a map received on /map): the room is the grid's known
-/// part (as for a map file), its occupied and unknown cells are walls, the robot has
-/// `robot_radius` and the other defaults, and the coverage cell is defaultCoverageCellSize().
-/// Not validated.
+/// part (as for a map file), its occupied and unknown cells are walls, one unnamed robot with
+/// `robot_radius` and the other defaults at (0, 0), and the coverage cell is
+/// defaultCoverageCellSize(). Not validated.
 World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot_radius);
 
 /// `world` cut to `region` (m): its edges become walls (a large map cut to the rooms to clean),
@@ -162,24 +174,5 @@ World mapWorld(std::shared_ptr<const geometry::OccupancyGrid> grid, double robot
 /// room (a map's whole extent, unknown border included), or keeps a part of the room no wider
 /// and higher than the robot (once in whole cells).
 World cropped(World world, const geometry::Rectangle& region, const std::string& field);
-
-/// Reads a world from a YAML file (format: config/roomba_world.yaml); missing keys keep the
-/// defaults above. Throws util::InvalidInput naming the file and the bad parameter, for a
-/// path that is not a readable regular file, a file larger than WorldLimits::kMaxFileBytes, a value
-/// of the wrong type, an unknown key or a world that fails validate().
-World loadWorld(const std::string& yaml_path, PoseSource pose = PoseSource::kWorldFile);
-
-/// loadWorld without validate(), for a caller that overrides values before it validates them
-/// itself (roomba_sim's private parameters: a map world's ~initial_pose). Still refuses what
-/// cannot be read (the file, its keys and types, the map).
-World readWorldFile(const std::string& yaml_path);
-
-/// Same as loadWorld, from YAML text (used by tests); `source` names it in error messages.
-World parseWorld(const std::string& yaml_text, const std::string& source = "<string>");
-
-/// What a world read from `source` took from the defaults, for the node to say at start-up:
-/// "world.yaml sets no room, robot: room.width 6.4, room.height 4.8, robot.radius 0.17, ...",
-/// or "" when the file set every section.
-std::string defaultsNotice(const World& world, const std::string& source);
 
 }  // namespace roomba_rrt::world

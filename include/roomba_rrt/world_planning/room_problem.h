@@ -7,6 +7,7 @@
 
 #include "roomba_rrt/planning/problem.h"
 #include "roomba_rrt/world/world.h"
+#include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::world_planning {
 
