@@ -1,0 +1,139 @@
+#include "tree_watch.h"
+
+#include <roomba_rrt/BtTreeStatus.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "message_parts.h"
+
+namespace roomba_rrt::nodes {
+namespace {
+
+constexpr double kColumnWidth = 0.45;  ///< m between neighbouring leaves
+constexpr double kRowHeight = 0.35;    ///< m between a parent and its children
+constexpr double kOffset = 0.8;        ///< m from the robot to the tree's left edge
+constexpr double kMarkerPeriod = 0.1;  ///< s: ~tree_markers at most 10 Hz
+
+std_msgs::ColorRGBA statusColor(bt::MonitorStatus status) {
+  switch (status) {
+    case bt::MonitorStatus::kRunning:
+      return color(1.0f, 0.65f, 0.0f);  // orange, as Groot2
+    case bt::MonitorStatus::kSuccess:
+      return color(0.1f, 0.8f, 0.1f);
+    case bt::MonitorStatus::kFailure:
+      return color(0.9f, 0.1f, 0.1f);
+    case bt::MonitorStatus::kIdleFromRunning:
+      return color(0.55f, 0.45f, 0.25f);  // faded, as Groot2 fades a node gone idle
+    case bt::MonitorStatus::kIdleFromSuccess:
+      return color(0.3f, 0.5f, 0.3f);
+    case bt::MonitorStatus::kIdleFromFailure:
+      return color(0.55f, 0.3f, 0.3f);
+    case bt::MonitorStatus::kIdle:
+      break;
+  }
+  return color(0.5f, 0.5f, 0.5f);
+}
+
+}  // namespace
+
+TreeWatch::TreeWatch(ros::NodeHandle& pnh, NodeParams& params, bt::Tree& tree,
+                     const std::string& tree_id, const std::string& model_xml)
+    : monitor_(tree.root()), tree_id_(tree_id), columns_(bt::treeColumns(monitor_)) {
+  const int port = params.get("groot_port", kDefaultGrootPort);
+  if (port < 0 || port > 65534) {
+    throw std::invalid_argument("~groot_port must be 0 (off) or a TCP port in 1..65534, got " +
+                                std::to_string(port));
+  }
+  bt::groot2::statusSnapshot(monitor_, snapshot_);
+  if (port > 0) {
+    try {
+      groot_ = std::make_unique<bt::groot2::Server>(
+          port, bt::treeXmlWithUids(monitor_, tree_id, model_xml), snapshot_);
+      ROS_INFO("Groot2: monitor tree '%s' on port %d (Groot2: Monitor, Connect to localhost:%d)",
+               tree_id.c_str(), port, port);
+    } catch (const std::runtime_error& e) {
+      ROS_ERROR("%s; the tree runs without Groot2 monitoring (set ~groot_port)", e.what());
+    }
+  }
+  status_pub_ = pnh.advertise<BtTreeStatus>("tree_status", 1, /*latch=*/true);
+  marker_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree_markers", 1, /*latch=*/true);
+  publishStatus();
+}
+
+void TreeWatch::afterTick(double x, double y, const std::string& frame) {
+  if (monitor_.update()) {
+    if (groot_) {
+      bt::groot2::statusSnapshot(monitor_, snapshot_);
+      groot_->publishStatus(snapshot_);
+    }
+    publishStatus();
+    markers_due_ = true;
+  }
+  const ros::WallTime now = ros::WallTime::now();
+  if (markers_due_ && !frame.empty() && (now - last_markers_).toSec() >= kMarkerPeriod) {
+    publishMarkers(x, y, frame);
+    markers_due_ = false;
+    last_markers_ = now;
+  }
+}
+
+void TreeWatch::publishStatus() {
+  BtTreeStatus msg;
+  msg.header.stamp = ros::Time::now();
+  msg.tree_id = tree_id_;
+  const auto& nodes = monitor_.nodes();
+  msg.nodes.resize(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    BtNodeStatus& n = msg.nodes[i];
+    n.uid = nodes[i].uid;
+    n.parent_uid = nodes[i].parent < 0 ? 0 : nodes[nodes[i].parent].uid;
+    n.path = nodes[i].path;
+    n.name = nodes[i].name;
+    n.type = nodes[i].type;
+    n.status = static_cast<std::uint8_t>(monitor_.statuses()[i]);
+  }
+  status_pub_.publish(msg);
+}
+
+void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
+  const auto& nodes = monitor_.nodes();
+  const auto place = [&](std::size_t i) {
+    geometry_msgs::Point p;
+    p.x = x + kOffset + columns_[i] * kColumnWidth;
+    p.y = y - nodes[i].depth * kRowHeight;
+    p.z = 0.05;
+    return p;
+  };
+  visualization_msgs::MarkerArray array;
+  visualization_msgs::Marker edges =
+      makeMarker(frame, ros::Time::now(), "tree_edges", 0, visualization_msgs::Marker::LINE_LIST,
+                 color(0.8f, 0.8f, 0.8f));
+  edges.scale.x = 0.01;
+  visualization_msgs::Marker boxes =
+      makeMarker(frame, ros::Time::now(), "tree_nodes", 0, visualization_msgs::Marker::CUBE_LIST,
+                 color(1.0f, 1.0f, 1.0f));
+  boxes.scale.x = kColumnWidth * 0.9;
+  boxes.scale.y = kRowHeight * 0.45;
+  boxes.scale.z = 0.02;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const geometry_msgs::Point p = place(i);
+    boxes.points.push_back(p);
+    boxes.colors.push_back(statusColor(monitor_.statuses()[i]));
+    if (nodes[i].parent >= 0) {
+      edges.points.push_back(place(static_cast<std::size_t>(nodes[i].parent)));
+      edges.points.push_back(p);
+    }
+    visualization_msgs::Marker label =
+        makeMarker(frame, ros::Time::now(), "tree_labels", static_cast<int>(i),
+                   visualization_msgs::Marker::TEXT_VIEW_FACING, color(1.0f, 1.0f, 1.0f));
+    label.pose.position = p;
+    label.pose.position.z = 0.1;
+    label.scale.z = 0.08;
+    label.text = nodes[i].name;
+    array.markers.push_back(label);
+  }
+  array.markers.push_back(edges);
+  array.markers.push_back(boxes);
+  marker_pub_.publish(array);
+}
+
+}  // namespace roomba_rrt::nodes
