@@ -90,6 +90,8 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/behavior_rostest.cpp)
   add_rostest(test/behavior/roomba_bt.test DEPENDENCIES behavior_rostest)
   add_rostest(test/behavior/roomba_behavior_startup.test DEPENDENCIES behavior_rostest)
+  # roomba_bt's Groot2 server through a Python client of the protocol (python3-zmq).
+  add_rostest(test/behavior/groot2_monitor.test DEPENDENCIES roomba_bt roomba_sim)
   if(TARGET behavior_rostest)
     target_include_directories(behavior_rostest PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(behavior_rostest ${catkin_LIBRARIES})

@@ -24,7 +24,8 @@ std::int64_t nowNs() {
 
 struct Server::Sockets {
   zmq::context_t context;
-  zmq::socket_t server{context, zmq::socket_type::rep};
+  /// REP's wire protocol, handled by hand (see serve()).
+  zmq::socket_t server{context, zmq::socket_type::router};
   zmq::socket_t publisher{context, zmq::socket_type::pub};
 };
 
@@ -88,21 +89,32 @@ void Server::serve() {
     } catch (const zmq::error_t&) {
       break;  // the context was shut down
     }
+    // A REQ client's request arrives as [its identity, "", frames...]; the reply goes back with
+    // the same envelope. REP would do this itself, but a peer that is no ZeroMQ client (bytes
+    // that parse as a legacy ZMTP 1.0 message without the empty delimiter) makes a REP socket
+    // read the next client's request as that envelope, and that client never gets its reply.
+    // Here such a message is dropped on its own.
+    std::size_t delimiter = 1;
+    while (delimiter < request.size() && request[delimiter].size() != 0) ++delimiter;
+    if (delimiter >= request.size() || delimiter > 32) continue;
     last_request_ns_ = nowNs();
+    zmq::multipart_t answer;
+    for (std::size_t i = 0; i <= delimiter; ++i)
+      answer.add(zmq::message_t(request[i].data(), request[i].size()));
     std::vector<std::string> frames;
-    frames.reserve(request.size());
-    for (const zmq::message_t& part : request) frames.push_back(part.to_string());
+    frames.reserve(request.size() - delimiter - 1);
+    for (std::size_t i = delimiter + 1; i < request.size(); ++i)
+      frames.push_back(request[i].to_string());
     if (!frames.empty() && frames[0].size() == kRequestHeaderSize && frames[0][1] == kStatus) {
       const std::lock_guard<std::mutex> lock(status_mutex_);
       snapshot.status = state_.status;
     }
-    zmq::multipart_t answer;
     for (const std::string& frame : reply(frames, snapshot)) answer.addstr(frame);
     ++requests_;
     try {
       answer.send(socket);
     } catch (const zmq::error_t&) {
-      break;
+      if (stop_) break;  // the context was shut down; else that client is gone: serve the next
     }
   }
 }

@@ -1,6 +1,7 @@
-// Groot2 live monitoring over ZeroMQ (groot2_protocol.h): a REP server on one port, a PUB socket
-// on the next (where BehaviorTree.CPP announces breakpoints; bound so that Groot2 finds it),
-// answered on a thread of their own beside the tick loop.
+// Groot2 live monitoring over ZeroMQ (groot2_protocol.h): a request-reply server on one port (what
+// a REP socket speaks, so Groot2's REQ socket talks to it), a PUB socket on the next (where
+// BehaviorTree.CPP announces breakpoints; bound so that Groot2 finds it), answered on a thread of
+// their own beside the tick loop.
 #pragma once
 
 #include <atomic>
@@ -21,7 +22,7 @@ namespace roomba_rrt::bt::groot2 {
 /// snapshot out, so the tick loop never waits for a client, a socket or the network.
 class Server {
  public:
-  /// Binds tcp://*:`port` (REP) and tcp://*:`port`+1 (PUB) and starts answering. `tree_xml` is the
+  /// Binds tcp://*:`port` (request-reply) and tcp://*:`port`+1 (PUB) and starts answering. `tree_xml` is the
   /// 'T' reply (treeXmlWithUids()). std::runtime_error naming the port when a socket cannot be
   /// bound (the port is taken), std::invalid_argument when `port` is not in 1..65534.
   Server(int port, std::string tree_xml, std::string initial_status);
