@@ -3,14 +3,19 @@
 #include <roomba_rrt/BtTreeStatus.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "message_parts.h"
 
 namespace roomba_rrt::nodes {
 namespace {
 
-constexpr double kColumnWidth = 0.45;  ///< m between neighbouring leaves
-constexpr double kRowHeight = 0.35;    ///< m between a parent and its children
-constexpr double kOffset = 0.8;        ///< m from the robot to the tree's left edge
+constexpr double kColumnWidth = 0.9;   ///< m between neighbouring leaves (at most)
+constexpr double kTreeWidth = 4.5;     ///< m: wider trees get narrower columns
+constexpr double kRowHeight = 0.4;     ///< m between a parent and its children
+constexpr double kOffset = 0.6;        ///< m from the robot to the tree
+constexpr double kFollow = 0.3;        ///< m the robot moves before the tree follows it
 constexpr double kMarkerPeriod = 0.1;  ///< s: ~tree_markers at most 10 Hz
 
 std_msgs::ColorRGBA statusColor(bt::MonitorStatus status) {
@@ -68,9 +73,12 @@ void TreeWatch::afterTick(double x, double y, const std::string& frame) {
     publishStatus();
     markers_due_ = true;
   }
+  if (std::hypot(x - anchor_x_, y - anchor_y_) > kFollow) markers_due_ = true;
   const ros::WallTime now = ros::WallTime::now();
   if (markers_due_ && !frame.empty() && (now - last_markers_).toSec() >= kMarkerPeriod) {
     publishMarkers(x, y, frame);
+    anchor_x_ = x;
+    anchor_y_ = y;
     markers_due_ = false;
     last_markers_ = now;
   }
@@ -96,10 +104,24 @@ void TreeWatch::publishStatus() {
 
 void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
   const auto& nodes = monitor_.nodes();
+  double leaves = 1;
+  int depth = 0;
+  for (double c : columns_) leaves = std::max(leaves, c + 1);
+  for (const bt::MonitoredNode& n : nodes) depth = std::max(depth, n.depth);
+  const double width = std::min(kColumnWidth, kTreeWidth / leaves);
+  // The tree goes on the side of the robot towards where it started (the room's middle in the
+  // lab), so that it stays in view when the robot is near a wall.
+  if (!have_home_) {
+    home_x_ = x;
+    home_y_ = y;
+    have_home_ = true;
+  }
+  const double left = x > home_x_ ? x - kOffset - leaves * width : x + kOffset;
+  const double top = y > home_y_ ? y + kRowHeight / 2 : y + (depth + 0.5) * kRowHeight;
   const auto place = [&](std::size_t i) {
     geometry_msgs::Point p;
-    p.x = x + kOffset + columns_[i] * kColumnWidth;
-    p.y = y - nodes[i].depth * kRowHeight;
+    p.x = left + width / 2 + columns_[i] * width;
+    p.y = top - nodes[i].depth * kRowHeight;
     p.z = 0.05;
     return p;
   };
@@ -111,7 +133,7 @@ void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
   visualization_msgs::Marker boxes =
       makeMarker(frame, ros::Time::now(), "tree_nodes", 0, visualization_msgs::Marker::CUBE_LIST,
                  color(1.0f, 1.0f, 1.0f));
-  boxes.scale.x = kColumnWidth * 0.9;
+  boxes.scale.x = width * 0.92;
   boxes.scale.y = kRowHeight * 0.45;
   boxes.scale.z = 0.02;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -127,7 +149,7 @@ void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
                    visualization_msgs::Marker::TEXT_VIEW_FACING, color(1.0f, 1.0f, 1.0f));
     label.pose.position = p;
     label.pose.position.z = 0.1;
-    label.scale.z = 0.08;
+    label.scale.z = std::min(0.14, width / 4);
     label.text = nodes[i].name;
     array.markers.push_back(label);
   }

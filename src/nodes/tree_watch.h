@@ -16,8 +16,9 @@ namespace roomba_rrt::nodes {
 
 /// Watches one tree after each tick. Parameters: ~groot_port (default 1667; 0: no Groot2 server;
 /// a port that cannot be bound is logged and the tree runs without it). Topics: ~tree_status
-/// (BtTreeStatus, latched, on change), ~tree_markers (MarkerArray, latched, on change, at most
-/// 10 Hz, in the odometry's frame beside the robot).
+/// (BtTreeStatus, latched, on change), ~tree_markers (MarkerArray, latched: the tree drawn in the
+/// odometry's frame beside the robot, on the side towards where the robot started, each node a box
+/// coloured by its status, again when a status changed or the robot moved 0.3 m, at most 10 Hz).
 class TreeWatch {
  public:
   /// `tree_id` names the tree for Groot2; `model_xml` is the <TreeNodesModel> document Groot2
@@ -39,6 +40,9 @@ class TreeWatch {
   std::string snapshot_;  ///< the 'S' buffer, swapped with the server's
   ros::Publisher status_pub_, marker_pub_;
   bool markers_due_ = true;
+  double anchor_x_ = 0, anchor_y_ = 0;  ///< where the robot was when the tree was last drawn
+  double home_x_ = 0, home_y_ = 0;      ///< where the robot was first drawn (the tree leans there)
+  bool have_home_ = false;
   ros::WallTime last_markers_;
   std::vector<double> columns_;
 };

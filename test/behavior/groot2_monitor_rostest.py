@@ -18,6 +18,7 @@ import zmq
 from geometry_msgs.msg import Twist
 from roomba_rrt.msg import BtTreeStatus
 from std_msgs.msg import String
+from visualization_msgs.msg import Marker, MarkerArray
 
 from groot2_client import (PROTOCOL, REPLY_HEADER, Groot2Client, parse_reply_header,
                            parse_status, request_header, tree_nodes)
@@ -74,10 +75,12 @@ class Groot2MonitorTest(unittest.TestCase):
         cls.state_changes = 0
         cls.tree_status = None
         cls.cmd_count = 0
+        cls.markers = None
         rospy.Subscriber("/roomba_bt/state", String, cls.on_state, queue_size=10)
         rospy.Subscriber("/roomba_bt/tree_status", BtTreeStatus, cls.on_tree_status,
                          queue_size=10)
         rospy.Subscriber("/cmd_vel", Twist, cls.on_cmd, queue_size=100)
+        rospy.Subscriber("/roomba_bt/tree_markers", MarkerArray, cls.on_markers, queue_size=10)
         cls.client = Groot2Client(cls.port, timeout_ms=10000)
         # The server answers as soon as roomba_bt has built its tree.
         deadline = time.time() + 60
@@ -100,6 +103,11 @@ class Groot2MonitorTest(unittest.TestCase):
     def on_tree_status(cls, msg):
         with cls.lock:
             cls.tree_status = msg
+
+    @classmethod
+    def on_markers(cls, msg):
+        with cls.lock:
+            cls.markers = msg
 
     @classmethod
     def on_cmd(cls, _):
@@ -184,6 +192,29 @@ class Groot2MonitorTest(unittest.TestCase):
                 forward = [uid for uid, (kind, _) in nodes.items() if kind == "MoveForward"][0]
                 self.assertEqual(statuses[forward], 2)
         self.assertEqual(seen, {"MoveForward", "MoveInSpiral"})
+
+    def test_rviz_draws_every_node_beside_the_robot_coloured_by_status(self):
+        nodes = self.check_tree(self.client, self.tree_file)
+        deadline = time.time() + 30
+        while time.time() < deadline:
+            with self.lock:
+                markers = self.markers
+            if markers is not None:
+                break
+            time.sleep(0.1)
+        self.assertIsNotNone(markers, "nothing on ~tree_markers")
+        labels = sorted((m for m in markers.markers if m.type == Marker.TEXT_VIEW_FACING),
+                        key=lambda m: m.id)
+        self.assertEqual([m.text for m in labels], [nodes[uid][1] for uid in sorted(nodes)])
+        boxes = [m for m in markers.markers if m.type == Marker.CUBE_LIST]
+        self.assertEqual(len(boxes), 1)
+        self.assertEqual(len(boxes[0].points), len(nodes))
+        self.assertEqual(boxes[0].header.frame_id, "odom")
+        # The root runs or just finished: never the grey of a node that was never ticked.
+        root = boxes[0].colors[0]
+        self.assertNotEqual((root.r, root.g, root.b), (0.5, 0.5, 0.5))
+        edges = [m for m in markers.markers if m.type == Marker.LINE_LIST]
+        self.assertEqual(len(edges[0].points), 2 * (len(nodes) - 1))
 
     def test_fuzzed_requests_get_error_replies_and_never_stop_the_tree(self):
         rng = random.Random(46)
