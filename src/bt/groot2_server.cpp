@@ -29,8 +29,9 @@ struct Server::Sockets {
   zmq::socket_t publisher{context, zmq::socket_type::pub};
 };
 
-Server::Server(int port, std::string tree_xml, std::string initial_status)
+Server::Server(int port, std::string tree_xml, std::string initial_status, std::string tree_id)
     : port_(port), sockets_(std::make_unique<Sockets>()) {
+  state_.tree_id = std::move(tree_id);
   if (port < 1 || port > 65534) {
     throw std::invalid_argument(
         "Groot2 port must be in 1..65534 (the PUB socket takes port+1), got " +
@@ -60,10 +61,20 @@ Server::Server(int port, std::string tree_xml, std::string initial_status)
 
 Server::~Server() {
   stop_ = true;
+  blackboard_ready_.notify_all();
   sockets_->context.shutdown();  // wakes a blocked recv at once
   if (thread_.joinable()) thread_.join();
   sockets_->server.close();
   sockets_->publisher.close();
+}
+
+void Server::provideBlackboard(BlackboardSnapshot snapshot) {
+  {
+    const std::lock_guard<std::mutex> lock(blackboard_mutex_);
+    blackboard_ = std::move(snapshot);
+    blackboard_wanted_ = false;
+  }
+  blackboard_ready_.notify_one();
 }
 
 void Server::publishStatus(std::string& status) {
@@ -81,6 +92,7 @@ void Server::serve() {
   ServerState snapshot;  // the fixed parts, and a copy of the status per 'S'
   snapshot.uuid = state_.uuid;
   snapshot.tree_xml = state_.tree_xml;
+  snapshot.tree_id = state_.tree_id;
   zmq::socket_t& socket = sockets_->server;
   while (!stop_) {
     zmq::multipart_t request;
@@ -105,9 +117,21 @@ void Server::serve() {
     frames.reserve(request.size() - delimiter - 1);
     for (std::size_t i = delimiter + 1; i < request.size(); ++i)
       frames.push_back(request[i].to_string());
-    if (!frames.empty() && frames[0].size() == kRequestHeaderSize && frames[0][1] == kStatus) {
+    const char type = !frames.empty() && frames[0].size() == kRequestHeaderSize ? frames[0][1] : 0;
+    if (type == kStatus) {
       const std::lock_guard<std::mutex> lock(status_mutex_);
       snapshot.status = state_.status;
+    }
+    snapshot.blackboard.reset();
+    if (type == kBlackboard && frames.size() == 2) {
+      std::unique_lock<std::mutex> lock(blackboard_mutex_);
+      blackboard_.reset();
+      blackboard_wanted_ = true;
+      blackboard_ready_.wait_for(lock, std::chrono::milliseconds(500),
+                                 [this] { return blackboard_.has_value() || stop_; });
+      blackboard_wanted_ = false;
+      snapshot.blackboard = std::move(blackboard_);
+      blackboard_.reset();
     }
     for (const std::string& frame : reply(frames, snapshot)) answer.addstr(frame);
     ++requests_;

@@ -42,7 +42,7 @@ std_msgs::ColorRGBA statusColor(bt::MonitorStatus status) {
 
 TreeWatch::TreeWatch(ros::NodeHandle& pnh, NodeParams& params, bt::Tree& tree,
                      const std::string& tree_id, const std::string& model_xml)
-    : monitor_(tree.root()), tree_id_(tree_id), columns_(bt::treeColumns(monitor_)) {
+    : tree_(tree), monitor_(tree.root()), tree_id_(tree_id), columns_(bt::treeColumns(monitor_)) {
   const int port = params.get("groot_port", kDefaultGrootPort);
   if (port < 0 || port > 65534) {
     throw std::invalid_argument("~groot_port must be 0 (off) or a TCP port in 1..65534, got " +
@@ -52,7 +52,7 @@ TreeWatch::TreeWatch(ros::NodeHandle& pnh, NodeParams& params, bt::Tree& tree,
   if (port > 0) {
     try {
       groot_ = std::make_unique<bt::groot2::Server>(
-          port, bt::treeXmlWithUids(monitor_, tree_id, model_xml), snapshot_);
+          port, bt::treeXmlWithUids(monitor_, tree_id, model_xml), snapshot_, tree_id);
       ROS_INFO("Groot2: monitor tree '%s' on port %d (Groot2: Monitor, Connect to localhost:%d)",
                tree_id.c_str(), port, port);
     } catch (const std::runtime_error& e) {
@@ -65,6 +65,9 @@ TreeWatch::TreeWatch(ros::NodeHandle& pnh, NodeParams& params, bt::Tree& tree,
 }
 
 void TreeWatch::afterTick(double x, double y, const std::string& frame) {
+  if (groot_ && groot_->blackboardWanted()) {
+    groot_->provideBlackboard(bt::groot2::snapshotBlackboard(tree_.blackboard()));
+  }
   if (monitor_.update()) {
     if (groot_) {
       bt::groot2::statusSnapshot(monitor_, snapshot_);

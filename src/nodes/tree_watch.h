@@ -34,6 +34,7 @@ class TreeWatch {
   void publishStatus();
   void publishMarkers(double x, double y, const std::string& frame);
 
+  bt::Tree& tree_;
   bt::TreeMonitor monitor_;
   std::string tree_id_;
   std::unique_ptr<bt::groot2::Server> groot_;

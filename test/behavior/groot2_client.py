@@ -36,6 +36,41 @@ def parse_status(payload):
     return {uid: status for uid, status in struct.iter_unpack("<HB", payload)}
 
 
+def unpack(data, offset=0):
+    """(value, next offset) of the MessagePack value at `offset`: the types a blackboard dump
+    holds (maps, strings, booleans, nil, integers, floats)."""
+    b = data[offset]
+    if b & 0xF0 == 0x80 or b in (0xDE, 0xDF):  # map
+        if b & 0xF0 == 0x80:
+            size, offset = b & 0x0F, offset + 1
+        else:
+            width = 2 if b == 0xDE else 4
+            size = int.from_bytes(data[offset + 1:offset + 1 + width], "big")
+            offset += 1 + width
+        out = {}
+        for _ in range(size):
+            key, offset = unpack(data, offset)
+            out[key], offset = unpack(data, offset)
+        return out, offset
+    if b & 0xE0 == 0xA0 or b in (0xD9, 0xDA, 0xDB):  # string
+        if b & 0xE0 == 0xA0:
+            size, offset = b & 0x1F, offset + 1
+        else:
+            width = {0xD9: 1, 0xDA: 2, 0xDB: 4}[b]
+            size = int.from_bytes(data[offset + 1:offset + 1 + width], "big")
+            offset += 1 + width
+        return data[offset:offset + size].decode(), offset + size
+    if b in (0xC0, 0xC2, 0xC3):
+        return {0xC0: None, 0xC2: False, 0xC3: True}[b], offset + 1
+    if b < 0x80 or b >= 0xE0:  # fixint
+        return (b if b < 0x80 else b - 0x100), offset + 1
+    if b == 0xD3:
+        return struct.unpack(">q", data[offset + 1:offset + 9])[0], offset + 9
+    if b == 0xCB:
+        return struct.unpack(">d", data[offset + 1:offset + 9])[0], offset + 9
+    raise ValueError("MessagePack type 0x%02x at %d is not one a blackboard dump holds" % (b, offset))
+
+
 class Groot2Client:
     def __init__(self, port, host="127.0.0.1", timeout_ms=5000):
         self.context = zmq.Context.instance()
@@ -75,6 +110,14 @@ class Groot2Client:
         """(uuid, XML root element) of the 'T' reply."""
         header, frames = self.request("T")
         return header[3], ET.fromstring(frames[0].decode())
+
+    def blackboard(self, names):
+        """{name: {key: value}} of the 'B' reply for the blackboards `names` (';'-separated)."""
+        _, frames = self.request("B", names.encode())
+        value, end = unpack(frames[0])
+        if end != len(frames[0]):
+            raise ValueError("%d bytes after the blackboard dump" % (len(frames[0]) - end))
+        return value
 
     def status(self):
         """(uuid, {uid: status}) of the 'S' reply."""

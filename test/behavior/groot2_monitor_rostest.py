@@ -145,6 +145,16 @@ class Groot2MonitorTest(unittest.TestCase):
             _, statuses = client.status()
             self.assertEqual(set(statuses), set(nodes), tree_file)
 
+    def test_blackboard_dump_names_the_tree(self):
+        dump = self.client.blackboard("Unknown;Roomba")
+        self.assertEqual(list(dump), ["Roomba"])
+        self.assertIsInstance(dump["Roomba"], dict)
+        # A tree that is not ticked (no bumper in its namespace) has no blackboard to give.
+        port, _ = self.other_trees[0]
+        reply = Groot2Client(int(port), timeout_ms=10000).raw(
+            [request_header("B", 3), b"CleanAndNavigate"])
+        self.assertEqual(reply[0], b"error")
+
     def test_the_tree_uuid_is_fixed_while_the_node_runs(self):
         uuids = {self.client.tree()[0]}
         for _ in range(5):
@@ -245,7 +255,8 @@ class Groot2MonitorTest(unittest.TestCase):
             expect_error([struct.pack("<Bc", 2, kind) + b"\x01\x02\x03\x04"],
                          "Request not recognized")
             # Breakpoints, blackboard, recording: not served, answered with an error.
-            expect_error([request_header(rng.choice("IRUrtB"), 9), b"{}"])
+            expect_error([request_header(rng.choice("IRUrt"), 9), b"{}"])
+            expect_error([request_header("B", 9)], "must be 2 parts message")
             # Random frames.
             frames = [bytes(rng.getrandbits(8) for _ in range(rng.randint(0, 40)))
                       for _ in range(rng.randint(1, 3))]

@@ -99,6 +99,59 @@ TEST(Groot2Reply, hooks_that_groot2_sends_on_connect_and_disconnect_are_answered
   EXPECT_EQ(reply({header('X')}, state).size(), 1u);
 }
 
+struct Pose {};  // a type JSON cannot hold
+
+TEST(Groot2Blackboard, written_entries_by_key_as_json_values_others_by_type_name) {
+  Blackboard board;
+  board.set<bool>("bumped", true);
+  board.set<int>("count", -3);
+  board.set<double>("speed", 0.5);
+  board.set<std::string>("error", "blocked");
+  board.set<Pose>("pose", Pose{});
+  board.declare<int>("never_written");
+  const BlackboardSnapshot snapshot = snapshotBlackboard(board);
+  ASSERT_EQ(snapshot.size(), 5u);
+  EXPECT_EQ(snapshot[0].key, "bumped");
+  EXPECT_TRUE(snapshot[0].boolean);
+  EXPECT_EQ(snapshot[1].key, "count");
+  EXPECT_EQ(snapshot[1].integer, -3);
+  EXPECT_EQ(snapshot[2].text, "blocked");
+  EXPECT_EQ(snapshot[3].text, "<" + TypeName<Pose>::get() + ">");
+  EXPECT_EQ(snapshot[4].number, 0.5);
+}
+
+TEST(Groot2Blackboard, the_dump_is_messagepack_of_the_tree_blackboard_by_its_name) {
+  Blackboard board;
+  board.set<bool>("b", false);
+  board.set<int>("i", 1);
+  board.set<double>("d", 1.0);
+  board.set<std::string>("s", "x");
+  const BlackboardSnapshot snapshot = snapshotBlackboard(board);
+  // {"Main": {"b": false, "d": 1.0, "i": 1, "s": "x"}}
+  const std::string expected = std::string("\x81\xa4Main\x84", 7) +
+                               "\xa1"
+                               "b\xc2" +
+                               std::string(
+                                   "\xa1"
+                                   "d\xcb\x3f\xf0\0\0\0\0\0\0",
+                                   11) +
+                               std::string(
+                                   "\xa1"
+                                   "i\xd3\0\0\0\0\0\0\0\x01",
+                                   11) +
+                               "\xa1"
+                               "s\xa1"
+                               "x";
+  EXPECT_EQ(blackboardDump("Other;Main", "Main", snapshot), expected);
+  EXPECT_EQ(blackboardDump("Other", "Main", snapshot), "\x80");  // an empty map
+  ServerState state = someState();
+  state.tree_id = "Main";
+  state.blackboard = snapshot;
+  const auto frames = reply({header('B'), "Main"}, state);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[1], expected);
+}
+
 TEST(Groot2Reply, bad_requests_get_bt_cpp_error_replies) {
   const ServerState state = someState();
   const auto error = [](const std::string& why) { return std::vector<std::string>{"error", why}; };

@@ -5,7 +5,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <random>
+#include <thread>
 #include <zmq.hpp>
 #include <zmq_addon.hpp>
 
@@ -77,6 +79,29 @@ TEST(Groot2Server, serves_the_tree_and_the_latest_status) {
   EXPECT_EQ(frames[1], "new");
   EXPECT_TRUE(server.clientConnected());
   EXPECT_EQ(server.requests(), 2);
+}
+
+TEST(Groot2Server, the_blackboard_comes_from_the_tick_thread) {
+  const int port = freePortPair();
+  Server server(port, "<root/>", "", "Main");
+  Client client(port);
+  // Nobody provides the blackboard: an error reply after the wait.
+  EXPECT_EQ(client.ask({header('B'), "Main"})[0], "error");
+  EXPECT_FALSE(server.blackboardWanted());
+  std::atomic<bool> stop{false};
+  std::thread ticks([&] {  // what roomba_bt's tick loop does after every tick
+    Blackboard board;
+    board.set<int>("count", 7);
+    while (!stop) {
+      if (server.blackboardWanted()) server.provideBlackboard(snapshotBlackboard(board));
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  const auto frames = client.ask({header('B'), "Main"});
+  stop = true;
+  ticks.join();
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_NE(frames[1].find("count"), std::string::npos);
 }
 
 TEST(Groot2Server, bad_requests_get_error_replies_and_the_server_keeps_serving) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "roomba_rrt/bt/blackboard.h"
 #include "roomba_rrt/bt/tree_monitor.h"
 
 namespace roomba_rrt::bt::groot2 {
@@ -60,20 +61,48 @@ TreeUuid randomUuid();
 /// every node, in the monitor's order. `out` is reused (no allocation once it has grown).
 void statusSnapshot(const TreeMonitor& monitor, std::string& out);
 
+/// One blackboard entry as JSON can hold it: bool, integer, number or string; a value of another
+/// type (a pose, a path) as the string "<TypeName>".
+struct BlackboardValue {
+  enum class Kind { kBool, kInteger, kNumber, kString };
+  std::string key;
+  Kind kind = Kind::kString;
+  bool boolean = false;
+  std::int64_t integer = 0;
+  double number = 0;
+  std::string text;
+};
+using BlackboardSnapshot = std::vector<BlackboardValue>;
+
+/// Every written entry of `blackboard`, by key (taken in the thread that ticks the tree).
+BlackboardSnapshot snapshotBlackboard(const Blackboard& blackboard);
+
+/// The payload of a 'B' reply, as BehaviorTree.CPP's: MessagePack of a JSON object whose keys are
+/// the requested blackboard names (`names`, separated by ';') that exist, each an object of
+/// key -> value. Our trees have one blackboard, named as the tree (`tree_id`, the 'T' reply's
+/// <BehaviorTree ID>); other names are left out.
+std::string blackboardDump(const std::string& names, const std::string& tree_id,
+                           const BlackboardSnapshot& snapshot);
+
 /// What the server knows when it answers.
 struct ServerState {
   TreeUuid uuid{};
   std::string tree_xml;  ///< treeXmlWithUids()
   std::string status;    ///< the latest statusSnapshot()
+  std::string tree_id;   ///< the name of the one blackboard
+  /// The blackboard, when the tree's thread provided it for this request ('B').
+  std::optional<BlackboardSnapshot> blackboard;
 };
 
 /// The reply frames to the request frames `request`:
 /// - 'T': header, tree XML; 'S': header, status snapshot;
 /// - 'D' (hooks dump): header, "[]"; 'A', 'X' (remove or disable every hook): header;
+/// - 'B' with 2 frames (header, names): header, blackboardDump() of the state's blackboard;
 /// - "error" and a reason for: a first frame that is not 6 bytes ("wrong request header", also
-///   for no frame), 'B' without exactly 2 frames ("must be 2 parts message"), 'B', 'I', 'R', 'U',
-///   'r', 't' (blackboard, hooks and recording are not supported by this server), and any other
-///   type ("Request not recognized").
+///   for no frame), 'B' without exactly 2 frames ("must be 2 parts message"), 'B' without a
+///   blackboard in the state (the tree is not ticking), 'I', 'R', 'U', 'r', 't' (breakpoints and
+///   recording are not supported by this server), and any other type ("Request not
+///   recognized").
 /// The protocol byte is not checked (BehaviorTree.CPP does not either): the reply carries 2, so a
 /// client of another version can tell.
 std::vector<std::string> reply(const std::vector<std::string>& request, const ServerState& state);

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -19,19 +20,27 @@ namespace roomba_rrt::bt::groot2 {
 ///
 /// The thread that ticks the tree calls publishStatus() after a tick whose statuses changed: it
 /// swaps the new snapshot in under a mutex that the server thread holds only to copy the
-/// snapshot out, so the tick loop never waits for a client, a socket or the network.
+/// snapshot out, so the tick loop never waits for a client, a socket or the network. The
+/// blackboard belongs to that thread too: for a 'B' request the server asks for it
+/// (blackboardWanted()) and waits up to 0.5 s for the tick thread to provideBlackboard().
 class Server {
  public:
-  /// Binds tcp://*:`port` (request-reply) and tcp://*:`port`+1 (PUB) and starts answering. `tree_xml` is the
-  /// 'T' reply (treeXmlWithUids()). std::runtime_error naming the port when a socket cannot be
-  /// bound (the port is taken), std::invalid_argument when `port` is not in 1..65534.
-  Server(int port, std::string tree_xml, std::string initial_status);
+  /// Binds tcp://*:`port` (request-reply) and tcp://*:`port`+1 (PUB) and starts answering.
+  /// `tree_xml` is the 'T' reply (treeXmlWithUids()). std::runtime_error naming the port when a
+  /// socket cannot be bound (the port is taken), std::invalid_argument when `port` is not
+  /// in 1..65534.
+  Server(int port, std::string tree_xml, std::string initial_status, std::string tree_id = "");
   ~Server();
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;
 
   /// Replaces the 'S' snapshot; `status` receives the previous buffer (reuse it, no allocation).
   void publishStatus(std::string& status);
+
+  /// True while a 'B' request waits for the blackboard (one atomic load: check it every tick).
+  bool blackboardWanted() const { return blackboard_wanted_.load(std::memory_order_relaxed); }
+  /// Hands the blackboard to the waiting 'B' request.
+  void provideBlackboard(BlackboardSnapshot snapshot);
 
   /// True when a request arrived less than 5 s ago (BehaviorTree.CPP's heartbeat).
   bool clientConnected() const;
@@ -48,6 +57,10 @@ class Server {
   mutable std::mutex status_mutex_;
   std::unique_ptr<Sockets> sockets_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> blackboard_wanted_{false};
+  std::mutex blackboard_mutex_;
+  std::condition_variable blackboard_ready_;
+  std::optional<BlackboardSnapshot> blackboard_;  ///< under blackboard_mutex_
   std::atomic<long> requests_{0};
   std::atomic<std::int64_t> last_request_ns_{0};  ///< steady clock, 0: never
   std::thread thread_;
