@@ -85,6 +85,16 @@ void TreeWatch::afterTick(double x, double y, const std::string& frame) {
     markers_due_ = false;
     last_markers_ = now;
   }
+  // BehaviorTree.CPP's heartbeat: a client that sent nothing for 5 s has left.
+  if (groot_ && (now - last_heartbeat_check_).toSec() >= 1.0) {
+    last_heartbeat_check_ = now;
+    if (groot_->clientConnected() != groot_connected_) {
+      groot_connected_ = !groot_connected_;
+      ROS_INFO("Groot2: %s (port %d)",
+               groot_connected_ ? "a client is monitoring the tree" : "the client left",
+               groot_->port());
+    }
+  }
 }
 
 void TreeWatch::publishStatus() {

@@ -45,6 +45,8 @@ class TreeWatch {
   double home_x_ = 0, home_y_ = 0;      ///< where the robot was first drawn (the tree leans there)
   bool have_home_ = false;
   ros::WallTime last_markers_;
+  ros::WallTime last_heartbeat_check_;
+  bool groot_connected_ = false;
   std::vector<double> columns_;
 };
 
