@@ -27,7 +27,7 @@ void walk(const TreeNode& node, int parent, int depth, std::vector<MonitoredNode
   entry.uid = static_cast<std::uint16_t>(index + 1);
   entry.parent = parent;
   entry.depth = depth;
-  entry.type = node.registrationId().empty() ? node.name() : node.registrationId();
+  entry.type = node.typeName();
   entry.name = node.name();
   entry.path = parent < 0 ? node.name() : out[parent].path + "/" + node.name();
   entry.node = &node;
@@ -45,7 +45,8 @@ MonitorStatus fromStatus(Status status) {
     case Status::kFailure:
       return MonitorStatus::kFailure;
     default:
-      throwImpossibleStatus("TreeMonitor", status);
+      // The one other status BT.CPP has: a node skipped by its pre-condition.
+      return MonitorStatus::kSkipped;
   }
 }
 
@@ -58,6 +59,8 @@ MonitorStatus idled(MonitorStatus status) {
       return MonitorStatus::kIdleFromSuccess;
     case MonitorStatus::kFailure:
       return MonitorStatus::kIdleFromFailure;
+    case MonitorStatus::kSkipped:
+      return MonitorStatus::kIdleFromSkipped;
     default:
       return status;
   }
@@ -81,6 +84,10 @@ const char* toString(MonitorStatus status) {
       return "IDLE_FROM_SUCCESS";
     case MonitorStatus::kIdleFromFailure:
       return "IDLE_FROM_FAILURE";
+    case MonitorStatus::kSkipped:
+      return "SKIPPED";
+    case MonitorStatus::kIdleFromSkipped:
+      return "IDLE_FROM_SKIPPED";
   }
   return "?";
 }

@@ -32,6 +32,9 @@ std_msgs::ColorRGBA statusColor(bt::MonitorStatus status) {
       return color(0.3f, 0.5f, 0.3f);
     case bt::MonitorStatus::kIdleFromFailure:
       return color(0.55f, 0.3f, 0.3f);
+    case bt::MonitorStatus::kSkipped:
+      return color(0.3f, 0.5f, 0.9f);  // blue
+    case bt::MonitorStatus::kIdleFromSkipped:
     case bt::MonitorStatus::kIdle:
       break;
   }

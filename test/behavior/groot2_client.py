@@ -12,8 +12,9 @@ import zmq
 PROTOCOL = 2
 REQUEST_HEADER = 6
 REPLY_HEADER = 22
-STATUS_NAMES = {0: "IDLE", 1: "RUNNING", 2: "SUCCESS", 3: "FAILURE", 11: "IDLE_FROM_RUNNING",
-                12: "IDLE_FROM_SUCCESS", 13: "IDLE_FROM_FAILURE"}
+STATUS_NAMES = {0: "IDLE", 1: "RUNNING", 2: "SUCCESS", 3: "FAILURE", 4: "SKIPPED",
+                11: "IDLE_FROM_RUNNING", 12: "IDLE_FROM_SUCCESS", 13: "IDLE_FROM_FAILURE",
+                14: "IDLE_FROM_SKIPPED"}
 
 
 def request_header(kind, request_id, protocol=PROTOCOL):

@@ -23,7 +23,7 @@ from visualization_msgs.msg import Marker, MarkerArray
 from groot2_client import (PROTOCOL, REPLY_HEADER, Groot2Client, parse_reply_header,
                            parse_status, request_header, tree_nodes)
 
-VALID_STATUSES = {0, 1, 2, 3, 11, 12, 13}
+VALID_STATUSES = {0, 1, 2, 3, 4, 11, 12, 13, 14}
 V3_SPELLINGS = {"Selector": "Fallback", "ReactiveSelector": "ReactiveFallback",
                 "Retry": "RetryUntilSuccessful", "RetryUntilSuccesful": "RetryUntilSuccessful",
                 "SequenceStar": "SequenceWithMemory"}

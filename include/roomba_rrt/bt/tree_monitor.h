@@ -17,9 +17,11 @@ enum class MonitorStatus : std::uint8_t {
   kRunning = 1,
   kSuccess = 2,
   kFailure = 3,
+  kSkipped = 4,           ///< BT.CPP's SKIPPED: a pre-condition (_skipIf) skipped the node
   kIdleFromRunning = 11,  ///< halted while running
   kIdleFromSuccess = 12,  ///< succeeded, then its parent finished or was halted
   kIdleFromFailure = 13,  ///< failed, then its parent finished or was halted
+  kIdleFromSkipped = 14,  ///< skipped, then its parent finished or was halted
 };
 
 /// "IDLE", "RUNNING", "SUCCESS", "FAILURE", "IDLE_FROM_RUNNING", ...
@@ -31,7 +33,7 @@ struct MonitoredNode {
   int parent = -1;        ///< index of the parent in TreeMonitor::nodes(), -1 for the root
   int depth = 0;          ///< 0 for the root
   int end = 0;            ///< one past the index of its last descendant
-  std::string type;       ///< registration ID ("Sequence", "MoveForward")
+  std::string type;       ///< TreeNode::typeName() ("Sequence", "MoveForward")
   std::string name;       ///< instance name
   std::string path;       ///< names from the root, joined by '/' ("Roomba/clean/MoveForward")
   const TreeNode* node = nullptr;

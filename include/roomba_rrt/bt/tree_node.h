@@ -54,10 +54,10 @@ class TreeNode {
   Status lastStatus() const { return last_status_; }
   /// How many times the node was ticked (wraps around; monitors compare it for a change).
   std::uint32_t ticks() const { return ticks_; }
-  /// The node type it was built as ("Sequence", "MoveForward"; the tree factory sets it), "" for
-  /// a node built by hand.
-  const std::string& registrationId() const { return registration_id_; }
-  void setRegistrationId(std::string id) { registration_id_ = std::move(id); }
+  /// The node type it was built as (the tree file's element, e.g. "Sequence"; the factory sets
+  /// it), or its name when it was built in code.
+  const std::string& typeName() const { return type_name_.empty() ? name_ : type_name_; }
+  void setTypeName(std::string type) { type_name_ = std::move(type); }
 
  protected:
   /// Called on the first tick after a (re)start, right before onTick().
@@ -69,7 +69,7 @@ class TreeNode {
 
  private:
   std::string name_;
-  std::string registration_id_;
+  std::string type_name_;
   bool running_ = false;
   Status last_status_ = Status::kFailure;
   std::uint32_t ticks_ = 0;
