@@ -11,8 +11,12 @@
 namespace roomba_rrt::nodes {
 namespace {
 
-constexpr double kColumnWidth = 0.9;   ///< m between neighbouring leaves (at most)
-constexpr double kTreeWidth = 4.5;     ///< m: wider trees get narrower columns
+constexpr double kColumnWidth = 0.9;  ///< m between neighbouring leaves (at most)
+constexpr double kTreeWidth = 4.0;    ///< m: wider trees get narrower columns
+/// m: how far from where the robot started the tree may reach (the lab's room is 6.4 x 4.8 m
+/// and the robot starts in its middle), so that it stays in the room's view.
+constexpr double kReachX = 3.0, kReachY = 2.2;
+constexpr double kCharWidth = 0.45;    ///< a character's width in rviz's text, per text height
 constexpr double kRowHeight = 0.4;     ///< m between a parent and its children
 constexpr double kOffset = 0.6;        ///< m from the robot to the tree
 constexpr double kFollow = 0.3;        ///< m the robot moves before the tree follows it
@@ -132,8 +136,18 @@ void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
     home_y_ = y;
     have_home_ = true;
   }
-  const double left = x > home_x_ ? x - kOffset - leaves * width : x + kOffset;
-  const double top = y > home_y_ ? y + kRowHeight / 2 : y + (depth + 0.5) * kRowHeight;
+  const double tree_width = leaves * width, tree_height = (depth + 1) * kRowHeight;
+  const auto keepNearHome = [](double low, double size, double home, double reach) {
+    const double half = std::max(size / 2, reach);
+    return std::clamp(low, home - half, home + half - size);
+  };
+  const double left = keepNearHome(x > home_x_ ? x - kOffset - tree_width : x + kOffset, tree_width,
+                                   home_x_, kReachX);
+  const double top =
+      keepNearHome(
+          (y > home_y_ ? y + kRowHeight / 2 : y + (depth + 0.5) * kRowHeight) - tree_height,
+          tree_height, home_y_, kReachY) +
+      tree_height;
   const auto place = [&](std::size_t i) {
     geometry_msgs::Point p;
     p.x = left + width / 2 + columns_[i] * width;
@@ -166,7 +180,11 @@ void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
     label.pose.position = p;
     label.pose.position.z = 0.1;
     label.scale.z = std::min(0.14, width / 4);
-    label.text = nodes[i].name;
+    // A name wider than its box is cut short, so that neighbours do not overlap.
+    const auto fits = static_cast<std::size_t>(width * 0.92 / (kCharWidth * label.scale.z));
+    label.text = nodes[i].name.size() <= fits || fits < 2
+                     ? nodes[i].name
+                     : nodes[i].name.substr(0, fits - 1) + ".";
     array.markers.push_back(label);
   }
   array.markers.push_back(edges);

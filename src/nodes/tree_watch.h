@@ -17,8 +17,9 @@ namespace roomba_rrt::nodes {
 /// Watches one tree after each tick. Parameters: ~groot_port (default 1667; 0: no Groot2 server;
 /// a port that cannot be bound is logged and the tree runs without it). Topics: ~tree_status
 /// (BtTreeStatus, latched, on change), ~tree_markers (MarkerArray, latched: the tree drawn in the
-/// odometry's frame beside the robot, on the side towards where the robot started, each node a box
-/// coloured by its status, again when a status changed or the robot moved 0.3 m, at most 10 Hz).
+/// odometry's frame beside the robot, on the side towards where the robot started and near it, each
+/// node a box coloured by its status, again when a status changed or the robot moved 0.3 m, at most
+/// 10 Hz).
 class TreeWatch {
  public:
   /// `tree_id` names the tree for Groot2; `model_xml` is the <TreeNodesModel> document Groot2
