@@ -15,6 +15,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     maps.json      map_comparison --json (the shared maps: RRT family vs OMPL, RRT* vs shortest)
     map_load.json  map_load_bench --json (willow_full × 8: load + inflate per cell, memory)
     behavior.json  behavior_bench --benchmark_out (Google Benchmark JSON)
+    groot2.json    groot2_bench --json (Groot2 monitoring: the monitor per tick, the server thread)
     sim.json       sim_bench --benchmark_out (Google Benchmark JSON; one robot and 1/10/100 robots)
     planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
     rtf.json       {"requested": F, "line": "<sim_rtf_probe's output line>"}
@@ -306,6 +307,21 @@ def behavior_rows(t, results):
           f"{fmt(bt)} ns", f"~{BTCPP_NS_PER_TICK} ns (cited)")
 
 
+def groot2_rows(t, results):
+    what = "Groot2 monitoring (lab tree, a client polling 'S' at 20 Hz): cost per 60 Hz tick"
+    try:
+        d = load(results, "groot2")
+    except Missing as e:
+        t.missing("groot2", what, str(e), "≤ 5 % of a tick")
+        return
+    share = 100 * (d["monitor_ns"] * 1e-3 + d["server_us_per_tick"]) / d["tick_period_us"]
+    t.add("groot2", what + ": the tick thread's monitor (ns) + the server thread's CPU (µs, "
+          "upper bound: ZeroMQ's I/O threads included), as a share of the tick period",
+          share, target="≤ 5 % of a tick", met=share <= 5,
+          ours_text=f"{share:.2f} % (monitor {fmt(d['monitor_ns'])} ns on a "
+                    f"{fmt(d['bare_ns'])} ns tick; server {fmt(d['server_us_per_tick'])} µs)")
+
+
 def sim_rows(t, results):
     try:
         data = load(results, "sim")
@@ -525,7 +541,7 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, map_rows, map_load_rows, planning_rows, behavior_rows,
-                 sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
+                 groot2_rows, sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

@@ -23,6 +23,8 @@ add_library(roomba_behavior_core
   src/bt/retry_node.cpp
   src/bt/timeout_node.cpp
   src/bt/tree_factory.cpp
+  src/bt/tree_monitor.cpp
+  src/bt/groot2_protocol.cpp
   src/behavior/roomba_params.cpp
   src/behavior/roomba_state.cpp
   src/behavior/motion_primitives.cpp
@@ -42,9 +44,16 @@ configure_file(cmake/lab_tree_xml.h.in
   ${CMAKE_CURRENT_BINARY_DIR}/generated/roomba_rrt/behavior/lab_tree_xml.h @ONLY)
 target_include_directories(roomba_behavior_core PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
 
+# Groot2 live monitoring on ZeroMQ (libzmq3-dev, cppzmq-dev): the server thread of roomba_bt.
+pkg_check_modules(ZMQ REQUIRED IMPORTED_TARGET libzmq)
+add_library(roomba_bt_groot2 STATIC src/bt/groot2_server.cpp)
+target_link_libraries(roomba_bt_groot2 PUBLIC roomba_behavior_core PRIVATE PkgConfig::ZMQ)
+set_target_properties(roomba_bt_groot2 PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
-add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp)
-target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core roomba_node_common)
+add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/tree_watch.cpp)
+target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core roomba_bt_groot2
+  roomba_node_common)
 add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}
   ${catkin_EXPORTED_TARGETS})
 
@@ -64,6 +73,9 @@ if(CATKIN_ENABLE_TESTING)
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
+  # Watching a tree: the monitor's statuses, Groot2's protocol, and its server over ZeroMQ.
+  roomba_rrt_gtest(bt_monitor_test test/bt/tree_monitor_test.cpp test/bt/groot2_protocol_test.cpp
+    test/bt/groot2_server_test.cpp LINK roomba_bt_groot2 PkgConfig::ZMQ PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.
   roomba_rrt_gtest(behavior_core_test test/behavior/roomba_params_test.cpp
@@ -78,6 +90,8 @@ if(CATKIN_ENABLE_TESTING)
     test/behavior/behavior_rostest.cpp)
   add_rostest(test/behavior/roomba_bt.test DEPENDENCIES behavior_rostest)
   add_rostest(test/behavior/roomba_behavior_startup.test DEPENDENCIES behavior_rostest)
+  # roomba_bt's Groot2 server through a Python client of the protocol (python3-zmq).
+  add_rostest(test/behavior/groot2_monitor.test DEPENDENCIES roomba_bt roomba_sim)
   if(TARGET behavior_rostest)
     target_include_directories(behavior_rostest PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(behavior_rostest ${catkin_LIBRARIES})

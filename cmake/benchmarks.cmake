@@ -62,6 +62,13 @@ if(TARGET roomba_geometry)
   add_dependencies(benchmarks map_load_bench)
 endif()
 
+# --- Groot2 monitoring's cost per tick of roomba_bt (issue 46): needs only ZeroMQ ---------------
+if(TARGET roomba_bt_groot2)
+  add_executable(groot2_bench EXCLUDE_FROM_ALL bench/groot2_bench.cpp)
+  target_link_libraries(groot2_bench PRIVATE roomba_bt_groot2 PkgConfig::ZMQ)
+  add_dependencies(benchmarks groot2_bench)
+endif()
+
 # --- the other parts' benchmarks (declared in their own fragments) ----------------------------
 # `benchmarks` builds them too, plus the tools scripts/bench runs (the nodes it measures).
 foreach(target IN ITEMS planning_bench behavior_bench sim_bench sim_rtf_probe plan_path_bench

@@ -16,6 +16,8 @@ if(ROOMBA_RRT_SANITIZE)
   target_link_libraries(roomba_params_fuzzer roomba_behavior_core)
   roomba_rrt_fuzzer(tree_fuzzer)
   target_link_libraries(tree_fuzzer roomba_behavior_core)
+  roomba_rrt_fuzzer(groot2_fuzzer)
+  target_link_libraries(groot2_fuzzer roomba_behavior_core)
   # The planning library uses GCC's vector built-ins (__builtin_shuffle, target_clones) that clang
   # cannot compile: rrt_planning_sanitized is rrt_planning with those files compiled by g++
   # (-O2, not instrumented: ASan still catches their wild accesses as SEGVs, not their overflows

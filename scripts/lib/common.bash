@@ -37,8 +37,10 @@ RR_PACKAGES=(
   # libraries of the ROS-free cores and the tools
   libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
   libsdl2-image-dev  # map images (PGM, PNG), decoded as map_server decodes them
+  libzmq3-dev cppzmq-dev  # roomba_bt's Groot2 monitor (ZeroMQ, as BehaviorTree.CPP's)
   # tests, benchmarks, fuzzing (clang's libFuzzer and sanitizer runtimes), pictures
   libgtest-dev librostest-dev python3-rostest python3-rosunit libpng-dev
+  python3-zmq  # the Groot2 protocol's test client
   libompl-dev libbenchmark-dev
   clang libfuzzer-14-dev libclang-rt-14-dev
   rviz xvfb libgl1-mesa-dri imagemagick iproute2 util-linux procps

@@ -431,6 +431,8 @@ std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int 
     fail(state.source, element, error.what());
   }
   if (!node) fail(state.source, element, "the registered builder returned no node");
+  const auto legacy = legacySpellings().find(spec.type);
+  node->setTypeName(legacy == legacySpellings().end() ? spec.type : legacy->second);
   auto* control = dynamic_cast<ControlNode*>(node.get());
   auto* decorator = dynamic_cast<DecoratorNode*>(node.get());
   if (control && control->requiredChildren() != 0 &&

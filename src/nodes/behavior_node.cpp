@@ -3,6 +3,7 @@
 #include "master_watch.h"
 #include "message_parts.h"
 #include "reconfigure.h"
+#include "tree_watch.h"
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -15,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <fstream>
+#include <sstream>
 #include <utility>
 
 namespace roomba_rrt::nodes {
@@ -25,7 +28,7 @@ class BehaviorNode {
  public:
   BehaviorNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, NodeParams& node_params,
                CommandOutput& output, std::unique_ptr<behavior::RoombaBehavior> behavior,
-               double rate, double bumper_timeout)
+               double rate, double bumper_timeout, const std::string& tree_nodes_model)
       : output_(output),
         behavior_(std::move(behavior)),
         period_(1.0 / rate),
@@ -38,10 +41,23 @@ class BehaviorNode {
     odom_sub_ = nh.subscribe("odom", 1, &BehaviorNode::onOdom, this);
     timer_ = nh.createTimer(period_, &BehaviorNode::onTimer, this);
     startReconfigure(pnh);
+    if (bt::Tree* tree = behavior_->behaviorTree()) {
+      watch_ = std::make_unique<TreeWatch>(pnh, node_params, *tree,
+                                           treeId(node_params.get<std::string>("tree_file", "")),
+                                           tree_nodes_model);
+    }
     for (const std::string& name : parameterNames<RoombaBehaviorConfig>()) node_params.expect(name);
   }
 
  private:
+  /// The ID of the tree `tree_file` runs ("MainTree" when it cannot be read).
+  static std::string treeId(const std::string& tree_file) {
+    std::ifstream in(tree_file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return bt::mainTreeId(text.str());
+  }
+
   /// dynamic_reconfigure (cfg/RoombaBehavior.cfg): the lab's constants, used by every motion
   /// that starts after the change (RoombaBehavior::setParams); refused (and kept) when invalid.
   void startReconfigure(const ros::NodeHandle& pnh) {
@@ -82,6 +98,7 @@ class BehaviorNode {
     }
     x_ = p.x;
     y_ = p.y;
+    odom_frame_ = msg.header.frame_id;
   }
 
   void onTimer(const ros::TimerEvent&) {
@@ -104,6 +121,7 @@ class BehaviorNode {
     robot::Velocity cmd;
     while (next_tick_ <= due && ticks < max_catch_up_) {
       cmd = behavior_->tick(bumper_);
+      if (watch_) watch_->afterTick(x_, y_, odom_frame_);
       next_tick_ += period_;
       ++ticks;
       const std::string& state = behavior_->stateName();
@@ -137,6 +155,7 @@ class BehaviorNode {
   CommandOutput& output_;
   std::unique_ptr<behavior::RoombaBehavior> behavior_;
   std::unique_ptr<Reconfigure<RoombaBehaviorConfig>> reconfigure_;
+  std::unique_ptr<TreeWatch> watch_;  ///< a behavior tree's monitors (none for the FSM)
   ros::Duration period_;
   int max_catch_up_;  ///< at most one second of ticks per timer event
   double bumper_timeout_;
@@ -150,6 +169,7 @@ class BehaviorNode {
   ros::Time next_tick_;  ///< ROS time of the next tick due (zero: start afresh)
   bool have_bumper_ = false;
   double x_ = 0, y_ = 0;
+  std::string odom_frame_;  ///< /odom's frame: the tree markers are drawn in it
   std::string last_state_;
 };
 
@@ -172,7 +192,7 @@ std::string robotFrame(const std::string& frame) {
 }
 
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
-                    const BehaviorMaker& make_behavior) {
+                    const BehaviorMaker& make_behavior, const std::string& tree_nodes_model) {
   ros::init(argc, argv, node_name);
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
@@ -198,7 +218,7 @@ int runBehaviorNode(int argc, char** argv, const std::string& node_name,
     CommandOutput output(nh);
     BehaviorNode node(nh, pnh, node_params, output,
                       make_behavior(node_params, params, static_cast<std::uint32_t>(seed), output),
-                      params.rate, bumper_timeout);
+                      params.rate, bumper_timeout, tree_nodes_model);
     node_params.warnUnknown();
     ROS_INFO("%s: ticking at %.1f Hz (seed %d, parameters from %s)", node_name.c_str(), params.rate,
              seed, config_file.c_str());

@@ -38,12 +38,16 @@ using BehaviorMaker = std::function<std::unique_ptr<behavior::RoombaBehavior>(
 /// Runs a behaviour node until shutdown and returns the process exit code (non-zero when the
 /// parameters or the behaviour cannot be loaded).
 ///
+/// A behaviour with a behavior tree (RoombaBehavior::behaviorTree()) is watched (tree_watch.h:
+/// ~groot_port, ~tree_status, ~tree_markers); `tree_nodes_model` is the <TreeNodesModel> Groot2
+/// gets with the tree, `tree_file` the file whose main tree runs (its ID names the tree).
+///
 /// Parameters (read strictly, written back while the node runs, unknown ones warned about:
 /// NodeParams): ~config_file (default $(rospack find roomba_rrt)/config/roomba_behavior.yaml),
 /// ~rate (Hz, default: the file's rate, 60), ~seed (default 1), ~bumper_timeout (s of ROS time
 /// without /bumper before the node stops the robot, default 0.5) and ~base_frame.
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
-                    const BehaviorMaker& make_behavior);
+                    const BehaviorMaker& make_behavior, const std::string& tree_nodes_model = "");
 
 /// One of the robot's frames by default: `frame` (base_link), or <ns>/`frame` when the node runs
 /// in a namespace (roomba_sim's frames for a named robot), so that

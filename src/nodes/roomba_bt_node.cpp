@@ -45,5 +45,6 @@ int main(int argc, char** argv) {
                                                        output);
         }
         return std::make_unique<RoombaBt>(params, seed, tree_file);
-      });
+      },
+      roomba_rrt::navigation::treeNodesModel({roomba_rrt::coverage::coverageLeaves(nullptr)}));
 }

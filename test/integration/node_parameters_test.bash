@@ -44,6 +44,7 @@ refuses "not a regular file" coverage_planner _world_file:=/tmp
 # Issue 22, item 3: a value of the wrong type is refused naming the parameter (never the default).
 refuses "~rate: must be a number, got 'fast' (a string)" roomba_fsm _rate:=fast
 refuses "~seed: must be an integer, got 'abc' (a string)" roomba_bt _seed:=abc
+refuses "~groot_port must be 0 (off) or a TCP port in 1..65534, got 70000" roomba_bt _groot_port:=70000
 refuses "~real_time_factor: must be a number, got 'fast' (a string)" roomba_sim _real_time_factor:=fast
 refuses "~step: must be a number, got 'big' (a string)" rrt_planner _step:=big
 refuses "~max_linear_speed: must be a number, got 'x' (a string)" roomba_teleop _max_linear_speed:=x

@@ -105,6 +105,12 @@ class Blackboard {
     return static_cast<const Entry<T>&>(*it->second).get();
   }
 
+  /// Calls f(key, entry) for every entry, by key (monitors: Groot2's blackboard dump).
+  template <class F>
+  void forEach(F&& f) const {
+    for (const auto& [key, entry] : entries_) f(key, *entry);
+  }
+
   /// The entry of `key`, or nullptr.
   const EntryBase* find(const std::string& key) const {
     const auto it = entries_.find(key);

@@ -1,6 +1,7 @@
 // The base class of every behavior-tree node: leaves, decorators and control nodes.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "roomba_rrt/bt/status.h"
@@ -32,6 +33,8 @@ class TreeNode {
     if (!running_) onEnter();
     const Status status = onTick();
     running_ = status == Status::kRunning;
+    last_status_ = status;
+    ++ticks_;
     return status;
   }
 
@@ -46,6 +49,16 @@ class TreeNode {
   /// The instance name (from the tree file's `name` attribute, or the node type).
   const std::string& name() const { return name_; }
 
+  // For monitors (bt/tree_monitor.h: Groot2, ~tree_status), which look between ticks.
+  /// What the last tick returned (meaningless while ticks() is 0).
+  Status lastStatus() const { return last_status_; }
+  /// How many times the node was ticked (wraps around; monitors compare it for a change).
+  std::uint32_t ticks() const { return ticks_; }
+  /// The node type it was built as (the tree file's element, e.g. "Sequence"; the factory sets
+  /// it), or its name when it was built in code.
+  const std::string& typeName() const { return type_name_.empty() ? name_ : type_name_; }
+  void setTypeName(std::string type) { type_name_ = std::move(type); }
+
  protected:
   /// Called on the first tick after a (re)start, right before onTick().
   virtual void onEnter() {}
@@ -56,7 +69,10 @@ class TreeNode {
 
  private:
   std::string name_;
+  std::string type_name_;
   bool running_ = false;
+  Status last_status_ = Status::kFailure;
+  std::uint32_t ticks_ = 0;
 };
 
 /// A leaf: an action or a condition written by the user (no children).
