@@ -24,6 +24,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     nav_latency.json  nav_latency_probe --json (roomba_sim, rrt_planner, roomba_bt navigating)
     fairness.json  fairness_probe --json (rrt_planner, 8 hostile clients)
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
+    startup.json   bench/startup_probe.py (the tools' start-up)
 """
 import datetime
 import json
@@ -448,6 +449,18 @@ def fairness_rows(t, results):
                     f"{data['hostile_preempted']} preempted, {data['hostile_busy']} busy)")
 
 
+def startup_rows(t, results):
+    try:
+        data = load(results, "startup")
+    except Missing as e:
+        t.missing("startup", "Start-up: process start to first answer", str(e))
+        return
+    for k, tool in enumerate(data["tools"]):
+        t.add(f"startup_{k}", "Start-up: `" + tool["command"] +
+              "`, process start to exit (median wall time); shared libraries loaded",
+              tool["median_ms"], ours_text=f"{tool['median_ms']:.1f} ms · {tool['libraries']} libraries")
+
+
 def memory_rows(t, results):
     what = "Peak RSS: rrt_monte_carlo --scenario all --runs 200"
     try:
@@ -541,7 +554,7 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, map_rows, map_load_rows, planning_rows, behavior_rows,
-                 groot2_rows, sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, memory_rows):
+                 groot2_rows, sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

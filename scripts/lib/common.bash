@@ -36,10 +36,10 @@ RR_PACKAGES=(
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # libraries of the ROS-free cores and the tools
   libyaml-cpp-dev libcairo2-dev libtinyxml2-dev
-  libsdl2-image-dev  # map images (PGM, PNG), decoded as map_server decodes them
+  libpng-dev  # map images: PNG through libpng, netpbm read by hand, as map_server decodes them
   libzmq3-dev cppzmq-dev  # roomba_bt's Groot2 monitor (ZeroMQ, as BehaviorTree.CPP's)
   # tests, benchmarks, fuzzing (clang's libFuzzer and sanitizer runtimes), pictures
-  libgtest-dev librostest-dev python3-rostest python3-rosunit libpng-dev
+  libgtest-dev librostest-dev python3-rostest python3-rosunit
   python3-zmq  # the Groot2 protocol's test client
   libompl-dev libbenchmark-dev
   clang libfuzzer-14-dev libclang-rt-14-dev

@@ -1,6 +1,5 @@
 #include "roomba_rrt/geometry/map_file.h"
 
-#include <SDL2/SDL_image.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cctype>
@@ -10,6 +9,7 @@
 #include <memory>
 #include <set>
 
+#include "roomba_rrt/geometry/map_image.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/require.h"
 #include "roomba_rrt/util/text_file.h"
@@ -34,7 +34,7 @@ double number(const YAML::Node& root, const char* key) {
   }
 }
 
-/// Width and height from the image's header, before SDL2_image allocates anything: a PNG's
+/// Width and height from the image's header, before the decoder allocates anything: a PNG's
 /// IHDR chunk, or a PNM's first three tokens (magic, width, height; comments skipped).
 /// Throws InvalidInput (field "image") for anything else.
 void imageSize(const std::string& path, long long& width, long long& height) {
@@ -81,21 +81,21 @@ void imageSize(const std::string& path, long long& width, long long& height) {
 }
 
 /// The grid of the decoded image, map_server's way.
-void readPixels(const SDL_Surface& image, const MapFile& map, OccupancyGrid& grid) {
-  const int channels = image.format->BytesPerPixel;
-  grid.width = image.w;
-  grid.height = image.h;
-  grid.cells.assign(static_cast<std::size_t>(image.w) * image.h, OccupancyGrid::kUnknown);
-  const auto* pixels = static_cast<const unsigned char*>(image.pixels);
-  for (int j = 0; j < image.h; ++j) {
-    const unsigned char* row = pixels + static_cast<std::size_t>(j) * image.pitch;
-    for (int i = 0; i < image.w; ++i) {
+void readPixels(const MapImage& image, const MapFile& map, OccupancyGrid& grid) {
+  const int channels = image.channels;
+  grid.width = image.width;
+  grid.height = image.height;
+  grid.cells.assign(static_cast<std::size_t>(image.width) * image.height, OccupancyGrid::kUnknown);
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * channels;
+  for (int j = 0; j < image.height; ++j) {
+    const unsigned char* row = image.pixels.data() + static_cast<std::size_t>(j) * row_bytes;
+    for (int i = 0; i < image.width; ++i) {
       const unsigned char* p = row + static_cast<std::size_t>(i) * channels;
       int sum = 0;
       for (int k = 0; k < channels; ++k) sum += p[k];
       const double average = static_cast<double>(sum) / channels;
       // Image row 0 is the top: the grid's last row.
-      grid.cells[static_cast<std::size_t>(image.h - 1 - j) * image.w + i] =
+      grid.cells[static_cast<std::size_t>(image.height - 1 - j) * image.width + i] =
           trinaryValue(average, map.negate, map.occupied_thresh, map.free_thresh);
     }
   }
@@ -126,21 +126,14 @@ void readImage(MapFile& map, long long max_cells) {
                                     std::to_string(height) + " pixels; at most " +
                                     std::to_string(max_cells) + " cells are supported");
   }
-  const std::unique_ptr<SDL_Surface, void (*)(SDL_Surface*)> image(IMG_Load(map.image.c_str()),
-                                                                   SDL_FreeSurface);
-  if (!image) {
-    throw InvalidInput("image", "cannot decode '" + map.image + "': " + IMG_GetError());
-  }
-  if (image->w != width || image->h != height) {
+  const MapImage image = decodeMapImage(map.image);
+  if (image.width != width || image.height != height) {
     throw InvalidInput("image", "'" + map.image + "': its header says " + std::to_string(width) +
                                     " x " + std::to_string(height) + ", its pixels are " +
-                                    std::to_string(image->w) + " x " + std::to_string(image->h));
+                                    std::to_string(image.width) + " x " +
+                                    std::to_string(image.height));
   }
-  if (SDL_MUSTLOCK(image.get()) && SDL_LockSurface(image.get()) != 0) {
-    throw InvalidInput("image", "cannot read the pixels of '" + map.image + "'");
-  }
-  readPixels(*image, map, map.grid);
-  if (SDL_MUSTLOCK(image.get())) SDL_UnlockSurface(image.get());
+  readPixels(image, map, map.grid);
 }
 
 void readYaml(const std::string& text, MapFile& map) {

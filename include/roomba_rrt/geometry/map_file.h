@@ -11,9 +11,9 @@
 // Each pixel becomes the cell of the same column, the image's top row the grid's top row (the
 // grid's row 0 is the image's last). Its occupancy is map_server's: the average of the pixel's
 // bytes p (every channel, alpha included, as map_server averages in trinary mode; one byte for
-// grey), occ = (255 − p) / 255, or p / 255 with negate. The image is decoded by SDL2_image, the
-// library map_server itself uses, so that every PGM (P2, P5) and PNG map_server reads gives the
-// same cells here.
+// grey), occ = (255 − p) / 255, or p / 255 with negate. The image is decoded to the bytes
+// SDL2_image, map_server's decoder, gives map_server (map_image.h: netpbm read here, PNG through
+// libpng), so that every PGM (P2, P5) and PNG map_server reads gives the same cells here.
 #pragma once
 
 #include <cstddef>
