@@ -236,8 +236,10 @@ MapFile loadMap(const std::string& yaml_path, long long max_cells) {
 bool isMapYaml(const std::string& path) {
   try {
     // Leniently: a map with a mistake (a key twice, say) is still a map, refused by loadMap.
-    const YAML::Node root =
-        YAML::Load(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
+    // Aliases are not let into a node graph even here (the reader that follows refuses them).
+    const std::string text = util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file");
+    util::rejectAnchorsAndAliases(text);
+    const YAML::Node root = YAML::Load(text);
     return root.IsMap() && root["image"];
   } catch (const std::exception&) {
     return false;

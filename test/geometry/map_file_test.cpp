@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/hostile_yaml.h"
 #include "../common/shared_maps.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -164,6 +165,12 @@ TEST_F(MapFileTest, every_bad_map_is_refused_naming_the_file_and_the_field) {
   refused("image: m.pgm\n" + ok + "resolutoin: 0.1\n", "resolutoin: is not a map_server key");
   refused("image: m.pgm\n" + ok + "image: n.pgm\n", "image: is given twice (lines 1 and 4)");
   refused("resolution: 0.5\norigin: [0, 0, 0]\n", "image: is missing");
+  // Issue 44: a valid map plus an alias bomb kept the tools busy for 70 minutes.
+  refused("image: m.pgm\n" + ok + roomba_rrt::test::aliasBomb(9),
+          roomba_rrt::test::aliasRefusal(4, 5));
+  refused("image: m.pgm\nresolution: &r 0.5\norigin: [0, 0, 0]\n",
+          roomba_rrt::test::aliasRefusal(2, 13));
+  refused(roomba_rrt::test::kRecursiveAlias, roomba_rrt::test::aliasRefusal(1, 7));
   refused("image: m.pgm\nresolution: 0.5\n", "origin: is missing");
   // Images: truncated, not an image, a header claiming too many pixels (refused before decoding).
   write("short.pgm", "P5\n4 4\n255\nabc");

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "../common/hostile_yaml.h"
+
 using roomba_rrt::world::loadWorld;
 using roomba_rrt::world::parseWorld;
 using roomba_rrt::world::World;
@@ -284,6 +286,18 @@ TEST(World, a_key_given_twice_is_refused_naming_it_and_both_lines) {
   EXPECT_EQ(errorFor("furniture:\n  circles:\n    - {x: 1, y: 1, radius: 0.2, x: 2}\n"),
             "test.yaml: furniture.circles[0].x: is given twice (lines 3 and 3); a mapping holds "
             "one value per key");
+}
+
+// Issue 44, item 1: an alias made the nodes a cycle (SIGSEGV after 12 s) or a billion leaves
+// (70 min for 9 levels); both are refused at the anchor, before anything walks the nodes.
+TEST(World, anchors_and_aliases_are_refused_naming_the_line) {
+  using roomba_rrt::test::aliasBomb;
+  using roomba_rrt::test::aliasRefusal;
+  EXPECT_EQ(errorFor(roomba_rrt::test::kRecursiveAlias), "test.yaml: " + aliasRefusal(1, 7));
+  EXPECT_EQ(errorFor("room: {width: 6.4, height: 4.8}\n" + aliasBomb(9)),
+            "test.yaml: " + aliasRefusal(2, 5));
+  EXPECT_EQ(errorFor("room: {width: 6.4, height: 4.8}\nrobot: {radius: &r 0.2}\n"),
+            "test.yaml: " + aliasRefusal(2, 17));
 }
 
 TEST(World, a_file_that_sets_no_section_says_which_defaults_it_runs_with) {
