@@ -163,9 +163,6 @@ void readYaml(const std::string& text, MapFile& map) {
                   : (std::filesystem::path(map.yaml).parent_path() / image).string();
 
   map.resolution = number(root, "resolution");
-  util::requireInRange("resolution", map.resolution, MapLimits::kMinResolution,
-                       MapLimits::kMaxResolution, "m");
-
   const YAML::Node origin = root["origin"];
   if (!origin.IsSequence() || (origin.size() != 2 && origin.size() != 3)) {
     throw InvalidInput("origin", "must be [x, y, yaw]");
@@ -178,13 +175,8 @@ void readYaml(const std::string& text, MapFile& map) {
     } catch (const YAML::Exception&) {
       throw InvalidInput(field, "must be a number");
     }
-    util::requireInRange(field, values[k], -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate,
-                         "m");
   }
-  if (values[2] != 0) {
-    throw InvalidInput("origin[2]", "a rotated map (yaw " + util::show(values[2]) +
-                                        ") is not supported; rotate the image and use yaw 0");
-  }
+  validateMapPlacement(map.resolution, values[0], values[1], values[2]);
   map.origin = {values[0], values[1]};
 
   if (root["negate"]) {
@@ -205,9 +197,26 @@ void readYaml(const std::string& text, MapFile& map) {
     throw InvalidInput("mode", "only 'trinary' is read (free, occupied, unknown), got '" +
                                    root["mode"].Scalar() + "'");
   }
+  // map_server refuses a file without these (its defaults are not the user's choice).
+  for (const char* key : {"negate", "occupied_thresh", "free_thresh"}) {
+    if (!root[key]) throw InvalidInput(key, "is missing; map_server requires it");
+  }
 }
 
 }  // namespace
+
+void validateMapPlacement(double resolution, double x, double y, double rotation,
+                          const MapFieldNames& names) {
+  util::requireInRange(names.resolution, resolution, MapLimits::kMinResolution,
+                       MapLimits::kMaxResolution, "m");
+  util::requireInRange(names.x, x, -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate, "m");
+  util::requireInRange(names.y, y, -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate, "m");
+  if (!(std::abs(rotation) <= 1e-6)) {
+    throw InvalidInput(names.rotation, "a rotated map (by " + util::show(rotation) +
+                                           " rad) is not supported; rotate the image and use "
+                                           "yaw 0");
+  }
+}
 
 std::int8_t trinaryValue(double average, bool negate, double occupied_thresh, double free_thresh) {
   if (negate) average = 255.0 - average;
