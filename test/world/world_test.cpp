@@ -300,6 +300,35 @@ TEST(World, anchors_and_aliases_are_refused_naming_the_line) {
             "test.yaml: " + aliasRefusal(2, 17));
 }
 
+// Issue 44, item 4: a key without a value meant 0 (a rectangle's min_y) or the default; a
+// furniture piece without a coordinate ran with 0.
+TEST(World, a_key_present_needs_a_value_and_furniture_every_coordinate) {
+  EXPECT_EQ(errorFor("furniture:\n  rectangles:\n    - {min_x: 1, max_x: 2, max_y: 2}\n"),
+            "test.yaml: furniture.rectangles[0].min_y: is missing");
+  EXPECT_EQ(errorFor("furniture:\n  rectangles:\n    - {min_x: 1, min_y: null, max_x: 2, "
+                     "max_y: 2}\n"),
+            "test.yaml: furniture.rectangles[0].min_y: has no value; give a number or remove the "
+            "key");
+  EXPECT_EQ(errorFor("furniture: {circles: [{x: 1, y: 1, radius: ~}]}\n"),
+            "test.yaml: furniture.circles[0].radius: has no value; give a number or remove the "
+            "key");
+  EXPECT_EQ(errorFor("furniture: {circles: [{x: 1, radius: 0.2}]}\n"),
+            "test.yaml: furniture.circles[0].y: is missing");
+  EXPECT_EQ(errorFor("robot:\n  radius:\n"),
+            "test.yaml: robot.radius: has no value; give a number or remove the key");
+  EXPECT_EQ(errorFor("step: ~\n"),
+            "test.yaml: step: has no value; give a number or remove the key");
+  EXPECT_EQ(errorFor("room:\n"), "test.yaml: room: has no value; give a mapping");
+  EXPECT_EQ(errorFor("furniture: {circles: [~]}\n"),
+            "test.yaml: furniture.circles[0]: has no value; give a mapping");
+  EXPECT_EQ(errorFor("furniture: {rectangles: }\n"),
+            "test.yaml: furniture.rectangles: has no value; give a list or remove the key");
+  EXPECT_EQ(errorFor("robots:\n  - {name: a, initial_pose: ~}\n"),
+            "test.yaml: robots[0].initial_pose: has no value; give a mapping");
+  // Absent keys keep their defaults, as before.
+  EXPECT_EQ(errorFor("robot: {radius: 0.2}\n"), "");
+}
+
 TEST(World, a_file_that_sets_no_section_says_which_defaults_it_runs_with) {
   const World empty = parseWorld("# truncated to a comment\n", "cut.yaml");
   EXPECT_EQ(roomba_rrt::world::defaultsNotice(empty, "cut.yaml"),
