@@ -52,7 +52,8 @@ std::string fromMapMessage(const nav_msgs::OccupancyGrid& message, geometry::Occ
   std::ostringstream why;
   const double resolution = info.resolution;
   const double x = info.origin.position.x, y = info.origin.position.y;
-  const long long cells = static_cast<long long>(info.width) * info.height;
+  // Two uint32 multiply to at most 2^64 - 2^33 + 1: unsigned, so 4e9 x 4e9 does not overflow.
+  const unsigned long long cells = static_cast<unsigned long long>(info.width) * info.height;
   try {
     // The checks a map file gets (map_file.h), spelled as the message's fields.
     static const geometry::MapFieldNames kNames{"info.resolution", "info.origin.position.x",
@@ -63,7 +64,8 @@ std::string fromMapMessage(const nav_msgs::OccupancyGrid& message, geometry::Occ
   } catch (const util::InvalidInput& e) {
     return e.what();
   }
-  if (info.width == 0 || info.height == 0 || cells > kMaxMapMessageCells) {
+  if (info.width == 0 || info.height == 0 ||
+      cells > static_cast<unsigned long long>(kMaxMapMessageCells)) {
     why << "info.width, info.height: " << info.width << " x " << info.height
         << " cells; must be 1 to " << kMaxMapMessageCells << " cells";
   } else if (message.data.size() != static_cast<std::size_t>(cells)) {

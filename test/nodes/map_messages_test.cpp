@@ -68,6 +68,13 @@ TEST(MapMessages, a_map_that_cannot_be_one_is_refused_naming_the_field) {
               m.info.height = 100000;  // 10^10 cells, and data does not say otherwise
             }).rfind("info.width, info.height:", 0),
             0u);
+  // Found by map_message_fuzzer: the product of two such sizes overflowed a signed 64-bit count.
+  EXPECT_EQ(refusal([](auto& m) {
+              m.info.width = 4000000000u;
+              m.info.height = 4000000000u;
+            }),
+            "info.width, info.height: 4000000000 x 4000000000 cells; must be 1 to 100000000 "
+            "cells");
   EXPECT_EQ(refusal([](auto& m) {
               m.info.origin.orientation.z = std::sin(0.15);
               m.info.origin.orientation.w = std::cos(0.15);
