@@ -295,14 +295,16 @@ class RrtPlannerNode {
       *why = field + ".pose: must be finite";
       return std::nullopt;
     }
-    const std::string& frame = pose.header.frame_id;
-    if (frame.empty() || frame == frame_id_) {
+    // "/map" is "map" (ROS 1's tools read it so; tf2 would warn at every try while waiting).
+    const std::string frame = nodes::tfFrameId(pose.header.frame_id);
+    const std::string map_frame = nodes::tfFrameId(frame_id_);
+    if (frame.empty() || frame == map_frame) {
       return robot::Pose2D{p.x, p.y, nodes::quaternionToYaw(q)};
     }
     geometry_msgs::TransformStamped t;
     try {
       constexpr double kTransformWait = 0.5;  // s
-      t = tf_buffer_.lookupTransform(frame_id_, frame, ros::Time(0), ros::Duration(kTransformWait));
+      t = tf_buffer_.lookupTransform(map_frame, frame, ros::Time(0), ros::Duration(kTransformWait));
     } catch (const tf2::TransformException& e) {
       *why = field + ".header.frame_id: no transform from '" + frame + "' to '" + frame_id_ +
              "': " + e.what();
