@@ -98,6 +98,7 @@ class CoveragePlannerNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "coverage_planner");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   roomba_rrt::nodes::MasterWatch master_watch;
   try {

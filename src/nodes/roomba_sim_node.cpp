@@ -41,6 +41,7 @@
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
 #include "roomba_rrt/world/world_file.h"
+#include "shutdown_grace.h"
 #include "sim_ros.h"
 
 namespace roomba_rrt {
@@ -356,6 +357,7 @@ class RoombaSimNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "roomba_sim");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   const bool use_sim_time = ros::param::param("/use_sim_time", false);
   roomba_rrt::nodes::NodeParams params(pnh);

@@ -463,6 +463,7 @@ class RrtPlannerNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rrt_planner");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   roomba_rrt::nodes::MasterWatch master_watch;
   try {
