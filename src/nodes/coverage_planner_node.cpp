@@ -97,6 +97,12 @@ class CoveragePlannerNode {
 }  // namespace roomba_rrt::coverage_node
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "coverage_planner",
+                                     "Plans coverage paths: ~plan_coverage "
+                                     "(roomba_rrt/PlanCoverage), rows over all the floor the "
+                                     "robot's disc can reach.")) {
+    return 0;
+  }
   ros::init(argc, argv, "coverage_planner");
   roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");

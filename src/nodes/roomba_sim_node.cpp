@@ -356,6 +356,11 @@ class RoombaSimNode {
 }  // namespace roomba_rrt
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "roomba_sim",
+                                     "Simulates the Roomba(s) of ~world_file: cmd_vel in; odom, "
+                                     "bumper, tf, /map and markers out.")) {
+    return 0;
+  }
   ros::init(argc, argv, "roomba_sim");
   roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");

@@ -462,6 +462,11 @@ class RrtPlannerNode {
 }  // namespace roomba_rrt::planner_node
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "rrt_planner",
+                                     "Plans paths with RRT, RRT* and RRT-Connect: ~plan_path "
+                                     "(roomba_rrt/PlanPath), ~make_plan (nav_msgs/GetPlan).")) {
+    return 0;
+  }
   ros::init(argc, argv, "rrt_planner");
   roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
