@@ -9,6 +9,7 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/require.h"
@@ -243,13 +244,51 @@ MapFile loadMap(const std::string& yaml_path, long long max_cells) {
 }
 
 bool isMapYaml(const std::string& path) {
+  // Whether the first document's top level is a mapping with an `image` key, read from yaml-cpp's
+  // events: no node graph is built, so an alias (refused by loadMap, naming its line) is never
+  // followed. Leniently: a map with a mistake (a key twice, an alias) is still a map.
+  class ImageKey : public YAML::EventHandler {
+   public:
+    bool found = false;
+    void OnDocumentStart(const YAML::Mark&) override {}
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override { node(""); }
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override { node(""); }
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  const std::string& value) override {
+      node(value);
+    }
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {
+      ++depth_;
+    }
+    void OnSequenceEnd() override { end(); }
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {
+      if (depth_ == 0) top_is_map_ = true;
+      ++depth_;
+    }
+    void OnMapEnd() override { end(); }
+
+   private:
+    void node(const std::string& scalar) {  // a whole node ends at depth_
+      if (depth_ != 1 || !top_is_map_) return;
+      if (nodes_++ % 2 == 0 && scalar == "image") found = true;  // a key, not a value
+    }
+    void end() {
+      --depth_;
+      node("");
+    }
+    int depth_ = 0;
+    long nodes_ = 0;
+    bool top_is_map_ = false;
+  };
   try {
-    // Leniently: a map with a mistake (a key twice, say) is still a map, refused by loadMap.
-    // Aliases are not let into a node graph even here (the reader that follows refuses them).
-    const std::string text = util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file");
-    util::rejectAnchorsAndAliases(text);
-    const YAML::Node root = YAML::Load(text);
-    return root.IsMap() && root["image"];
+    std::istringstream in(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
+    YAML::Parser parser(in);
+    ImageKey image;
+    parser.HandleNextDocument(image);
+    return image.found;
   } catch (const std::exception&) {
     return false;
   }

@@ -209,6 +209,13 @@ TEST_F(MapFileTest, is_map_yaml_tells_a_map_from_a_world_file) {
   EXPECT_TRUE(isMapYaml(yaml("m.pgm")));
   EXPECT_FALSE(isMapYaml(write("world.yaml", "room: {width: 3, height: 3}\n")));
   EXPECT_FALSE(isMapYaml((dir_ / "missing.yaml").string()));
+  EXPECT_FALSE(isMapYaml(write("nested.yaml", "room: {image: m.pgm}\nlist: [image]\n")));
+  EXPECT_FALSE(isMapYaml(write("value.yaml", "name: image\n")));
+  EXPECT_FALSE(isMapYaml(write("list.yaml", "[image, 1]\n")));
+  EXPECT_TRUE(isMapYaml(write("late.yaml", "a: {b: [1, {c: 2}]}\nimage: m.pgm\n")));
+  // A map with an alias bomb is a map (which loadMap then refuses, naming the line), told at once.
+  EXPECT_TRUE(isMapYaml(write("bomb.yaml", "image: m.pgm\n" + roomba_rrt::test::aliasBomb(9))));
+  EXPECT_FALSE(isMapYaml(write("recursive.yaml", roomba_rrt::test::kRecursiveAlias)));
 }
 
 /// The real maps of ../shared/maps (not part of the package: skipped when absent, see
