@@ -19,7 +19,7 @@
 #include "../../src/nodes/map_messages.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
-#include "roomba_rrt/planning/scenarios.h"
+#include "roomba_rrt/planning/problem.h"
 #include "roomba_rrt/world/world.h"
 
 namespace {
