@@ -298,6 +298,10 @@ TEST(World, anchors_and_aliases_are_refused_naming_the_line) {
             "test.yaml: " + aliasRefusal(2, 5));
   EXPECT_EQ(errorFor("room: {width: 6.4, height: 4.8}\nrobot: {radius: &r 0.2}\n"),
             "test.yaml: " + aliasRefusal(2, 17));
+  // Found by world_fuzzer: a stray leading ',' made the alias check read empty documents for
+  // ever. yaml-cpp reads such a file as an empty document, as it did before the check: the
+  // defaults, which defaultsNotice() reports.
+  EXPECT_EQ(errorFor(",robot: {radius: 0.2}\n"), "");
 }
 
 // Issue 44, item 4: a key without a value meant 0 (a rectangle's min_y) or the default; a

@@ -20,9 +20,9 @@
 namespace roomba_rrt::util {
 
 /// Throws InvalidInput "line L, column C: an anchor (&name) or alias (*name) is not read; write
-/// the value out" at the first anchor or alias in `text`, reading it as a stream of events (in
-/// time linear in its length, whatever the aliases would expand to). A syntax error is
-/// InvalidInput "not valid YAML: ...".
+/// the value out" at the first anchor or alias in `text`'s first document, reading it as a stream
+/// of events (in time linear in its length, whatever the aliases would expand to). A syntax error
+/// is InvalidInput "not valid YAML: ...".
 inline void rejectAnchorsAndAliases(const std::string& text) {
   class Refuser : public YAML::EventHandler {
    public:
@@ -60,9 +60,10 @@ inline void rejectAnchorsAndAliases(const std::string& text) {
   std::istringstream in(text);
   Refuser refuser;
   try {
+    // The first document, the one YAML::Load reads. (Looping to the end is no option: on a
+    // stray token such as a leading ',' yaml-cpp hands out empty documents without moving on.)
     YAML::Parser parser(in);
-    while (parser.HandleNextDocument(refuser)) {
-    }
+    parser.HandleNextDocument(refuser);
   } catch (const YAML::Exception& e) {
     throw InvalidInput("", std::string("not valid YAML: ") + e.what());
   }
