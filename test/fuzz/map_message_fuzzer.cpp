@@ -143,6 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const roomba_rrt::planning::Problem problem = roomba_rrt::planning::mapProblem(grid);
   require(problem.map != nullptr, "rrt_planner's problem has the map");
   const roomba_rrt::world::World world = roomba_rrt::world::mapWorld(grid, 0.17);
-  require(std::isfinite(world.width) && std::isfinite(world.height), "a finite map world");
+  require(std::isfinite(world.room.width) && std::isfinite(world.room.height),
+          "a finite map world");
   return 0;
 }
