@@ -50,8 +50,9 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--json") == 0) {
       json = true;
     } else {
-      std::fprintf(stderr, "usage: fairness_probe [--requests 100] [--json]\n");
-      return 2;
+      const bool help = std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0;
+      std::fprintf(help ? stdout : stderr, "usage: fairness_probe [--requests 100] [--json]\n");
+      return help ? 0 : 2;
     }
   }
   ros::NodeHandle nh;

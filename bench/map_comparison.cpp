@@ -36,6 +36,7 @@
 #include "ompl_lab.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
+#include "usage.h"
 
 namespace {
 
@@ -300,10 +301,11 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
 // Command line.
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "map_comparison: " << error
-            << "\nusage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
-               " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n";
-  std::exit(2);
+  roomba_rrt::bench::exitWithUsage(
+      "map_comparison", error,
+      "usage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
+      " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n"
+      "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n");
 }
 
 int parseCount(const std::string& flag, const std::string& text) {
@@ -320,7 +322,9 @@ Config parseArgs(int argc, char** argv) {
       if (i + 1 >= argc) usage(arg + ": missing value");
       return argv[++i];
     };
-    if (arg == "--json") {
+    if (roomba_rrt::bench::isHelp(arg)) {
+      usage("");
+    } else if (arg == "--json") {
       cfg.json = true;
     } else if (arg == "--maps") {
       cfg.maps_dir = value();
@@ -354,6 +358,12 @@ int main(int argc, char** argv) {
   g_clock_overhead = clockOverhead();
 
   std::vector<std::string> files;
+  std::error_code error;
+  if (!std::filesystem::is_directory(cfg.maps_dir, error)) {
+    usage("--maps: '" + cfg.maps_dir + "' is not a directory (" +
+          (error ? error.message() : std::string("missing or a file")) +
+          "); the real maps are in shared/maps beside the repository");
+  }
   for (const auto& entry : std::filesystem::directory_iterator(cfg.maps_dir)) {
     const auto& p = entry.path();
     if (p.extension() == ".yaml" && (cfg.only_map.empty() || p.stem() == cfg.only_map)) {

@@ -33,6 +33,7 @@
 
 #include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/geometry/map_file.h"
+#include "usage.h"
 
 namespace {
 
@@ -125,9 +126,9 @@ struct Config {
 };
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "map_load_bench: " << error
-            << "\nusage: map_load_bench [--map FILE.yaml] [--factor K] [--reps N] [--json]\n";
-  std::exit(2);
+  roomba_rrt::bench::exitWithUsage(
+      "map_load_bench", error,
+      "usage: map_load_bench [--map FILE.yaml] [--factor K] [--reps N] [--json]\n");
 }
 
 Config parseArgs(int argc, char** argv) {
@@ -140,7 +141,9 @@ Config parseArgs(int argc, char** argv) {
       if (v < 1) usage(arg + ": expected a positive integer");
       return v;
     };
-    if (arg == "--json") {
+    if (roomba_rrt::bench::isHelp(arg)) {
+      usage("");
+    } else if (arg == "--json") {
       cfg.json = true;
     } else if (arg == "--map" && i + 1 < argc) {
       cfg.map = argv[++i];

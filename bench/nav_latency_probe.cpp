@@ -53,8 +53,9 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(argv[i], "--json")) {
       json = true;
     } else {
-      std::fprintf(stderr, "usage: nav_latency_probe [--goals N] [--json]\n");
-      return 2;
+      const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
+      std::fprintf(help ? stdout : stderr, "usage: nav_latency_probe [--goals N] [--json]\n");
+      return help ? 0 : 2;
     }
   }
   if (goals < 1) {

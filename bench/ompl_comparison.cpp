@@ -40,6 +40,7 @@
 
 #include "ompl_lab.h"
 #include "roomba_rrt/world_planning/room_problem.h"
+#include "usage.h"
 
 namespace {
 
@@ -316,13 +317,13 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
 // Command line.
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "ompl_comparison: " << error
-            << "\nusage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
-               " [--growth-reps N] [--scenarios FILE]\n"
-               "                       [--world FILE] [--room-runs N] [--room-iterations N]"
-               " [--room-only]\n"
-               "       ompl_comparison --plan-once ours|ompl [--iterations N]\n";
-  std::exit(2);
+  roomba_rrt::bench::exitWithUsage(
+      "ompl_comparison", error,
+      "usage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
+      " [--growth-reps N] [--scenarios FILE]\n"
+      "                       [--world FILE] [--room-runs N] [--room-iterations N]"
+      " [--room-only]\n"
+      "       ompl_comparison --plan-once ours|ompl [--iterations N]\n");
 }
 
 unsigned parseCount(const std::string& flag, const std::string& text) {
@@ -338,7 +339,9 @@ Config parseArgs(int argc, char** argv) {
       if (i + 1 >= argc) usage(arg + ": missing value");
       return argv[++i];
     };
-    if (arg == "--json") {
+    if (roomba_rrt::bench::isHelp(arg)) {
+      usage("");
+    } else if (arg == "--json") {
       cfg.json = true;
     } else if (arg == "--runs") {
       cfg.runs = static_cast<int>(parseCount(arg, value()));

@@ -23,6 +23,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/PlanPath.h>
+#include "usage.h"
 
 namespace {
 
@@ -36,10 +37,9 @@ struct Options {
 };
 
 [[noreturn]] void usage(const std::string& error) {
-  std::cerr << "plan_path_bench: " << error
-            << "\nusage: plan_path_bench [--calls N] [--warmup N] [--scenario NAME] "
-               "[--service NAME] [--no-markers] [--json]\n";
-  std::exit(2);
+  roomba_rrt::bench::exitWithUsage("plan_path_bench", error,
+                                   "usage: plan_path_bench [--calls N] [--warmup N] "
+                                   "[--scenario NAME] [--service NAME] [--no-markers] [--json]\n");
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -62,6 +62,8 @@ Options parseOptions(int argc, char** argv) {
       o.markers = false;
     } else if (arg == "--json") {
       o.json = true;
+    } else if (roomba_rrt::bench::isHelp(arg)) {
+      usage("");
     } else {
       usage("unknown argument " + arg);
     }

@@ -58,6 +58,12 @@ if(ROOMBA_RRT_SANITIZE)
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(plan_coverage_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
+  # A map as it arrives on /map: the nodes' conversion (src/nodes/map_messages.cpp), then what
+  # rrt_planner and coverage_planner build from it.
+  roomba_rrt_fuzzer(map_message_fuzzer src/nodes/map_messages.cpp)
+  target_include_directories(map_message_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
+  target_link_libraries(map_message_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
+
   # The planning unit tests on that library (scripts/fuzz --unit).
   if(TARGET planning_core_test)
     get_target_property(RR_PLANNING_TESTS planning_core_test SOURCES)

@@ -13,4 +13,5 @@ target_compile_definitions(roomba_node_common PRIVATE
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(map_messages_test test/nodes/map_messages_test.cpp LINK roomba_node_common ROS)
+  roomba_rrt_gtest(message_parts_test test/nodes/message_parts_test.cpp LINK roomba_geometry ROS)
 endif()

@@ -13,3 +13,10 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(tools_test test/tools/tools_test.cpp src/tools/coverage_arguments.cpp
     src/tools/coverage_statistics.cpp LINK roomba_tools)
 endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # Every executable answers --help (exit 0, without a master); a missing maps folder is named.
+  add_test(NAME help_test COMMAND bash ${PROJECT_SOURCE_DIR}/test/integration/help_test.bash)
+  set_tests_properties(help_test PROPERTIES ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}"
+    TIMEOUT 300)
+endif()

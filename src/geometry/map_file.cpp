@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include "roomba_rrt/geometry/map_image.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -156,9 +157,6 @@ void readYaml(const std::string& text, MapFile& map) {
                   : (std::filesystem::path(map.yaml).parent_path() / image).string();
 
   map.resolution = number(root, "resolution");
-  util::requireInRange("resolution", map.resolution, MapLimits::kMinResolution,
-                       MapLimits::kMaxResolution, "m");
-
   const YAML::Node origin = root["origin"];
   if (!origin.IsSequence() || (origin.size() != 2 && origin.size() != 3)) {
     throw InvalidInput("origin", "must be [x, y, yaw]");
@@ -171,13 +169,8 @@ void readYaml(const std::string& text, MapFile& map) {
     } catch (const YAML::Exception&) {
       throw InvalidInput(field, "must be a number");
     }
-    util::requireInRange(field, values[k], -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate,
-                         "m");
   }
-  if (values[2] != 0) {
-    throw InvalidInput("origin[2]", "a rotated map (yaw " + util::show(values[2]) +
-                                        ") is not supported; rotate the image and use yaw 0");
-  }
+  validateMapPlacement(map.resolution, values[0], values[1], values[2]);
   map.origin = {values[0], values[1]};
 
   if (root["negate"]) {
@@ -198,9 +191,26 @@ void readYaml(const std::string& text, MapFile& map) {
     throw InvalidInput("mode", "only 'trinary' is read (free, occupied, unknown), got '" +
                                    root["mode"].Scalar() + "'");
   }
+  // map_server refuses a file without these (its defaults are not the user's choice).
+  for (const char* key : {"negate", "occupied_thresh", "free_thresh"}) {
+    if (!root[key]) throw InvalidInput(key, "is missing; map_server requires it");
+  }
 }
 
 }  // namespace
+
+void validateMapPlacement(double resolution, double x, double y, double rotation,
+                          const MapFieldNames& names) {
+  util::requireInRange(names.resolution, resolution, MapLimits::kMinResolution,
+                       MapLimits::kMaxResolution, "m");
+  util::requireInRange(names.x, x, -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate, "m");
+  util::requireInRange(names.y, y, -MapLimits::kMaxCoordinate, MapLimits::kMaxCoordinate, "m");
+  if (!(std::abs(rotation) <= 1e-6)) {
+    throw InvalidInput(names.rotation, "a rotated map (by " + util::show(rotation) +
+                                           " rad) is not supported; rotate the image and use "
+                                           "yaw 0");
+  }
+}
 
 std::int8_t trinaryValue(double average, bool negate, double occupied_thresh, double free_thresh) {
   if (negate) average = 255.0 - average;
@@ -227,11 +237,51 @@ MapFile loadMap(const std::string& yaml_path, long long max_cells) {
 }
 
 bool isMapYaml(const std::string& path) {
+  // Whether the first document's top level is a mapping with an `image` key, read from yaml-cpp's
+  // events: no node graph is built, so an alias (refused by loadMap, naming its line) is never
+  // followed. Leniently: a map with a mistake (a key twice, an alias) is still a map.
+  class ImageKey : public YAML::EventHandler {
+   public:
+    bool found = false;
+    void OnDocumentStart(const YAML::Mark&) override {}
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override { node(""); }
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override { node(""); }
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  const std::string& value) override {
+      node(value);
+    }
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {
+      ++depth_;
+    }
+    void OnSequenceEnd() override { end(); }
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {
+      if (depth_ == 0) top_is_map_ = true;
+      ++depth_;
+    }
+    void OnMapEnd() override { end(); }
+
+   private:
+    void node(const std::string& scalar) {  // a whole node ends at depth_
+      if (depth_ != 1 || !top_is_map_) return;
+      if (nodes_++ % 2 == 0 && scalar == "image") found = true;  // a key, not a value
+    }
+    void end() {
+      --depth_;
+      node("");
+    }
+    int depth_ = 0;
+    long nodes_ = 0;
+    bool top_is_map_ = false;
+  };
   try {
-    // Leniently: a map with a mistake (a key twice, say) is still a map, refused by loadMap.
-    const YAML::Node root =
-        YAML::Load(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
-    return root.IsMap() && root["image"];
+    std::istringstream in(util::readTextFile(path, MapLimits::kMaxYamlBytes, "map file"));
+    YAML::Parser parser(in);
+    ImageKey image;
+    parser.HandleNextDocument(image);
+    return image.found;
   } catch (const std::exception&) {
     return false;
   }

@@ -3,6 +3,7 @@
 #include "master_watch.h"
 #include "message_parts.h"
 #include "reconfigure.h"
+#include "shutdown_grace.h"
 #include "tree_watch.h"
 
 #include <geometry_msgs/Twist.h>
@@ -194,6 +195,7 @@ std::string robotFrame(const std::string& frame) {
 int runBehaviorNode(int argc, char** argv, const std::string& node_name,
                     const BehaviorMaker& make_behavior, const std::string& tree_nodes_model) {
   ros::init(argc, argv, node_name);
+  stopOnSigterm();
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
   MasterWatch master_watch;

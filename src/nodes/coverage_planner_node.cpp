@@ -97,7 +97,14 @@ class CoveragePlannerNode {
 }  // namespace roomba_rrt::coverage_node
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "coverage_planner",
+                                     "Plans coverage paths: ~plan_coverage "
+                                     "(roomba_rrt/PlanCoverage), rows over all the floor the "
+                                     "robot's disc can reach.")) {
+    return 0;
+  }
   ros::init(argc, argv, "coverage_planner");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   roomba_rrt::nodes::MasterWatch master_watch;
   try {

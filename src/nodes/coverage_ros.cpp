@@ -86,12 +86,13 @@ nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::stri
   for (const coverage::Leg& leg : plan.legs) {
     for (std::size_t k = 0; k < leg.points.size(); ++k) {
       const coverage::Point2& p = leg.points[k];
-      const bool joins = !points.empty() && points.back().x == p.x && points.back().y == p.y;
-      if (k == 0 && leg.kind == coverage::Leg::Kind::kRow && row_starts) {
-        row_starts->push_back(
-            static_cast<std::uint32_t>(joins ? points.size() - 1 : points.size()));
+      if (!points.empty() && points.back().x == p.x && points.back().y == p.y) continue;
+      points.push_back(p);
+      // Each segment a row adds is marked at its first pose; a row of no length adds none, so
+      // it marks nothing (marking the pose before it would name the transit after it a row).
+      if (k > 0 && leg.kind == coverage::Leg::Kind::kRow && row_starts) {
+        row_starts->push_back(static_cast<std::uint32_t>(points.size() - 2));
       }
-      if (!joins) points.push_back(p);
     }
   }
   nav_msgs::Path path;

@@ -38,7 +38,7 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
 
 /// The plan's legs as one path in `frame_id`: each transit's and row's points in order (the
 /// point where one leg meets the next once), each pose facing along the path; `row_starts` gets
-/// the index of each row's first pose.
+/// the index of the first pose of each segment of a row (a row of no length has none).
 nav_msgs::Path toPathMessage(const coverage::CoveragePlan& plan, const std::string& frame_id,
                              const ros::Time& stamp, std::vector<std::uint32_t>* row_starts);
 

@@ -1,9 +1,12 @@
 #include "map_messages.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "message_parts.h"
+#include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::nodes {
 
@@ -28,28 +31,45 @@ nav_msgs::MapMetaData toMapMetaData(const geometry::OccupancyGrid& grid, const r
   return info;
 }
 
+namespace {
+
+/// The angle (rad) a quaternion turns by about any axis, roll and pitch included: 0 for the
+/// identity and for an unset quaternion (all 0), NaN when a component is not finite.
+double rotationAngle(const geometry_msgs::Quaternion& q) {
+  for (const double c : {q.x, q.y, q.z, q.w}) {
+    if (!std::isfinite(c)) return NAN;
+  }
+  const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), std::abs(q.w)});
+  if (largest == 0) return 0;
+  const double x = q.x / largest, y = q.y / largest, z = q.z / largest, w = q.w / largest;
+  return 2 * std::atan2(std::sqrt(x * x + y * y + z * z), std::abs(w));
+}
+
+}  // namespace
+
 std::string fromMapMessage(const nav_msgs::OccupancyGrid& message, geometry::OccupancyGrid* grid) {
   const nav_msgs::MapMetaData& info = message.info;
   std::ostringstream why;
   const double resolution = info.resolution;
   const double x = info.origin.position.x, y = info.origin.position.y;
-  const auto& q = info.origin.orientation;
-  const long long cells = static_cast<long long>(info.width) * info.height;
-  if (!(std::isfinite(resolution) && resolution > 0)) {
-    why << "info.resolution: must be a finite number > 0, got " << resolution;
-  } else if (!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e6 || std::abs(y) > 1e6) {
-    why << "info.origin.position: must be finite and within 1e6 m, got (" << x << ", " << y << ")";
-  } else if (info.width == 0 || info.height == 0 || cells > kMaxMapMessageCells) {
+  // Two uint32 multiply to at most 2^64 - 2^33 + 1: unsigned, so 4e9 x 4e9 does not overflow.
+  const unsigned long long cells = static_cast<unsigned long long>(info.width) * info.height;
+  try {
+    // The checks a map file gets (map_file.h), spelled as the message's fields.
+    static const geometry::MapFieldNames kNames{"info.resolution", "info.origin.position.x",
+                                                "info.origin.position.y",
+                                                "info.origin.orientation"};
+    geometry::validateMapPlacement(resolution, x, y, rotationAngle(info.origin.orientation),
+                                   kNames);
+  } catch (const util::InvalidInput& e) {
+    return e.what();
+  }
+  if (info.width == 0 || info.height == 0 ||
+      cells > static_cast<unsigned long long>(kMaxMapMessageCells)) {
     why << "info.width, info.height: " << info.width << " x " << info.height
         << " cells; must be 1 to " << kMaxMapMessageCells << " cells";
   } else if (message.data.size() != static_cast<std::size_t>(cells)) {
     why << "data: " << message.data.size() << " cells for " << info.width << " x " << info.height;
-  } else {
-    // A yaw other than 0 (a rotated map) is refused; an unset quaternion (all 0) reads as none.
-    const double yaw = quaternionToYaw(q);
-    if (!(std::abs(yaw) < 1e-6) || !std::isfinite(q.w)) {
-      why << "info.origin.orientation: a rotated map (yaw " << yaw << " rad) is not supported";
-    }
   }
   if (!why.str().empty()) return why.str();
   grid->width = static_cast<int>(info.width);

@@ -97,6 +97,14 @@ inline visualization_msgs::Marker outline(const geometry::Rectangle& box,
   return base;
 }
 
+/// A frame id as tf2 takes it: ROS 1 tools read "/map" as "map", tf2 refuses a leading '/' and
+/// warns about it on every lookup (unthrottled, some ten lines per request), so the slashes are
+/// dropped before comparing frames or asking tf2.
+inline std::string tfFrameId(const std::string& frame_id) {
+  const std::size_t first = frame_id.find_first_not_of('/');
+  return first == std::string::npos ? std::string() : frame_id.substr(first);
+}
+
 /// A rotation by `yaw` about z.
 inline geometry_msgs::Quaternion yawToQuaternion(double yaw) {
   geometry_msgs::Quaternion q;

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "behavior_node.h"
+#include "message_parts.h"
 #include "nav_ros.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
@@ -228,12 +229,12 @@ class NavBehavior final : public behavior::RoombaBehavior {
   std::string toGlobal(const geometry_msgs::PoseStamped& goal, robot::Pose2D& out) {
     std::string problem = poseProblem(goal.pose);
     if (!problem.empty()) return problem;
-    const std::string& frame = goal.header.frame_id;
+    const std::string frame = nodes::tfFrameId(goal.header.frame_id);  // "/map" is "map"
     if (frame.empty()) {
       return "target_pose.header.frame_id: empty (use '" + settings_.global_frame + "')";
     }
     geometry_msgs::Pose pose = goal.pose;
-    if (frame != settings_.global_frame && frame != "/" + settings_.global_frame) {
+    if (frame != settings_.global_frame) {
       geometry_msgs::TransformStamped t;
       try {
         t = buffer_.lookupTransform(settings_.global_frame, frame, ros::Time(0));
@@ -329,8 +330,9 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
       node_params.get<std::string>("world_file", nodes::packageConfigFile("roomba_world.yaml"));
   s.world = world::loadWorld(world_file, world::PoseSource::kElsewhere);  // the pose comes from tf
   s.clearance = finiteParam(node_params, "clearance", navigation::kDefaultClearance, 0.0);
-  s.global_frame = node_params.get<std::string>("global_frame", s.global_frame);
-  s.robot_frame = node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame));
+  s.global_frame = nodes::tfFrameId(node_params.get<std::string>("global_frame", s.global_frame));
+  s.robot_frame = nodes::tfFrameId(
+      node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame)));
   const std::string planner = node_params.get<std::string>("planner", "service");
   const std::string service =
       node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");

@@ -3,6 +3,7 @@
 #include <ros/package.h>
 
 #include <algorithm>
+#include <iostream>
 #include <sstream>
 
 namespace roomba_rrt::nodes {
@@ -199,6 +200,18 @@ std::string packageConfigFile(const std::string& file_name) {
   const std::string package = ros::package::getPath("roomba_rrt");
   if (package.empty()) return std::string(ROOMBA_RRT_CONFIG_DIR) + "/" + file_name;
   return package + "/config/" + file_name;
+}
+
+bool printedHelp(int argc, char** argv, const std::string& node, const std::string& what) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << "Usage: rosrun roomba_rrt " << node << " [_param:=value ...]\n"
+                << what << "\nParameters, topics and services: doc/nodes.md (" << node << ").\n";
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace roomba_rrt::nodes

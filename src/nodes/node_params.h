@@ -58,4 +58,9 @@ class NodeParams {
 /// ROS_PACKAGE_PATH).
 std::string packageConfigFile(const std::string& file_name);
 
+/// When an argument is --help or -h: prints "Usage: rosrun roomba_rrt <node> [_param:=value
+/// ...]", `what` and where its parameters are documented, and returns true (the node then exits
+/// 0, before ros::init, which would wait for a master).
+bool printedHelp(int argc, char** argv, const std::string& node, const std::string& what);
+
 }  // namespace roomba_rrt::nodes

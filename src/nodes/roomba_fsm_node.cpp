@@ -3,6 +3,11 @@
 #include "roomba_rrt/behavior/roomba_fsm.h"
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "roomba_fsm",
+                                     "The lab's Roomba behaviour as a finite state machine: "
+                                     "bumper and odom in, cmd_vel out.")) {
+    return 0;
+  }
   using roomba_rrt::behavior::RoombaFsm;
   return roomba_rrt::nodes::runBehaviorNode(
       argc, argv, "roomba_fsm",

@@ -41,6 +41,7 @@
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
 #include "roomba_rrt/world/world_file.h"
+#include "shutdown_grace.h"
 #include "sim_ros.h"
 
 namespace roomba_rrt {
@@ -355,7 +356,13 @@ class RoombaSimNode {
 }  // namespace roomba_rrt
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "roomba_sim",
+                                     "Simulates the Roomba(s) of ~world_file: cmd_vel in; odom, "
+                                     "bumper, tf, /map and markers out.")) {
+    return 0;
+  }
   ros::init(argc, argv, "roomba_sim");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   const bool use_sim_time = ros::param::param("/use_sim_time", false);
   roomba_rrt::nodes::NodeParams params(pnh);

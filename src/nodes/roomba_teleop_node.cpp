@@ -87,6 +87,11 @@ void show(const std::string& line) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "roomba_teleop",
+                                     "Drives the Roomba from the keyboard: cmd_vel out, the "
+                                     "bumper shown.")) {
+    return 0;
+  }
   ros::init(argc, argv, "roomba_teleop", ros::init_options::NoSigintHandler);
   ros::NodeHandle nh, pnh("~");
   roomba_rrt::nodes::NodeParams params(pnh);

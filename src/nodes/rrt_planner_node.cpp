@@ -295,14 +295,16 @@ class RrtPlannerNode {
       *why = field + ".pose: must be finite";
       return std::nullopt;
     }
-    const std::string& frame = pose.header.frame_id;
-    if (frame.empty() || frame == frame_id_) {
+    // "/map" is "map" (ROS 1's tools read it so; tf2 would warn at every try while waiting).
+    const std::string frame = nodes::tfFrameId(pose.header.frame_id);
+    const std::string map_frame = nodes::tfFrameId(frame_id_);
+    if (frame.empty() || frame == map_frame) {
       return robot::Pose2D{p.x, p.y, nodes::quaternionToYaw(q)};
     }
     geometry_msgs::TransformStamped t;
     try {
       constexpr double kTransformWait = 0.5;  // s
-      t = tf_buffer_.lookupTransform(frame_id_, frame, ros::Time(0), ros::Duration(kTransformWait));
+      t = tf_buffer_.lookupTransform(map_frame, frame, ros::Time(0), ros::Duration(kTransformWait));
     } catch (const tf2::TransformException& e) {
       *why = field + ".header.frame_id: no transform from '" + frame + "' to '" + frame_id_ +
              "': " + e.what();
@@ -460,7 +462,13 @@ class RrtPlannerNode {
 }  // namespace roomba_rrt::planner_node
 
 int main(int argc, char** argv) {
+  if (roomba_rrt::nodes::printedHelp(argc, argv, "rrt_planner",
+                                     "Plans paths with RRT, RRT* and RRT-Connect: ~plan_path "
+                                     "(roomba_rrt/PlanPath), ~make_plan (nav_msgs/GetPlan).")) {
+    return 0;
+  }
   ros::init(argc, argv, "rrt_planner");
+  roomba_rrt::nodes::stopOnSigterm();
   ros::NodeHandle pnh("~");
   roomba_rrt::nodes::MasterWatch master_watch;
   try {

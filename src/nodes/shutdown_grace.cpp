@@ -1,5 +1,7 @@
 #include "shutdown_grace.h"
 
+#include <csignal>
+
 #include <chrono>
 #include <cstdlib>
 #include <thread>
@@ -7,6 +9,13 @@
 #include <ros/ros.h>
 
 namespace roomba_rrt::nodes {
+
+void stopOnSigterm() {
+  struct sigaction action {};
+  action.sa_handler = [](int) { ros::requestShutdown(); };  // what roscpp's SIGINT handler does
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGTERM, &action, nullptr);
+}
 
 void spinWithShutdownGrace(unsigned threads, const MasterWatch& watch, const std::string& node) {
   ros::AsyncSpinner spinner(threads);

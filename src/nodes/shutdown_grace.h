@@ -9,6 +9,12 @@
 
 namespace roomba_rrt::nodes {
 
+/// Makes SIGTERM (what `timeout`, systemd and roslaunch's escalation send) stop the node as
+/// SIGINT (Ctrl-C) does, through ros::requestShutdown(): the same cleanup (the parameters the
+/// node wrote removed from the master), where the default action would end the process at once
+/// with exit code 143. Call right after ros::init().
+void stopOnSigterm();
+
 /// Seconds a running callback may delay the exit after shutdown.
 constexpr double kShutdownGrace = 0.5;
 

@@ -35,16 +35,15 @@ struct Job {
   rp::MonteCarloStats stats;
 };
 
-void printUsage() {
-  std::cerr << "usage: rrt_monte_carlo --scenario a|b|c|d|all [--runs 200] [--seed 42] [--json]\n"
-            << "       rrt_monte_carlo --map FILE --start X,Y --goal X,Y [--runs 200] ...\n"
-            << tools::commonFlagsHelp()
-            << "  --runs N                 runs per scenario (default 200)\n"
-            << "  --threads N              worker threads (default: all cores)\n"
-            << "  --world FILE, --map FILE one query in a world file's room or on a map_server\n"
-            << "                           map (the Roomba's radius), from --start X,Y to\n"
-            << "                           --goal X,Y, instead of the lab's scenarios\n"
-            << "  --json                   print a JSON array instead of a table\n";
+void printUsage(std::ostream& out) {
+  out << "usage: rrt_monte_carlo --scenario a|b|c|d|all [--runs 200] [--seed 42] [--json]\n"
+      << "       rrt_monte_carlo --map FILE --start X,Y --goal X,Y [--runs 200] ...\n"
+      << tools::commonFlagsHelp() << "  --runs N                 runs per scenario (default 200)\n"
+      << "  --threads N              worker threads (default: all cores)\n"
+      << "  --world FILE, --map FILE one query in a world file's room or on a map_server\n"
+      << "                           map (the Roomba's radius), from --start X,Y to\n"
+      << "                           --goal X,Y, instead of the lab's scenarios\n"
+      << "  --json                   print a JSON array instead of a table\n";
 }
 
 // A number for JSON: NaN (e.g. std of fewer than two values) becomes null.
@@ -101,7 +100,7 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i < argc; ++i) {
       if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-        printUsage();
+        printUsage(std::cout);
         return 0;
       }
     }
@@ -133,7 +132,7 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& e) {
     std::cerr << "rrt_monte_carlo: " << e.what() << "\n";
-    printUsage();
+    printUsage(std::cerr);
     return 2;
   }
 

@@ -213,7 +213,7 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i < argc; ++i) {
       if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-        std::cerr << "usage: rrt_plot --scenario a [--goal-bias P] [--seed S] -o file.png\n"
+        std::cout << "usage: rrt_plot --scenario a [--goal-bias P] [--seed S] -o file.png\n"
                   << "       rrt_plot --world config/roomba_world_furnished.yaml --start 3.2,2.4"
                      " --goal 3.0,4.55 -o room.png\n"
                   << tools::commonFlagsHelp()

@@ -27,10 +27,13 @@ using util::member;
 }
 
 /// A YAML mapping read key by key, naming every value by its path ("robot.radius",
-/// "furniture.circles[2].x"); finish() rejects the keys nobody asked for (typos).
+/// "furniture.circles[2].x"); finish() rejects the keys nobody asked for (typos). A key that is
+/// absent keeps its default; a key that is present must have a value (`min_y:` or `min_y: ~`
+/// is refused naming it, not read as 0 or as the default).
 class Section {
  public:
   Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
+    if (node_ && node_.IsNull() && !path_.empty()) fail(path_, "has no value; give a mapping");
     if (node_ && !node_.IsNull() && !node_.IsMap()) fail(name(""), "must be a mapping");
   }
   void finish() const {
@@ -46,16 +49,22 @@ class Section {
   YAML::Node child(const std::string& key) {
     known_.insert(key);
     const YAML::Node& node = node_;  // const: a lookup must not insert the key
-    return node && node.IsMap() ? node[key] : YAML::Node();
+    return node && node.IsMap() ? node[key] : YAML::Node(YAML::NodeType::Undefined);
   }
   void read(const std::string& key, double& value) {
     const YAML::Node item = child(key);
-    if (!item || item.IsNull()) return;  // missing or empty: keep the default
+    if (!item) return;  // missing: keep the default
+    if (item.IsNull()) fail(name(key), "has no value; give a number or remove the key");
     try {
       value = item.as<double>();
     } catch (const YAML::Exception&) {
       fail(name(key), "must be a number, got '" + YAML::Dump(item) + "'");
     }
+  }
+  /// read(), for a value that has no default (a piece of furniture's coordinates).
+  void need(const std::string& key, double& value) {
+    if (!child(key)) fail(name(key), "is missing");
+    read(key, value);
   }
 
  private:
@@ -67,7 +76,8 @@ class Section {
 template <typename Item, typename ReadItem>
 void readList(Section& parent, const std::string& key, std::vector<Item>& items, ReadItem read) {
   const YAML::Node list = parent.child(key);
-  if (!list || list.IsNull()) return;
+  if (!list) return;
+  if (list.IsNull()) fail(parent.name(key), "has no value; give a list or remove the key");
   if (!list.IsSequence()) fail(parent.name(key), "must be a list");
   if (list.size() > WorldLimits::kMaxFurniture) {
     fail(parent.name(key), "has " + std::to_string(list.size()) + " entries; at most " +
@@ -139,15 +149,15 @@ WorldFile readWorld(const YAML::Node& root, const std::string& source) {
   {
     Section furniture(top.child("furniture"), "furniture");
     readList(furniture, "circles", world.room.circles, [](Section& s, Circle& c) {
-      s.read("x", c.center.x);
-      s.read("y", c.center.y);
-      s.read("radius", c.radius);
+      s.need("x", c.center.x);
+      s.need("y", c.center.y);
+      s.need("radius", c.radius);
     });
     readList(furniture, "rectangles", world.room.rectangles, [](Section& s, Rectangle& b) {
-      s.read("min_x", b.min_x);
-      s.read("min_y", b.min_y);
-      s.read("max_x", b.max_x);
-      s.read("max_y", b.max_y);
+      s.need("min_x", b.min_x);
+      s.need("min_y", b.min_y);
+      s.need("max_x", b.max_x);
+      s.need("max_y", b.max_y);
     });
     furniture.finish();
   }

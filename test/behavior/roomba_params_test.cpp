@@ -1,6 +1,7 @@
 // The behaviour parameters: lab defaults, the YAML file, and errors that name the field.
 #include <gtest/gtest.h>
 
+#include "../common/hostile_yaml.h"
 #include "roomba_rrt/behavior/roomba_params.h"
 
 namespace roomba_rrt::behavior {
@@ -54,6 +55,15 @@ TEST(RoombaParams, errors_name_the_source_and_the_field) {
   EXPECT_EQ(errorOf("forward_speed: 0.3\nforward_speed: 0.4\n"),
             "test.yaml: forward_speed: is given twice (lines 1 and 2); a mapping holds one "
             "value per key");
+}
+
+// Issue 44, item 1: a behaviour config with aliases is refused at once, naming the line.
+TEST(RoombaParams, anchors_and_aliases_are_refused_naming_the_line) {
+  using roomba_rrt::test::aliasRefusal;
+  EXPECT_EQ(errorOf("forward_speed: &s 0.3\n"), "test.yaml: " + aliasRefusal(1, 16));
+  EXPECT_EQ(errorOf("rate: 10\n" + roomba_rrt::test::aliasBomb(9)),
+            "test.yaml: " + aliasRefusal(2, 5));
+  EXPECT_EQ(errorOf(roomba_rrt::test::kRecursiveAlias), "test.yaml: " + aliasRefusal(1, 7));
 }
 
 // Issue 11: a rate of 1e9 froze the node, 1e308 flooded /cmd_vel, 1e-300 died with a message

@@ -2,11 +2,12 @@
 """coverage_planner's ~plan_coverage through a real master (test/coverage/plan_coverage.test)."""
 import math
 import threading
+import time
 import unittest
 
 import rospy
 import rosunit
-from nav_msgs.msg import Path
+from nav_msgs.msg import OccupancyGrid, Path
 from roomba_rrt.srv import PlanCoverage, PlanCoverageRequest
 from visualization_msgs.msg import MarkerArray
 
@@ -82,15 +83,42 @@ class PlanCoverageTest(unittest.TestCase):
         self.assertTrue(drawn())
 
     def test_the_map_on_slash_map_is_planned(self):
+        r = self.plan_on_the_map()
+        self.assertTrue(r.success, r.message)
+        # The apartment's rooms lie on both sides of x = 0; the furnished room only at x >= 0.
+        self.assertTrue(any(p.pose.position.x < -1.0 for p in r.path.poses))
+        self.assertGreater(r.unreachable_area, 0)
+
+    def plan_on_the_map(self):
         r = self.plan(request(0.0, 0.0, world="map"))
         deadline = rospy.get_time() + 20
         while r.message.startswith("world: no map") and rospy.get_time() < deadline:
             rospy.sleep(0.2)  # roomba_sim has not published it yet
             r = self.plan(request(0.0, 0.0, world="map"))
+        return r
+
+    def test_unusable_maps_on_slash_map_never_replace_the_one_in_force(self):
+        # Issue 44, item 3: a resolution of 1e-30 replaced the map, and every plan then failed.
+        self.assertTrue(self.plan_on_the_map().success)
+        publisher = rospy.Publisher("/map", OccupancyGrid, queue_size=10)
+        deadline = rospy.get_time() + 10
+        while publisher.get_num_connections() == 0 and rospy.get_time() < deadline:
+            rospy.sleep(0.1)
+        self.assertGreater(publisher.get_num_connections(), 0)
+        for resolution, roll in [(1e-30, 0.0), (3e38, 0.0), (0.05, 0.5)]:
+            bad = OccupancyGrid()
+            bad.header.frame_id = "map"
+            bad.info.resolution = resolution
+            bad.info.width, bad.info.height = 3, 2
+            bad.info.origin.orientation.x = math.sin(roll / 2)
+            bad.info.origin.orientation.w = math.cos(roll / 2)
+            bad.data = [0] * 6
+            publisher.publish(bad)
+        time.sleep(1.0)  # wall time for the node to take (and refuse) them
+        r = self.plan(request(0.0, 0.0, world="map"))
         self.assertTrue(r.success, r.message)
-        # The apartment's rooms lie on both sides of x = 0; the furnished room only at x >= 0.
-        self.assertTrue(any(p.pose.position.x < -1.0 for p in r.path.poses))
-        self.assertGreater(r.unreachable_area, 0)
+        self.assertTrue(any(p.pose.position.x < -1.0 for p in r.path.poses))  # the apartment
+        publisher.unregister()
 
     def test_bad_requests_name_their_field_and_the_node_plans_on(self):
         for bad, field in [(request(1.3, 3.5), "start"),  # in the round table

@@ -8,6 +8,7 @@
 #include <fuzzer/FuzzedDataProvider.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -144,10 +145,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(q.z) && std::isfinite(q.w),
             "a non-finite pose in the path");
   }
+  double rows = 0;  // each row start's segment, which the contract says is a row
   for (std::size_t i = 0; i < r.row_starts.size(); ++i) {
     require(r.row_starts[i] + 1 < r.path.poses.size(), "a row start beyond the path");
     require(i == 0 || r.row_starts[i] > r.row_starts[i - 1], "row starts out of order");
+    const auto& a = r.path.poses[r.row_starts[i]].pose.position;
+    const auto& b = r.path.poses[r.row_starts[i] + 1].pose.position;
+    rows += std::hypot(b.x - a.x, b.y - a.y);
   }
+  require(std::abs(rows - r.row_length) <= 1e-6 * std::max(1.0, r.row_length),
+          "the row starts' segments are not row_length long (a transit named a row)");
   require(std::isfinite(r.length) && std::isfinite(r.reachable_area) && r.reachable_area > 0,
           "a non-finite length or area");
   std::size_t row_points = 0;  // what rviz draws: the rows' ends

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/hostile_yaml.h"
 #include "../common/shared_maps.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -147,23 +148,44 @@ TEST_F(MapFileTest, every_bad_map_is_refused_naming_the_file_and_the_field) {
     const std::string error = errorOf(file);
     EXPECT_EQ(error.rfind(file + ": " + expected, 0), 0u) << error;
   };
-  const std::string ok = "resolution: 0.5\norigin: [0, 0, 0]\n";
+  const std::string place = "resolution: 0.5\norigin: [0, 0, 0]\n";
+  const std::string ok = place + "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
   refused("image: none.pgm\n" + ok, "image: '" + (dir_ / "none.pgm").string() + "' does not exist");
   refused("image: m.pgm\nresolution: 0\norigin: [0, 0, 0]\n",
           "resolution: must be in [0.0001, 100] m, got 0");
   refused("image: m.pgm\nresolution: -1\norigin: [0, 0, 0]\n", "resolution: must be in");
   refused("image: m.pgm\nresolution: abc\norigin: [0, 0, 0]\n", "resolution: must be a number");
-  refused("image: m.pgm\n" + ok + "occupied_thresh: 1.5\n", "occupied_thresh: must be in [0, 1]");
-  refused("image: m.pgm\n" + ok + "free_thresh: -0.1\n", "free_thresh: must be in [0, 1]");
-  refused("image: m.pgm\n" + ok + "occupied_thresh: 0.3\nfree_thresh: 0.3\n",
+  refused("image: m.pgm\n" + place + "occupied_thresh: 1.5\n",
+          "occupied_thresh: must be in [0, 1]");
+  refused("image: m.pgm\n" + place + "free_thresh: -0.1\n", "free_thresh: must be in [0, 1]");
+  refused("image: m.pgm\n" + place + "occupied_thresh: 0.3\nfree_thresh: 0.3\n",
           "free_thresh: must be below occupied_thresh (0.3), got 0.3");
   refused("image: m.pgm\nresolution: 0.5\norigin: [0, 0, 0.5]\n", "origin[2]: a rotated map");
   refused("image: m.pgm\nresolution: 0.5\norigin: [0, .nan, 0]\n", "origin[1]: must be in");
-  refused("image: m.pgm\n" + ok + "negate: 2\n", "negate: must be 0 or 1, got 2");
+  refused("image: m.pgm\n" + place + "negate: 2\n", "negate: must be 0 or 1, got 2");
+  // Issue 44, item 3: what map_server requires, and where it lies, as for a message on /map.
+  refused("image: m.pgm\n" + place + "negate: 0\noccupied_thresh: 0.65\n",
+          "free_thresh: is missing; map_server requires it");
+  refused("image: m.pgm\n" + place + "occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+          "negate: is missing; map_server requires it");
+  refused("image: m.pgm\n" + place + "negate: 0\nfree_thresh: 0.196\n",
+          "occupied_thresh: is missing; map_server requires it");
+  refused("image: m.pgm\n" + place + "negate: 0\noccupied_thresh: 0.65\nfree_thresh: ~\n",
+          "free_thresh: must be a number");
+  refused("image: m.pgm\nresolution: 1e-30\norigin: [0, 0, 0]\n",
+          "resolution: must be in [0.0001, 100] m, got 1e-30");
+  refused("image: m.pgm\nresolution: 0.5\norigin: [0, 2e6, 0]\n",
+          "origin[1]: must be in [-1e+06, 1e+06] m, got 2e+06");
   refused("image: m.pgm\n" + ok + "mode: scale\n", "mode: only 'trinary' is read");
   refused("image: m.pgm\n" + ok + "resolutoin: 0.1\n", "resolutoin: is not a map_server key");
-  refused("image: m.pgm\n" + ok + "image: n.pgm\n", "image: is given twice (lines 1 and 4)");
+  refused("image: m.pgm\n" + ok + "image: n.pgm\n", "image: is given twice (lines 1 and 7)");
   refused("resolution: 0.5\norigin: [0, 0, 0]\n", "image: is missing");
+  // Issue 44: a valid map plus an alias bomb kept the tools busy for 70 minutes.
+  refused("image: m.pgm\n" + ok + roomba_rrt::test::aliasBomb(9),
+          roomba_rrt::test::aliasRefusal(7, 5));
+  refused("image: m.pgm\nresolution: &r 0.5\norigin: [0, 0, 0]\n",
+          roomba_rrt::test::aliasRefusal(2, 13));
+  refused(roomba_rrt::test::kRecursiveAlias, roomba_rrt::test::aliasRefusal(1, 7));
   refused("image: m.pgm\nresolution: 0.5\n", "origin: is missing");
   // Images: truncated, not an image, a header claiming too many pixels (refused before decoding).
   write("short.pgm", "P5\n4 4\n255\nabc");
@@ -187,6 +209,13 @@ TEST_F(MapFileTest, is_map_yaml_tells_a_map_from_a_world_file) {
   EXPECT_TRUE(isMapYaml(yaml("m.pgm")));
   EXPECT_FALSE(isMapYaml(write("world.yaml", "room: {width: 3, height: 3}\n")));
   EXPECT_FALSE(isMapYaml((dir_ / "missing.yaml").string()));
+  EXPECT_FALSE(isMapYaml(write("nested.yaml", "room: {image: m.pgm}\nlist: [image]\n")));
+  EXPECT_FALSE(isMapYaml(write("value.yaml", "name: image\n")));
+  EXPECT_FALSE(isMapYaml(write("list.yaml", "[image, 1]\n")));
+  EXPECT_TRUE(isMapYaml(write("late.yaml", "a: {b: [1, {c: 2}]}\nimage: m.pgm\n")));
+  // A map with an alias bomb is a map (which loadMap then refuses, naming the line), told at once.
+  EXPECT_TRUE(isMapYaml(write("bomb.yaml", "image: m.pgm\n" + roomba_rrt::test::aliasBomb(9))));
+  EXPECT_FALSE(isMapYaml(write("recursive.yaml", roomba_rrt::test::kRecursiveAlias)));
 }
 
 /// The real maps of ../shared/maps (not part of the package: skipped when absent, see

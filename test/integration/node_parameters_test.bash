@@ -51,8 +51,9 @@ refuses "~max_linear_speed: must be a number, got 'x' (a string)" roomba_teleop 
 
 # An unknown private parameter is warned about, with the nearest known name; the values in force
 # are on the master while the node runs (rosparam get) and gone after it stops, unless the user
-# set them.
-warns_and_writes_back() {  # NODE PARAMS...: runs NODE for 3 s
+# set them: after SIGINT, and after SIGTERM (signal=TERM; issue 44: a node killed by it exited
+# 143 and left them, read by the next start as the user's).
+warns_and_writes_back() {  # NODE PARAMS...: runs NODE for 3 s, then sends it SIG${signal:-INT}
   local node=$1
   shift
   rosparam delete "/$node" 2>/dev/null || true
@@ -61,8 +62,12 @@ warns_and_writes_back() {  # NODE PARAMS...: runs NODE for 3 s
   for _ in $(seq 50); do rosparam get "/$node/$probe" >/dev/null 2>&1 && break; sleep 0.1; done
   local value
   value=$(rosparam get "/$node/$probe" 2>/dev/null || echo unset)
-  kill -INT "$pid"
-  wait "$pid" || true
+  local sig=${signal:-INT} rc=0
+  kill -"$sig" "$pid"
+  wait "$pid" || rc=$?
+  if [ "$rc" -ge 128 ]; then
+    say "FAIL: $node died of SIG$sig (exit $rc) instead of stopping"; failures=$((failures + 1))
+  fi
   if [ "$value" = "$expected" ]; then
     say "ok: $node shows ~$probe = $value while running"
   else
@@ -92,6 +97,13 @@ probe=rate expected=60.0 warning="~sed is not a parameter of this node (did you 
 probe=goal_bias expected=0.1 warning="~stepp is not a parameter of this node (did you mean ~step?)" \
   warns_and_writes_back rrt_planner _stepp:=0.3
 probe=clearance expected=0.01 warning="~clearence is not a parameter of this node (did you mean ~clearance?)" \
+  warns_and_writes_back coverage_planner _clearence:=0.02
+probe=room/width expected=6.4 warning="~real_time_factr" signal=TERM \
+  warns_and_writes_back roomba_sim _real_time_factr:=2
+probe=rate expected=60.0 warning="~sed" signal=TERM warns_and_writes_back roomba_fsm _sed:=3
+probe=rate expected=60.0 warning="~sed" signal=TERM warns_and_writes_back roomba_bt _sed:=3
+probe=goal_bias expected=0.1 warning="~stepp" signal=TERM warns_and_writes_back rrt_planner _stepp:=0.3
+probe=clearance expected=0.01 warning="~clearence" signal=TERM \
   warns_and_writes_back coverage_planner _clearence:=0.02
 
 # A map whose initial pose is a wall (a map's (0, 0) often is): roomba_sim refuses it, but

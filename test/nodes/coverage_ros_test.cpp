@@ -8,7 +8,9 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -46,6 +48,28 @@ void expectDrivable(const world::World& w, const nav_msgs::Path& path, double ra
   }
 }
 
+// The service's contract for rows: each row_starts[i] names a pose whose next pose ends that row
+// (in order, one segment each), and those segments add up to row_length; every other segment is
+// a transit, adding up to length - row_length.
+void expectRowsAsAnswered(const PlanCoverage::Response& r) {
+  std::vector<bool> row(r.path.poses.size(), false);
+  for (std::size_t i = 0; i < r.row_starts.size(); ++i) {
+    if (i > 0) {
+      ASSERT_GT(r.row_starts[i], r.row_starts[i - 1]);
+    }
+    ASSERT_LT(r.row_starts[i] + 1, r.path.poses.size());
+    row[r.row_starts[i]] = true;
+  }
+  double rows = 0, transits = 0;
+  for (std::size_t k = 0; k + 1 < r.path.poses.size(); ++k) {
+    const auto& a = r.path.poses[k].pose.position;
+    const auto& b = r.path.poses[k + 1].pose.position;
+    (row[k] ? rows : transits) += std::hypot(b.x - a.x, b.y - a.y);
+  }
+  EXPECT_NEAR(rows, r.row_length, 1e-6);
+  EXPECT_NEAR(transits, r.length - r.row_length, 1e-6);
+}
+
 TEST(CoverageRos, the_furnished_room_is_covered_by_rows_a_disc_can_drive) {
   const CoverageDefaults d = furnished();
   const PlanCoverage::Response r = planCoverage(from(1.0, 1.0), d, ros::Time(5));
@@ -76,18 +100,54 @@ TEST(CoverageRos, the_furnished_room_is_covered_by_rows_a_disc_can_drive) {
   }
   EXPECT_NEAR(length, r.length, 1e-6);
   ASSERT_GT(r.row_starts.size(), 10u);
-  double rows = 0;
   for (std::size_t i = 0; i < r.row_starts.size(); ++i) {
-    if (i > 0) {
-      EXPECT_GT(r.row_starts[i], r.row_starts[i - 1]);
-    }
-    ASSERT_LT(r.row_starts[i] + 1, r.path.poses.size());
     const auto& a = r.path.poses[r.row_starts[i]].pose.position;
     const auto& b = r.path.poses[r.row_starts[i] + 1].pose.position;
     EXPECT_NEAR(a.y, b.y, 1e-9) << "row " << i << " runs along x";
-    rows += std::hypot(b.x - a.x, b.y - a.y);
   }
-  EXPECT_NEAR(rows, r.row_length, 1e-6);
+  expectRowsAsAnswered(r);
+}
+
+// Issue 44, item 2: a row of no length (both ends one point) was marked at the point before it,
+// so the transit that followed was answered as a row (7.853 m of rows for row_length 6.968).
+TEST(CoverageRos, a_row_of_no_length_marks_no_transit_as_a_row) {
+  PlanCoverage::Request request = from(3.2, 2.4);
+  request.robot_radius = 1.0;
+  request.swath = 0.34;
+  const PlanCoverage::Response r = planCoverage(request, furnished(), ros::Time(1));
+  ASSERT_TRUE(r.success) << r.message;
+  expectRowsAsAnswered(r);
+
+  coverage::CoveragePlan plan;
+  using Kind = coverage::Leg::Kind;
+  plan.legs = {{Kind::kRow, {{0, 0}, {1, 0}}},
+               {Kind::kTransit, {{1, 0}, {1, 1}}},
+               {Kind::kRow, {{1, 1}, {1, 1}}},  // no length
+               {Kind::kTransit, {{1, 1}, {0, 2}}},
+               {Kind::kRow, {{0, 2}, {2, 2}}}};
+  std::vector<std::uint32_t> starts;
+  const nav_msgs::Path path = toPathMessage(plan, "map", ros::Time(1), &starts);
+  ASSERT_EQ(path.poses.size(), 5u);
+  EXPECT_EQ(starts, (std::vector<std::uint32_t>{0, 3}));
+}
+
+// Issue 44, item 2, over random requests in the furnished room: radii, swaths and starts.
+TEST(CoverageRos, rows_answered_are_the_plans_rows_for_random_requests) {
+  const CoverageDefaults d = furnished();
+  std::mt19937 random(44);
+  std::uniform_real_distribution<double> x(0.1, 6.3), y(0.1, 4.7), unit(0, 1);
+  int planned = 0;
+  for (int i = 0; i < 60; ++i) {
+    PlanCoverage::Request request = from(x(random), y(random));
+    request.robot_radius = 0.1 + 0.9 * unit(random);
+    request.swath = 0.05 + (2 * request.robot_radius - 0.05) * unit(random);
+    const PlanCoverage::Response r = planCoverage(request, d, ros::Time(1));
+    if (!r.success) continue;  // a start inside the furniture, say
+    ++planned;
+    SCOPED_TRACE("request " + std::to_string(i));
+    expectRowsAsAnswered(r);
+  }
+  EXPECT_GT(planned, 20);
 }
 
 TEST(CoverageRos, rviz_draws_the_rows_and_the_transits_apart) {

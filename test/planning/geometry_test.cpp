@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "../common/hostile_yaml.h"
+
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/geometry.h"
 #include "roomba_rrt/planning/lab/matlab_random.h"
@@ -83,6 +85,19 @@ TEST(Scenarios, a_malformed_file_is_an_error_naming_the_field) {
     EXPECT_EQ(std::string(e.what()), path +
                                          ": scenarios.x: is given twice (lines 2 and 3); a "
                                          "mapping holds one value per key");
+  }
+  // Issue 44: an alias bomb is refused at its first anchor.
+  f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs(
+      ("scenarios:\n  x: {start: [1, 1], goal: [2, 2]}\n" + roomba_rrt::test::aliasBomb(9)).c_str(),
+      f);
+  std::fclose(f);
+  try {
+    loadScenarios(path);
+    FAIL() << "an alias bomb was read";
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": " + roomba_rrt::test::aliasRefusal(3, 5));
   }
 }
 

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "../common/hostile_yaml.h"
+
 using roomba_rrt::world::loadWorld;
 using roomba_rrt::world::parseWorld;
 using roomba_rrt::world::World;
@@ -284,6 +286,51 @@ TEST(World, a_key_given_twice_is_refused_naming_it_and_both_lines) {
   EXPECT_EQ(errorFor("furniture:\n  circles:\n    - {x: 1, y: 1, radius: 0.2, x: 2}\n"),
             "test.yaml: furniture.circles[0].x: is given twice (lines 3 and 3); a mapping holds "
             "one value per key");
+}
+
+// Issue 44, item 1: an alias made the nodes a cycle (SIGSEGV after 12 s) or a billion leaves
+// (70 min for 9 levels); both are refused at the anchor, before anything walks the nodes.
+TEST(World, anchors_and_aliases_are_refused_naming_the_line) {
+  using roomba_rrt::test::aliasBomb;
+  using roomba_rrt::test::aliasRefusal;
+  EXPECT_EQ(errorFor(roomba_rrt::test::kRecursiveAlias), "test.yaml: " + aliasRefusal(1, 7));
+  EXPECT_EQ(errorFor("room: {width: 6.4, height: 4.8}\n" + aliasBomb(9)),
+            "test.yaml: " + aliasRefusal(2, 5));
+  EXPECT_EQ(errorFor("room: {width: 6.4, height: 4.8}\nrobot: {radius: &r 0.2}\n"),
+            "test.yaml: " + aliasRefusal(2, 17));
+  // Found by world_fuzzer: a stray leading ',' made the alias check read empty documents for
+  // ever. yaml-cpp reads such a file as an empty document, as it did before the check: the
+  // defaults, which defaultsNotice() reports.
+  EXPECT_EQ(errorFor(",robot: {radius: 0.2}\n"), "");
+}
+
+// Issue 44, item 4: a key without a value meant 0 (a rectangle's min_y) or the default; a
+// furniture piece without a coordinate ran with 0.
+TEST(World, a_key_present_needs_a_value_and_furniture_every_coordinate) {
+  EXPECT_EQ(errorFor("furniture:\n  rectangles:\n    - {min_x: 1, max_x: 2, max_y: 2}\n"),
+            "test.yaml: furniture.rectangles[0].min_y: is missing");
+  EXPECT_EQ(errorFor("furniture:\n  rectangles:\n    - {min_x: 1, min_y: null, max_x: 2, "
+                     "max_y: 2}\n"),
+            "test.yaml: furniture.rectangles[0].min_y: has no value; give a number or remove the "
+            "key");
+  EXPECT_EQ(errorFor("furniture: {circles: [{x: 1, y: 1, radius: ~}]}\n"),
+            "test.yaml: furniture.circles[0].radius: has no value; give a number or remove the "
+            "key");
+  EXPECT_EQ(errorFor("furniture: {circles: [{x: 1, radius: 0.2}]}\n"),
+            "test.yaml: furniture.circles[0].y: is missing");
+  EXPECT_EQ(errorFor("robot:\n  radius:\n"),
+            "test.yaml: robot.radius: has no value; give a number or remove the key");
+  EXPECT_EQ(errorFor("step: ~\n"),
+            "test.yaml: step: has no value; give a number or remove the key");
+  EXPECT_EQ(errorFor("room:\n"), "test.yaml: room: has no value; give a mapping");
+  EXPECT_EQ(errorFor("furniture: {circles: [~]}\n"),
+            "test.yaml: furniture.circles[0]: has no value; give a mapping");
+  EXPECT_EQ(errorFor("furniture: {rectangles: }\n"),
+            "test.yaml: furniture.rectangles: has no value; give a list or remove the key");
+  EXPECT_EQ(errorFor("robots:\n  - {name: a, initial_pose: ~}\n"),
+            "test.yaml: robots[0].initial_pose: has no value; give a mapping");
+  // Absent keys keep their defaults, as before.
+  EXPECT_EQ(errorFor("robot: {radius: 0.2}\n"), "");
 }
 
 TEST(World, a_file_that_sets_no_section_says_which_defaults_it_runs_with) {

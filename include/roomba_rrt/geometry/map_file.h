@@ -33,6 +33,23 @@ struct MapLimits {
   static constexpr double kMaxCoordinate = 1e6;        ///< |origin| ≤ this, m
 };
 
+/// How a map's source spells the fields validateMapPlacement() names: a map file's keys by
+/// default; a nav_msgs/OccupancyGrid's "info.resolution", "info.origin.position.x", ...
+struct MapFieldNames {
+  std::string resolution = "resolution";
+  std::string x = "origin[0]";
+  std::string y = "origin[1]";
+  std::string rotation = "origin[2]";
+};
+
+/// The one check of where a map lies, whichever way it comes (a map_server file, or a message on
+/// /map), as strict as map_server: a resolution in [kMinResolution, kMaxResolution] m, an origin
+/// within kMaxCoordinate m, and no rotation (`rotation`, rad: the yaw of a file's origin, the
+/// angle of a message's quaternion; a rotated map is refused, not read as an unrotated one).
+/// Throws util::InvalidInput naming the field as `names` spells it.
+void validateMapPlacement(double resolution, double x, double y, double rotation,
+                          const MapFieldNames& names = {});
+
 /// A map_server YAML and the grid it describes.
 struct MapFile {
   std::string yaml;   ///< the YAML file as given
@@ -47,11 +64,12 @@ struct MapFile {
 
 /// Reads a map_server YAML and its image. Throws util::InvalidInput naming the file and the
 /// field: a YAML that is not a small readable file or not a mapping, an unknown or repeated key,
-/// a missing or non-numeric `image`, `resolution` or `origin`, a resolution outside
-/// [1e-4, 100] m, an origin that is not finite or has a yaw other than 0, `negate` other than
-/// 0 or 1, thresholds outside [0, 1] or free_thresh ≥ occupied_thresh, a `mode` other than
-/// trinary; an image that is missing, unreadable, truncated, not PGM or PNG, or has more than
-/// `max_cells` pixels (checked from its header, before any pixel is decoded).
+/// an anchor or alias, a key map_server requires missing (`image`, `resolution`, `origin`,
+/// `negate`, `occupied_thresh`, `free_thresh`; `mode` is optional), a non-numeric value, a
+/// placement validateMapPlacement() refuses, `negate` other than 0 or 1, thresholds outside
+/// [0, 1] or free_thresh ≥ occupied_thresh, a `mode` other than trinary; an image that is missing,
+/// unreadable, truncated, not PGM or PNG, or has more than `max_cells` pixels (checked from its
+/// header, before any pixel is decoded).
 MapFile loadMap(const std::string& yaml_path, long long max_cells = MapLimits::kMaxCells);
 
 /// Whether `path` looks like a map_server YAML (it has an `image:` key at the top level): what

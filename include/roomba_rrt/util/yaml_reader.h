@@ -2,16 +2,72 @@
 // A key given twice in one mapping is valid YAML to yaml-cpp, which keeps the first value and
 // says nothing; so a world file with `robot:` twice (the second with a misspelt `radious:`)
 // would run with the first and hide the mistake from the "unknown keys are errors" rule.
+// Anchors (&name) and aliases (*name) are refused before the text becomes nodes: none of our
+// files needs them, and an alias makes a node graph, not a tree, so a recursive alias
+// (`room: &r {self: *r}`) or a few lines of aliases of aliases (a billion leaves) would keep
+// anything that walks the nodes busy for hours or recurse until the stack is gone.
 #pragma once
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::util {
+
+/// Throws InvalidInput "line L, column C: an anchor (&name) or alias (*name) is not read; write
+/// the value out" at the first anchor or alias in `text`'s first document, reading it as a stream
+/// of events (in time linear in its length, whatever the aliases would expand to). A syntax error
+/// is InvalidInput "not valid YAML: ...".
+inline void rejectAnchorsAndAliases(const std::string& text) {
+  class Refuser : public YAML::EventHandler {
+   public:
+    void OnDocumentStart(const YAML::Mark&) override {}
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { check(mark, anchor); }
+    void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { refuse(mark); }
+    void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                  const std::string&) override {
+      check(mark, anchor);
+    }
+    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                         YAML::EmitterStyle::value) override {
+      check(mark, anchor);
+    }
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                    YAML::EmitterStyle::value) override {
+      check(mark, anchor);
+    }
+    void OnMapEnd() override {}
+    void OnAnchor(const YAML::Mark& mark, const std::string&) override { refuse(mark); }
+
+   private:
+    static void check(const YAML::Mark& mark, YAML::anchor_t anchor) {
+      if (anchor != YAML::NullAnchor) refuse(mark);
+    }
+    [[noreturn]] static void refuse(const YAML::Mark& mark) {
+      throw InvalidInput("", "line " + std::to_string(mark.line + 1) + ", column " +
+                                 std::to_string(mark.column + 1) +
+                                 ": an anchor (&name) or alias (*name) is not read; write the "
+                                 "value out");
+    }
+  };
+  std::istringstream in(text);
+  Refuser refuser;
+  try {
+    // The first document, the one YAML::Load reads. (Looping to the end is no option: on a
+    // stray token such as a leading ',' yaml-cpp hands out empty documents without moving on.)
+    YAML::Parser parser(in);
+    parser.HandleNextDocument(refuser);
+  } catch (const YAML::Exception& e) {
+    throw InvalidInput("", std::string("not valid YAML: ") + e.what());
+  }
+}
 
 /// Throws InvalidInput naming the key (its path, see member()) and both lines, e.g.
 /// "robot: is given twice (lines 1 and 3); a mapping holds one value per key", when a mapping
@@ -36,8 +92,10 @@ inline void rejectDuplicateKeys(const YAML::Node& node, const std::string& path 
   }
 }
 
-/// YAML::Load, then rejectDuplicateKeys(). A syntax error is InvalidInput "not valid YAML: ...".
+/// rejectAnchorsAndAliases(), YAML::Load, then rejectDuplicateKeys(). A syntax error is
+/// InvalidInput "not valid YAML: ...".
 inline YAML::Node parseYaml(const std::string& text) {
+  rejectAnchorsAndAliases(text);
   YAML::Node root;
   try {
     root = YAML::Load(text);
