@@ -3,6 +3,7 @@
 
 add_library(rrt_planning
   src/planning/brute_force_nearest_neighbors.cpp
+  src/planning/densify.cpp
   src/planning/free_point_near.cpp
   src/planning/grid_nearest_neighbors.cpp
   src/planning/monte_carlo.cpp
