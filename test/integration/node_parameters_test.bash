@@ -37,6 +37,7 @@ refuses "~pose_latency: must be in [0, 1] s, got 5" roomba_bt _pose_latency:=5 \
 refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1
+refuses "~plan_resolution: must be in [0, 10] m, got -1" rrt_planner _plan_resolution:=-1
 refuses "~clearance: must be in [0, 0.17] m, got -1" coverage_planner _clearance:=-1
 refuses "~robot_radius: must be in [0.001, 10] m, got 0" coverage_planner _robot_radius:=0
 refuses "not a regular file" coverage_planner _world_file:=/tmp
