@@ -16,7 +16,8 @@
 // rrt_planner: a goal to each robot's /<name>/move_base at the same time, and each robot reaches
 // its own goal.
 //
-// NavMap (nav_map.test): a map world, roomba_sim publishing /map and rrt_planner planning on it:
+// NavMap (nav_map.test): a map world, roomba_sim publishing /map and rrt_planner (no world file)
+// planning on it, roomba_bt asking for its plans in the planner's scenario map:
 // ~make_plan between rooms (every edge checked against the map file here, not by the planner's
 // checker; a pose every map cell), a goal in a wall relaxed only by the request's tolerance, and a
 // goal in another room reached through the doorway without a bump.
