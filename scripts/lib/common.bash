@@ -104,6 +104,7 @@ rr_run_logged() {
   # meanwhile stops the whole build (kill -TERM -- -$RR_LOGGED_PID) instead of leaving it running.
   setsid "$@" >"$log" 2>&1 &
   pid=$!
+  # shellcheck disable=SC2034  # read by scripts/run's cleanup
   RR_LOGGED_PID=$pid
   if [ -t 2 ]; then
     while kill -0 "$pid" 2>/dev/null; do
@@ -117,6 +118,7 @@ rr_run_logged() {
   fi
   rc=0
   wait "$pid" || rc=$?
+  # shellcheck disable=SC2034
   RR_LOGGED_PID=
   if [ $rc -ne 0 ]; then
     grep -E -B2 -A8 'error|Error|ERROR' "$log" | head -n 80 >&2 || tail -n 40 "$log" >&2

@@ -91,6 +91,7 @@ f = open(sys.argv[1], "w"); fcntl.lockf(f, fcntl.LOCK_EX); time.sleep(30)' "$wor
   holder=$!
   started+=("$holder")
   sleep 0.5
+  # shellcheck disable=SC2034  # rr_install_deps reads them
   (RR_ROOT=$work RR_PACKAGES=(no-such-package)
   export RR_DPKG_LOCK=$work/dpkg_lock FAKE_CALLS=$work/calls PATH=$fake:$PATH
   : >"$work/calls"
