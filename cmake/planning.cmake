@@ -3,6 +3,7 @@
 
 add_library(rrt_planning
   # the planning query and what every planner shares (include/roomba_rrt/planning/)
+  src/planning/densify.cpp
   src/planning/free_point_near.cpp
   src/planning/path_smoothing.cpp
   src/planning/plan_result.cpp
@@ -47,7 +48,7 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/matlab_random_test.cpp test/planning/nearest_neighbors_test.cpp
     test/planning/rrt_test.cpp test/planning/algorithms_test.cpp test/planning/validate_test.cpp
     test/planning/robustness_test.cpp test/planning/room_test.cpp
-    test/planning/map_planning_test.cpp LINK roomba_world_planning)
+    test/planning/map_planning_test.cpp test/planning/densify_test.cpp LINK roomba_world_planning)
 endif()
 
 # planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.
@@ -86,7 +87,8 @@ if(CATKIN_ENABLE_TESTING)
       concurrent_clients:rrt_planner_concurrency_test
       animation:rrt_planner_animation_test
       hostile_requests:rrt_planner_hostile_test
-      room:rrt_planner_room_test)
+      room:rrt_planner_room_test
+      make_plan:rrt_planner_make_plan_test)
     string(REPLACE ":" ";" planner_node_test ${planner_node_test})
     list(GET planner_node_test 0 launch_name)
     list(GET planner_node_test 1 test_target)

@@ -61,7 +61,7 @@ if(CATKIN_ENABLE_TESTING)
   add_test(NAME scripts_run_test
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/scripts_run_test.bash)
   set_tests_properties(scripts_run_test PROPERTIES
-    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 240)
+    ENVIRONMENT "RR_DEVEL=${CATKIN_DEVEL_PREFIX}" TIMEOUT 420)
   # scripts/run's rviz view on a map: whole when small, zoomed in on the robot when large.
   add_test(NAME rviz_map_view_test
     COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/integration/rviz_map_view_test.py)

@@ -60,14 +60,40 @@ rr_install_deps() {
   [ "$(id -u)" -ne 0 ] && sudo=sudo
   mkdir -p "$RR_ROOT/build"
   rr_log "installing ${#missing[@]} missing Debian packages (with what they pull in; a few minutes on a fresh machine; log: ${log#"$RR_ROOT"/})"
-  if ! { $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq &&
-    $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q \
+  # Another apt-get (unattended-upgrades on a fresh machine at boot) may hold dpkg's lock: wait
+  # for it instead of failing at once.
+  if rr_dpkg_locked; then
+    rr_log "another apt-get or unattended-upgrades holds the dpkg lock: waiting for it (up to $((RR_APT_LOCK_WAIT / 60)) min)"
+  fi
+  local wait_lock=(-o "DPkg::Lock::Timeout=$RR_APT_LOCK_WAIT")
+  if ! { $sudo env DEBIAN_FRONTEND=noninteractive apt-get "${wait_lock[@]}" update -qq &&
+    $sudo env DEBIAN_FRONTEND=noninteractive apt-get "${wait_lock[@]}" install -y -q \
       "${missing[@]}"; } >"$log" 2>&1; then
     tail -n 30 "$log" >&2
     rr_log "apt-get failed; the whole output is in $log"
     return 1
   fi
   rr_log "installed in $((SECONDS - t0)) s"
+  RR_INSTALLED=1  # rr_build configures again: find_package may find what was missing
+}
+
+# Seconds apt-get waits for dpkg's lock held by another apt-get.
+RR_APT_LOCK_WAIT=${RR_APT_LOCK_WAIT:-600}
+
+# rr_dpkg_locked: another process holds dpkg's front-end lock (a read-only probe of its fcntl
+# lock, as apt takes it; false when the lock file is absent or cannot be read).
+rr_dpkg_locked() {
+  /usr/bin/python3 - "${RR_DPKG_LOCK:-/var/lib/dpkg/lock-frontend}" 2>/dev/null <<'PY'
+import fcntl, struct, sys
+try:
+    f = open(sys.argv[1], "rb")
+except OSError:
+    sys.exit(1)
+# F_GETLK: who would block a write lock on the whole file (apt's lock is a write lock).
+probe = struct.pack("hhqqi", fcntl.F_WRLCK, 0, 0, 0, 0)
+sys.exit(0 if struct.unpack("hhqqi", fcntl.fcntl(f, fcntl.F_GETLK, probe))[0] != fcntl.F_UNLCK
+         else 1)
+PY
 }
 
 # rr_run_logged LOG DESCRIPTION COMMAND...: run a build command with its output in LOG; on a
@@ -76,8 +102,12 @@ rr_install_deps() {
 rr_run_logged() {
   local log=$1 what=$2 pid rc pct=""
   shift 2
-  "$@" >"$log" 2>&1 &
+  # In a process group of its own (setsid), in RR_LOGGED_PID while it runs: a script stopped
+  # meanwhile stops the whole build (kill -TERM -- -$RR_LOGGED_PID) instead of leaving it running.
+  setsid "$@" >"$log" 2>&1 &
   pid=$!
+  # shellcheck disable=SC2034  # read by scripts/run's cleanup
+  RR_LOGGED_PID=$pid
   if [ -t 2 ]; then
     while kill -0 "$pid" 2>/dev/null; do
       pct=$(grep -o '^\[ *[0-9]*%\]' "$log" 2>/dev/null | tail -n 1 | tr -d '[] ')
@@ -90,6 +120,8 @@ rr_run_logged() {
   fi
   rc=0
   wait "$pid" || rc=$?
+  # shellcheck disable=SC2034
+  RR_LOGGED_PID=
   if [ $rc -ne 0 ]; then
     grep -E -B2 -A8 'error|Error|ERROR' "$log" | head -n 80 >&2 || tail -n 40 "$log" >&2
     rr_log "$what failed; the whole output is in $log"
@@ -100,15 +132,26 @@ rr_run_logged() {
 # rr_build [BUILD_DIR] [BUILD_TYPE]: configure and build the package; sets RR_BUILD and RR_DEVEL.
 # The catkin devel space (nodes, tools, setup.bash) goes to devel/ beside build/, not inside it:
 # rosrun ignores every executable below <package>/build/, and the package is the repository root.
-# RR_BUILD_TESTS=0 skips the test executables. Output goes to build/build.log.
+# RR_BUILD_TESTS=0 skips the test executables. Output goes to build/build.log. CMake's configure
+# (half a minute) runs only when the build directory was not configured with these arguments,
+# lacks what a configure leaves, or packages were just installed: the build itself configures
+# again when a CMakeLists.txt or cmake/*.cmake changed.
 rr_build() {
   RR_BUILD=${1:-$RR_ROOT/build}
   RR_DEVEL=${RR_DEVEL:-$RR_ROOT/devel}
   local type=${2:-Release} t0=$SECONDS
+  local args=(-S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type"
+    -DCATKIN_DEVEL_PREFIX="$RR_DEVEL" -DPYTHON_EXECUTABLE=/usr/bin/python3
+    -DCATKIN_ENABLE_TESTING=ON)
+  local stamp="$RR_BUILD/configure.args"
   mkdir -p "$RR_BUILD"
-  rr_run_logged "$RR_BUILD/configure.log" "configuring ($type)" \
-    cmake -S "$RR_ROOT" -B "$RR_BUILD" -DCMAKE_BUILD_TYPE="$type" -DCATKIN_DEVEL_PREFIX="$RR_DEVEL" \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON || return 1
+  if [ -n "${RR_INSTALLED:-}" ] || [ ! -f "$RR_BUILD/CMakeCache.txt" ] ||
+    [ ! -f "$RR_BUILD/Makefile" ] || [ ! -f "$RR_DEVEL/setup.bash" ] ||
+    [ "$(cat "$stamp" 2>/dev/null)" != "${args[*]}" ]; then
+    rm -f "$stamp"
+    rr_run_logged "$RR_BUILD/configure.log" "configuring ($type)" cmake "${args[@]}" || return 1
+    printf '%s' "${args[*]}" >"$stamp"
+  fi
   rr_run_logged "$RR_BUILD/build.log" "building nodes and tools" \
     cmake --build "$RR_BUILD" -j"$(nproc)" || return 1
   # catkin builds test executables only through its `tests` target.
@@ -168,6 +211,8 @@ rr_master_online() { /usr/bin/python3 -c 'import rosgraph,sys; sys.exit(0 if ros
 # (its publications, subscriptions and services are then known). Non-zero after TIMEOUT seconds.
 rr_wait_nodes() {
   /usr/bin/python3 - "$@" <<'PY'
+import signal  # Ctrl-C: no traceback (unless ignored, as in a background job)
+signal.getsignal(signal.SIGINT) is signal.SIG_IGN or signal.signal(signal.SIGINT, signal.SIG_DFL)
 import sys, time, rosgraph
 timeout, wanted = float(sys.argv[1]), set(sys.argv[2:])
 master, deadline = rosgraph.Master("/roomba_rrt_scripts"), time.time() + timeout
@@ -189,6 +234,8 @@ PY
 # when none (or no master answers).
 rr_registered_nodes() {
   /usr/bin/python3 - "$@" <<'PY'
+import signal  # Ctrl-C: no traceback (unless ignored, as in a background job)
+signal.getsignal(signal.SIGINT) is signal.SIG_IGN or signal.signal(signal.SIGINT, signal.SIG_DFL)
 import socket, sys, xmlrpc.client, rosgraph
 master = rosgraph.Master("/roomba_rrt_scripts")
 try:

@@ -143,9 +143,11 @@ class BehaviorNode {
     state_pub_.publish(msg);
 
     // Stamp 0: the robot's latest transform, every frame (frame_locked), so the text follows it.
+    // Black: readable on the robot's blue, on the floor not yet cleaned and on the near-white
+    // floor the robot has cleaned (white text vanished there).
     visualization_msgs::Marker marker =
         makeMarker(base_frame_, ros::Time(0), ros::this_node::getName(), 0,
-                   visualization_msgs::Marker::TEXT_VIEW_FACING, color(1.0f, 1.0f, 1.0f));
+                   visualization_msgs::Marker::TEXT_VIEW_FACING, color(0.0f, 0.0f, 0.0f));
     marker.frame_locked = true;
     marker.pose.position.z = 0.45;  // a little above the robot
     marker.scale.z = 0.2;           // text height, m

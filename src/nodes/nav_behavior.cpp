@@ -44,14 +44,14 @@ struct Settings {
 /// after a failed call (rrt_planner restarted). Runs on the planner's worker thread.
 class PlanPathClient {
  public:
-  PlanPathClient(std::string service, double clearance, planning::PlannerOptions options)
-      : service_(std::move(service)), clearance_(clearance), options_(std::move(options)) {}
+  PlanPathClient(std::string service, PlanTarget target, planning::PlannerOptions options)
+      : service_(std::move(service)), target_(std::move(target)), options_(std::move(options)) {}
 
   navigation::PlanReply operator()(const planning::Point2& start, const planning::Point2& goal,
                                    std::uint32_t seed) {
     if (!client_.isValid()) client_ = ros::NodeHandle().serviceClient<PlanPath>(service_, true);
     PlanPath srv;
-    srv.request = planRequest(start, goal, seed, clearance_, options_);
+    srv.request = planRequest(start, goal, seed, target_, options_);
     if (!client_.call(srv)) {
       client_.shutdown();
       navigation::PlanReply reply;
@@ -64,7 +64,7 @@ class PlanPathClient {
 
  private:
   std::string service_;
-  double clearance_;
+  PlanTarget target_;                 ///< the planner's scenario and the robot
   planning::PlannerOptions options_;  ///< step, iterations, tolerance of every request
   ros::ServiceClient client_;
 };
@@ -344,10 +344,10 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   if (planner == "in_process") {
     s.config = navigation::inProcessNavConfig(world, options);
   } else if (planner == "service") {
-    const double clearance = s.clearance;
-    s.config.planners = [world, options, service, clearance] {
+    const PlanTarget target = planTarget(s.world, s.clearance);
+    s.config.planners = [world, options, service, target] {
       return std::make_unique<InProcessPlanner>(world, options, InProcessPlanner::Mode::kThread,
-                                                PlanPathClient(service, clearance, options));
+                                                PlanPathClient(service, target, options));
     };
     InProcessPlanner::validate(world, options);
     s.config.known_world = std::make_shared<navigation::PathChecker>(world);
@@ -375,8 +375,17 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   f.yaw_tolerance = finiteParam(node_params, "yaw_tolerance", f.yaw_tolerance, L::kMin);
   navigation::validate(f);
   node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
+  // Which of the planner's worlds the plans are asked in: a planner on another world answers
+  // "start ... is outside the bounds" to every goal, so the user is told what it must have.
+  std::string asks;
+  if (planner == "service") {
+    asks = planTarget(s.world, s.clearance).scenario == "map"
+               ? " (" + service + ", scenario map: the map on the planner's ~map_topic)"
+               : " (" + service + ", scenario room: the planner's ~world_file must be " +
+                     world_file + ")";
+  }
   ROS_INFO("roomba_bt: navigation in %s, planner %s%s", world_file.c_str(), planner.c_str(),
-           planner == "service" ? (" (" + service + ")").c_str() : "");
+           asks.c_str());
   return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
 }
 

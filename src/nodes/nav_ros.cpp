@@ -88,8 +88,17 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
   return "";
 }
 
+PlanTarget planTarget(const world::World& world, double clearance) {
+  PlanTarget target;
+  const bool map_alone = world.map && world.circles.empty() && world.rectangles.empty();
+  target.scenario = map_alone ? "map" : "room";
+  target.robot_radius = world.robot_radius;
+  target.clearance = clearance;
+  return target;
+}
+
 PlanPath::Request planRequest(const planning::Point2& start, const planning::Point2& goal,
-                              std::uint32_t seed, double clearance,
+                              std::uint32_t seed, const PlanTarget& target,
                               const planning::PlannerOptions& options) {
   // PlanPath reads exactly (0, 0) as "not given" (its zero-means-default rule), and a map's
   // robot starts there: such a point is sent a nanometre away.
@@ -97,7 +106,7 @@ PlanPath::Request planRequest(const planning::Point2& start, const planning::Poi
     return p.x == 0 && p.y == 0 ? planning::Point2{1e-9, 0} : p;
   };
   PlanPath::Request request;
-  request.scenario = "room";
+  request.scenario = target.scenario;
   request.start.x = given(start).x;
   request.start.y = given(start).y;
   request.goal.x = given(goal).x;
@@ -109,7 +118,8 @@ PlanPath::Request planRequest(const planning::Point2& start, const planning::Poi
   request.algorithm = "rrt_connect";
   request.collision_check = "segments";
   request.smooth = options.smooth;
-  request.clearance = clearance;
+  request.robot_radius = target.robot_radius;
+  request.clearance = target.clearance;
   return request;
 }
 

@@ -35,12 +35,26 @@ geometry_msgs::PoseStamped toPoseStamped(const robot::Pose2D& pose, const std::s
 /// the robot)", "goal ... is too close to a wall ...".
 std::string goalPlaceProblem(const world::World& world, double clearance, double x, double y);
 
-/// The ~plan_path request for a navigation plan in the service's room scenario: RRT-Connect,
-/// exact segment checks, smoothed, with the step, iterations and tolerance of `options`
-/// (navigation::navPlannerOptions() of the world), the world's robot.
+/// Where in rrt_planner roomba_bt's plans are made, and for which robot.
+struct PlanTarget {
+  /// "map" (the map on the planner's ~map_topic, which roomba_sim publishes) or "room" (the
+  /// planner's ~world_file, which must then be roomba_bt's world).
+  std::string scenario = "room";
+  double robot_radius = 0;  ///< m; 0: the scenario's robot
+  double clearance = 0;     ///< m
+};
+
+/// The planner's world for roomba_bt's `world`: scenario "map" when the world is a map without
+/// furniture (so a planner that knows only /map, as move_base's do, plans in it), "room"
+/// otherwise; the world's robot radius and `clearance`.
+PlanTarget planTarget(const world::World& world, double clearance);
+
+/// The ~plan_path request for a navigation plan in `target`: RRT-Connect, exact segment checks,
+/// smoothed, with the step, iterations and tolerance of `options`
+/// (navigation::navPlannerOptions() of the world).
 PlanPath::Request planRequest(
     const planning::Point2& start, const planning::Point2& goal, std::uint32_t seed,
-    double clearance,
+    const PlanTarget& target,
     const planning::PlannerOptions& options = navigation::defaultNavPlannerOptions());
 
 /// The service's answer as the navigation core's plan reply.

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -75,13 +76,14 @@ world::WorldFile loadWorldParameters(nodes::NodeParams& params) {
     // A map world starts at the map's origin unless told otherwise: ~initial_pose may move it.
     if (!(world.room.map && e.field() == "initial_pose")) throw e.in(world_file);
   }
-  // A file that sets nothing (e.g. truncated to a comment) runs the default room: say so.
-  const std::string notice = world::defaultsNotice(world, world_file);
-  if (world.defaulted_sections.size() == 4) {
-    ROS_WARN("roomba_sim: %s", notice.c_str());
-  } else if (!notice.empty()) {
-    ROS_INFO("roomba_sim: %s", notice.c_str());
-  }
+  // What the file left to the defaults and no private parameter sets (--pose, _initial_pose/x:
+  // that section is not the defaults'), said after the overrides with the values in force. A file
+  // that sets nothing (e.g. truncated to a comment) runs the default room: a warning.
+  const bool file_sets_nothing = world.defaulted_sections.size() == 4;
+  std::vector<std::string>& defaulted = world.defaulted_sections;
+  defaulted.erase(std::remove_if(defaulted.begin(), defaulted.end(),
+                                 [&params](const std::string& s) { return params.has(s); }),
+                  defaulted.end());
   world::RobotSpec& robot = world.robot();
   const std::vector<std::pair<const char*, double*>> overrides = {
       {"room/width", &world.room.width},
@@ -108,6 +110,12 @@ world::WorldFile loadWorldParameters(nodes::NodeParams& params) {
     const bool applies = (!world.namedRobots() || !robot_key) &&
                          !(world.room.map && std::string(name).rfind("room/", 0) == 0);
     if (applies) *value = params.get(name, *value);
+  }
+  const std::string notice = world::defaultsNotice(world, world_file);
+  if (file_sets_nothing && !notice.empty()) {
+    ROS_WARN("roomba_sim: %s", notice.c_str());
+  } else if (!notice.empty()) {
+    ROS_INFO("roomba_sim: %s", notice.c_str());
   }
   world::validate(world);
   world::validate(file.simulator);
@@ -384,10 +392,16 @@ int main(int argc, char** argv) {
     params.expect(name);  // dynamic_reconfigure's (cfg/RoombaSim.cfg)
   }
   params.warnUnknown();
-  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s, %s",
+  // One robot: where it starts (the file's pose, or --pose / ~initial_pose's).
+  char start[96] = "";
+  if (!world.namedRobots()) {
+    const roomba_rrt::robot::Pose2D& p = world.robot().initial_pose;
+    std::snprintf(start, sizeof start, " at (%g, %g) heading %g rad", p.x, p.y, p.theta);
+  }
+  ROS_INFO("roomba_sim: %.1f x %.1f m room, %zu pieces of furniture, %zu robot%s%s, %s",
            world.room.width, world.room.height,
            world.room.circles.size() + world.room.rectangles.size(), world.robots.size(),
-           world.robots.size() > 1 ? "s" : "",
+           world.robots.size() > 1 ? "s" : "", start,
            use_sim_time ? "publishing /clock" : "wall-clock time");
   node.run();
   return master_watch.exitCode();

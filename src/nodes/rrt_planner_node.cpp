@@ -2,9 +2,10 @@
 //
 // Serves ~plan_path (roomba_rrt/PlanPath), with the lab's scenarios, scenario "room" (the
 // simulator's ~world_file) and scenario "map" (the latest map on ~map_topic, /map), and
-// ~make_plan (nav_msgs/GetPlan, move_base's) on that map; after every plan publishes the tree,
-// obstacles, start, goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the
-// path on ~path (latched nav_msgs/Path). With ~animate the growing tree is published while
+// ~make_plan (nav_msgs/GetPlan, move_base's) on that map, a pose every map cell as navfn answers
+// (both wait up to 5 s for the first map); after every plan publishes the tree, obstacles, start,
+// goal, bounds and path on ~tree (latched visualization_msgs/MarkerArray) and the path on ~path
+// (latched nav_msgs/Path). With ~animate the growing tree is published while
 // planning. Requests are served by several threads, so a long plan does not hold up other clients;
 // when all ~threads are taken an ordinary request preempts the oldest long plan and a long request
 // is answered "busy" at once (plan_slots.h), and every plan stops after ~max_planning_time seconds
@@ -12,9 +13,11 @@
 // doc/planning.md.
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,6 +26,7 @@
 #include <nav_msgs/GetPlan.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <ros/callback_queue.h>
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
@@ -31,6 +35,7 @@
 
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/RrtPlannerConfig.h>
+#include <roomba_rrt/planning/densify.h>
 #include <roomba_rrt/planning/planner.h>
 #include <roomba_rrt/util/require.h>
 #include <roomba_rrt/world_planning/room_problem.h>
@@ -143,6 +148,12 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
   return d;
 }
 
+// The widest ~plan_resolution, m: a pose every few metres is what densifying is there to avoid.
+constexpr double kMaxPlanResolution = 10.0;
+
+// How long make_plan (and plan_path's scenario "map") wait for the first map on ~map_topic.
+constexpr std::chrono::seconds kFirstMapWait{5};
+
 // ~threads: plans at once, in [1, kMaxThreads]; 1 is raised to 2.
 int threadsParam(nodes::NodeParams& pnh) {
   constexpr int kMaxThreads = 64;
@@ -169,6 +180,9 @@ class RrtPlannerNode {
                          planning::kDefaultMaxIterationsCap);
     if (animate_every_ < 1) throw std::invalid_argument("~animate_every: must be >= 1");
     util::requireInRange("~animate_rate", animate_rate, 0.1, 1000, "Hz");
+    // make_plan's spacing of poses: 0 for the map's resolution (navfn's one pose per cell).
+    plan_resolution_ = params.get("plan_resolution", 0.0);
+    util::requireInRange("~plan_resolution", plan_resolution_, 0, kMaxPlanResolution, "m");
     animate_period_ = ros::WallDuration(1.0 / animate_rate);
 
     tree_pub_ = pnh.advertise<visualization_msgs::MarkerArray>("tree", 10, /*latch=*/true);
@@ -176,9 +190,14 @@ class RrtPlannerNode {
     service_ = pnh.advertiseService("plan_path", &RrtPlannerNode::planPath, this);
     make_plan_service_ = pnh.advertiseService("make_plan", &RrtPlannerNode::makePlan, this);
     // The map: the latest on ~map_topic (map_server's, roomba_sim's, a bag's), "" for none.
+    // Maps arrive on their own thread: requests waiting for the first map (waitForMap) hold the
+    // service threads, never the map.
     const std::string map_topic = params.get<std::string>("map_topic", "/map");
     if (!map_topic.empty()) {
-      map_sub_ = ros::NodeHandle().subscribe(map_topic, 1, &RrtPlannerNode::onMap, this);
+      ros::NodeHandle nh;
+      nh.setCallbackQueue(&map_queue_);
+      map_sub_ = nh.subscribe(map_topic, 1, &RrtPlannerNode::onMap, this);
+      map_spinner_.start();
     }
     ROS_INFO_STREAM("rrt_planner: serving "
                     << service_.getService() << " with " << scenarios_.size() << " scenarios from "
@@ -199,7 +218,8 @@ class RrtPlannerNode {
     response.success = false;
     response.length = std::numeric_limits<double>::infinity();
     response.path.header.frame_id = frame_id_;
-    const std::shared_ptr<const planning::Problem> map = currentMap();
+    const std::shared_ptr<const planning::Problem> map =
+        request.scenario == "map" ? waitForMap("plan_path") : currentMap();
     const ResolvedRequest resolved = resolveRequest(request, *defaults(), scenarios_, map.get());
     if (!resolved.error.empty()) {
       response.message = resolved.error;
@@ -272,7 +292,11 @@ class RrtPlannerNode {
         planning::mapProblem(std::move(grid), defaults()->allow_unknown));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::atomic_store(&map_, std::shared_ptr<const planning::Problem>(problem));
+    {
+      std::lock_guard<std::mutex> lock(map_mutex_);
+      std::atomic_store(&map_, std::shared_ptr<const planning::Problem>(problem));
+    }
+    map_arrived_.notify_all();
     const geometry::OccupancyGrid& g = problem->map->grid();
     ROS_INFO("rrt_planner: map %d x %d cells of %g m from %s, inflated in %.0f ms", g.width,
              g.height, g.resolution, map_sub_.getTopic().c_str(), seconds * 1e3);
@@ -282,6 +306,31 @@ class RrtPlannerNode {
   std::shared_ptr<const planning::Problem> currentMap() const {
     std::shared_ptr<const planning::Problem> map = std::atomic_load(&map_);
     return map ? map : defaults()->world_map;
+  }
+
+  /// currentMap(), waiting up to kFirstMapWait for the first map on ~map_topic when there is
+  /// none yet (right after start-up the latched map is still on its way, as move_base waits for
+  /// its costmap's). nullptr and a warning for `service` saying so when none comes.
+  std::shared_ptr<const planning::Problem> waitForMap(const char* service) {
+    std::shared_ptr<const planning::Problem> map = currentMap();
+    if (map) return map;
+    if (map_sub_) {
+      const auto deadline = std::chrono::steady_clock::now() + kFirstMapWait;
+      std::unique_lock<std::mutex> lock(map_mutex_);
+      // In slices, so that a shutdown (Ctrl-C) is not held up.
+      while (!(map = currentMap()) && ros::ok() && std::chrono::steady_clock::now() < deadline) {
+        map_arrived_.wait_for(lock, std::chrono::milliseconds(100));
+      }
+    }
+    if (!map) {
+      ROS_WARN_STREAM(service << ": no map yet: "
+                              << (map_sub_ ? "none came on " + map_sub_.getTopic() + " within " +
+                                                 std::to_string(kFirstMapWait.count()) +
+                                                 " s (is a map_server or roomba_sim publishing it?)"
+                                           : std::string("~map_topic is \"\""))
+                              << ", and ~world_file is not a map");
+    }
+    return map;
   }
 
   // A pose of a request in ~frame_id (the map's): as given when its frame is ~frame_id or empty,
@@ -322,11 +371,8 @@ class RrtPlannerNode {
   bool makePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response) {
     response.plan.header.frame_id = frame_id_;
     response.plan.header.stamp = ros::Time::now();
-    const std::shared_ptr<const planning::Problem> map = currentMap();
-    if (!map) {
-      ROS_WARN("make_plan: no map yet (none received on ~map_topic, and ~world_file is not a map)");
-      return true;
-    }
+    const std::shared_ptr<const planning::Problem> map = waitForMap("make_plan");
+    if (!map) return true;
     std::string why;
     const std::optional<robot::Pose2D> start = inMapFrame(request.start, "start", &why);
     const std::optional<robot::Pose2D> goal =
@@ -353,7 +399,11 @@ class RrtPlannerNode {
     const planning::PlanResult result = plan(resolved, slot);
     const ros::Time stamp = ros::Time::now();
     if (result.success) {
-      response.plan = toPlanMessage(result.path, query.goal_yaw, frame_id_, stamp);
+      // One pose per map cell (~plan_resolution), as navfn answers: local planners follow the
+      // part of the plan inside their window.
+      const double spacing = plan_resolution_ > 0 ? plan_resolution_ : map->map->grid().resolution;
+      response.plan =
+          toPlanMessage(planning::densify(result.path, spacing), query.goal_yaw, frame_id_, stamp);
     } else {
       ROS_WARN_STREAM("make_plan: no plan from (" << start->x << ", " << start->y << ") to ("
                                                   << goal->x << ", " << goal->y
@@ -444,6 +494,7 @@ class RrtPlannerNode {
   std::map<std::string, planning::Problem> scenarios_;
   std::string frame_id_;
   int max_marker_nodes_ = 0;
+  double plan_resolution_ = 0;  // m between make_plan's poses; 0: the map's resolution
   bool animate_ = false;
   int animate_every_ = 1;
   ros::WallDuration animate_period_;
@@ -451,11 +502,16 @@ class RrtPlannerNode {
   ros::Publisher path_pub_;
   ros::ServiceServer service_;
   ros::ServiceServer make_plan_service_;
-  ros::Subscriber map_sub_;
   std::shared_ptr<const planning::Problem> map_;  // the latest map received (atomic access)
+  std::mutex map_mutex_;                          // with map_arrived_: waitForMap()
+  std::condition_variable map_arrived_;
+  ros::CallbackQueue map_queue_;
+  ros::Subscriber map_sub_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_{tf_buffer_};
   PlanSlots slots_;
+  // Last: stopped (its thread joined) before anything onMap() uses is destroyed.
+  ros::AsyncSpinner map_spinner_{1, &map_queue_};
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "roomba_rrt/robot/unicycle.h"
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/util/require.h"
 
 namespace roomba_rrt::sim {
 
@@ -218,6 +219,15 @@ void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_ang
   for (world::RobotSpec& robot : next.robots) {
     robot.max_linear_speed = max_linear_speed;
     robot.max_angular_speed = max_angular_speed;
+  }
+  // The world's rule of v·step below every robot's radius, worded for the value that changed.
+  for (const world::RobotSpec& spec : specs_) {
+    const double fastest = spec.radius / world_.step;
+    util::require(
+        max_linear_speed < fastest, "max_linear_speed",
+        "below " + util::show(fastest) + " m/s (" + (spec.name.empty() ? "the robot" : spec.name) +
+            " would move its radius or more in one step of " + util::show(world_.step) + " s)",
+        max_linear_speed);
   }
   validate(next);  // the world's rules: ranges, and v·step below every robot's radius
   world_ = next;

@@ -1,7 +1,7 @@
 // The behaviour's state text follows the robot in rviz: opens config/roomba_rrt.rviz on a virtual
 // X server (Xvfb) while roomba_sim runs (state_marker_rviz.test), starts roomba_fsm once rviz
 // draws the robot, and screenshots the first spiral (20 s of robot time in one state, the text
-// sent once). In every shot the white text must sit on the blue robot disc, while the disc moves
+// sent once). In every shot the black text must sit on the blue robot disc, while the disc moves
 // far more than that between the shots.
 #include <gtest/gtest.h>
 #include <ros/package.h>
@@ -28,7 +28,7 @@ using roomba_rrt::test::Screenshot;
 
 constexpr Rgb kFloorNotYetCleaned{100, 120, 117};  // the coverage map's unknown cells
 constexpr Rgb kRobotBlue{51, 153, 230};            // roomba_sim's robot disc, lit from above
-constexpr Rgb kTextWhite{255, 255, 255};           // behavior_node.cpp's state text
+constexpr Rgb kTextBlack{0, 0, 0};                 // behavior_node.cpp's state text
 constexpr int kWidth = 1000, kHeight = 640;
 constexpr double kRobotRadius = 0.17;  // m, config/roomba_world.yaml
 constexpr int kShots = 7;
@@ -78,9 +78,9 @@ struct View {
 View look(const Screenshot& shot) {
   // Only inside the room: the Displays panel has white backgrounds and blue labels.
   const Box room = shot.find(kFloorNotYetCleaned, 4, shot.all()).bounds;
-  // The text is antialiased: its core is within 25 of white; the swept floor is 214 grey. The
-  // robot's white heading arrow counts too: it sits on the disc, so it cannot hide lost text.
-  return {shot.find(kRobotBlue, 10, room), shot.find(kTextWhite, 25, room)};
+  // The text is antialiased: its core is within 25 of black, which nothing else in the room is
+  // (the swept floor is 214 grey: white text vanished on it).
+  return {shot.find(kRobotBlue, 10, room), shot.find(kTextBlack, 25, room)};
 }
 
 TEST(StateMarkerRviz, state_text_follows_the_robot_while_it_spirals) {

@@ -37,6 +37,7 @@ refuses "~pose_latency: must be in [0, 1] s, got 5" roomba_bt _pose_latency:=5 \
 refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1
+refuses "~plan_resolution: must be in [0, 10] m, got -1" rrt_planner _plan_resolution:=-1
 refuses "~clearance: must be in [0, 0.17] m, got -1" coverage_planner _clearance:=-1
 refuses "~robot_radius: must be in [0.001, 10] m, got 0" coverage_planner _robot_radius:=0
 refuses "not a regular file" coverage_planner _world_file:=/tmp
@@ -156,6 +157,29 @@ stops_quickly() {  # stops_quickly NODE ARGS...: after 3 s running, SIGINT ends 
     say "FAIL: $* took $elapsed s to stop after SIGINT"; failures=$((failures + 1))
   fi
 }
+# Issue 45, item 9: roomba_sim's start-up lines give the pose in force: --pose (as
+# _initial_pose/x, /y) in a map whose file sets none is not reported as the default (0, 0).
+says() {  # says TEXT NODE PARAMS...: NODE's output within its first 3 s contains TEXT
+  local text=$1
+  shift
+  rosparam delete "/$1" 2>/dev/null || true
+  ROSCONSOLE_STDOUT_LINE_BUFFERED=1 timeout -s INT 3 rosrun roomba_rrt "$@" >"$work/out" 2>&1 ||
+    true
+  if grep -qF -- "$text" "$work/out"; then
+    say "ok: $* says '$text'"
+  else
+    say "FAIL: $* did not say '$text':"; cat "$work/out"; failures=$((failures + 1))
+  fi
+}
+apartment=$root/config/maps/apartment.yaml
+says "1 robot at (-3.8, 2.2) heading 0 rad" roomba_sim _world_file:="$apartment" \
+  _initial_pose/x:=-3.8 _initial_pose/y:=2.2
+if grep -q "initial_pose.x 0" "$work/out"; then
+  say "FAIL: the pose given is reported as the default"; failures=$((failures + 1))
+fi
+says "sets no furniture, robot, initial_pose: the defaults are used" roomba_sim \
+  _world_file:="$apartment"
+
 stops_quickly roomba_sim _real_time_factor:=1e-4
 stops_quickly roomba_sim _real_time_factor:=100
 stops_quickly roomba_fsm _rate:=1000

@@ -77,15 +77,33 @@ TEST(NavRos, goal_behind_the_bench_fits) {
 }
 
 TEST(NavRos, plan_request_asks_the_room_scenario_for_a_smoothed_rrt_connect_path) {
-  const PlanPath::Request request = planRequest({1, 2}, {3, 4}, 7, 0.05);
+  const PlanPath::Request request = planRequest({1, 2}, {3, 4}, 7, {"room", 0.17, 0.05});
   EXPECT_EQ(request.scenario, "room");
+  EXPECT_EQ(request.robot_radius, 0.17);
+  EXPECT_EQ(request.clearance, 0.05);
   EXPECT_EQ(request.algorithm, "rrt_connect");
   EXPECT_EQ(request.collision_check, "segments");
   EXPECT_TRUE(request.smooth);
   EXPECT_EQ(request.start.x, 1);
   EXPECT_EQ(request.goal.y, 4);
   EXPECT_EQ(request.seed, 7u);
-  EXPECT_EQ(planRequest({1, 2}, {3, 4}, 0, 0.05).seed, 1u);  // 0 would be the node's ~seed
+  EXPECT_EQ(planRequest({1, 2}, {3, 4}, 0, {}).seed, 1u);  // 0 would be the node's ~seed
+}
+
+TEST(NavRos, a_map_world_is_planned_in_the_planners_map_and_a_room_in_its_room) {
+  // A planner that knows only /map (as move_base's do) has no room of roomba_bt's map world.
+  world::World apartment =
+      world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml", world::PoseSource::kElsewhere);
+  apartment.robot_radius = 0.2;
+  const PlanTarget in_map = planTarget(apartment, 0.03);
+  EXPECT_EQ(in_map.scenario, "map");
+  EXPECT_EQ(in_map.robot_radius, 0.2);  // the world's robot, not the planner's
+  EXPECT_EQ(in_map.clearance, 0.03);
+  EXPECT_EQ(planRequest({1, 2}, {3, 4}, 7, in_map).scenario, "map");
+  // Furniture is only in the world file: the planner's room must have it.
+  apartment.rectangles.push_back({0, 0, 1, 1});
+  EXPECT_EQ(planTarget(apartment, 0.03).scenario, "room");
+  EXPECT_EQ(planTarget(world::World{}, 0.03).scenario, "room");
 }
 
 TEST(NavRos, plan_reply_carries_the_path_or_the_message) {

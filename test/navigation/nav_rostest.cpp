@@ -16,10 +16,11 @@
 // rrt_planner: a goal to each robot's /<name>/move_base at the same time, and each robot reaches
 // its own goal.
 //
-// NavMap (nav_map.test): a map world, roomba_sim publishing /map and rrt_planner planning on it:
+// NavMap (nav_map.test): a map world, roomba_sim publishing /map and rrt_planner (no world file)
+// planning on it, roomba_bt asking for its plans in the planner's scenario map:
 // ~make_plan between rooms (every edge checked against the map file here, not by the planner's
-// checker), a goal in a wall relaxed only by the request's tolerance, and a goal in another room
-// reached through the doorway without a bump.
+// checker; a pose every map cell), a goal in a wall relaxed only by the request's tolerance, and a
+// goal in another room reached through the doorway without a bump.
 #include <actionlib/client/simple_action_client.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
@@ -341,7 +342,9 @@ class NavMap : public Nav {
                                        const std::string& start_frame = "map") {
     return makePlan(planRequest(x, y, tolerance, start_frame));
   }
-  /// Every edge of the plan keeps the Roomba's radius from every blocked cell's square.
+  /// Every edge of the plan keeps the Roomba's radius from every blocked cell's square, and the
+  /// poses are at most a map cell apart (navfn's spacing: local planners prune the plan to their
+  /// window).
   void expectClear(const nav_msgs::Path& plan) {
     ASSERT_FALSE(plan.poses.empty());
     EXPECT_EQ(plan.header.frame_id, "map");
@@ -351,6 +354,8 @@ class NavMap : public Nav {
       const roomba_rrt::geometry::Segment edge{{a.x, a.y}, {b.x, b.y}};
       EXPECT_FALSE(roomba_rrt::geometry::segmentMeetsBlocked(grid_, edge, kRoombaRadius))
           << "edge " << i << " (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ")";
+      ASSERT_LE(std::hypot(b.x - a.x, b.y - a.y), grid_.resolution + 1e-9)
+          << "poses " << i - 1 << " and " << i << " are more than a cell apart";
     }
   }
 

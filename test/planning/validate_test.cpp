@@ -130,5 +130,15 @@ TEST(Validate, throws_invalid_input_that_holds_the_field_path_and_the_problem_ap
   }
 }
 
+TEST(Validate, a_value_just_outside_a_range_is_printed_with_the_digits_that_show_why) {
+  Problem problem = testing::labScenario("a");
+  problem.bounds.y_max = 1000000.0000000012;  // 1e6 to six digits, but above it
+  EXPECT_EQ(testing::validationError(problem, PlannerOptions{}),
+            "bounds.y_max: must be in [-1e+06, 1e+06] m, got 1000000.0000000012");
+  problem.bounds.y_max = 2e6;  // a round value stays as short as it was written
+  EXPECT_EQ(testing::validationError(problem, PlannerOptions{}),
+            "bounds.y_max: must be in [-1e+06, 1e+06] m, got 2e+06");
+}
+
 }  // namespace
 }  // namespace roomba_rrt::planning

@@ -9,6 +9,7 @@
 
 #include "roomba_rrt/sim/contact.h"
 #include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world_file.h"
 
 using namespace roomba_rrt::robot;
@@ -148,6 +149,21 @@ TEST(MultiRobotSimulator, reset_set_pose_and_bad_command_lists) {
   EXPECT_EQ(sim.pose(0).x, 1.0);
   EXPECT_EQ(sim.steps(), 0);
   EXPECT_EQ(sim.spec(1).name, "robot2");
+}
+
+TEST(MultiRobotSimulator, a_speed_limit_too_fast_for_the_step_is_refused_naming_the_speed) {
+  MultiRobotSimulator sim(twoRobots({1.0, 1.0, 0.0}, {3.0, 1.0, 0.0}));
+  try {
+    sim.setSpeedLimits(50, 2);  // 50 m/s * 1/60 s is more than the radius of 0.17 m
+    FAIL() << "50 m/s accepted";
+  } catch (const roomba_rrt::util::InvalidInput& e) {
+    EXPECT_EQ(e.field(), "max_linear_speed") << e.what();
+    EXPECT_NE(std::string(e.what()).find("must be below 10.2 m/s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("got 50"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(sim.world().max_linear_speed, 1.0);  // the limit in force is kept
+  sim.setSpeedLimits(10, 2);
+  EXPECT_EQ(sim.world().max_linear_speed, 10.0);
 }
 
 TEST(SpreadRobots, one_robot_stands_at_the_labs_room_centre_two_in_the_halves) {

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -14,9 +16,26 @@
 
 namespace roomba_rrt::util {
 
-/// Throws InvalidInput(field, "must be <rule>, got <value>").
+/// A number as show() prints it when that reads back as the same number ("0.17", "1e+06",
+/// "nan"), else with as many digits as it takes ("1000000.0000000012"): show() rounds to 6
+/// digits, which made "must be in [-1e+06, 1e+06] m, got 1e+06" of a value just above 10⁶.
+inline std::string showExact(double value) {
+  std::string text = show(value);
+  for (int digits = 7;
+       digits <= 17 && std::isfinite(value) && std::strtod(text.c_str(), nullptr) != value;
+       ++digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    text = out.str();
+  }
+  return text;
+}
+
+/// Throws InvalidInput(field, "must be <rule>, got <value>"), the value exact (showExact).
 [[noreturn]] inline void failRule(std::string_view field, std::string_view rule, double value) {
-  throw InvalidInput(std::string(field), "must be " + std::string(rule) + ", got " + show(value));
+  throw InvalidInput(std::string(field),
+                     "must be " + std::string(rule) + ", got " + showExact(value));
 }
 
 /// Unless `ok`: "<field>: must be <rule>, got <value>".
