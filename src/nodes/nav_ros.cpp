@@ -90,9 +90,10 @@ std::string goalPlaceProblem(const world::World& world, double clearance, double
 
 PlanTarget planTarget(const world::World& world, double clearance) {
   PlanTarget target;
-  const bool map_alone = world.map && world.circles.empty() && world.rectangles.empty();
+  const bool map_alone =
+      world.room.map && world.room.circles.empty() && world.room.rectangles.empty();
   target.scenario = map_alone ? "map" : "room";
-  target.robot_radius = world.robot_radius;
+  target.robot_radius = world.robot().radius;
   target.clearance = clearance;
   return target;
 }

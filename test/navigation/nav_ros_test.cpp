@@ -94,14 +94,14 @@ TEST(NavRos, a_map_world_is_planned_in_the_planners_map_and_a_room_in_its_room) 
   // A planner that knows only /map (as move_base's do) has no room of roomba_bt's map world.
   world::World apartment =
       world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml", world::PoseSource::kElsewhere);
-  apartment.robot_radius = 0.2;
+  apartment.robot().radius = 0.2;
   const PlanTarget in_map = planTarget(apartment, 0.03);
   EXPECT_EQ(in_map.scenario, "map");
   EXPECT_EQ(in_map.robot_radius, 0.2);  // the world's robot, not the planner's
   EXPECT_EQ(in_map.clearance, 0.03);
   EXPECT_EQ(planRequest({1, 2}, {3, 4}, 7, in_map).scenario, "map");
   // Furniture is only in the world file: the planner's room must have it.
-  apartment.rectangles.push_back({0, 0, 1, 1});
+  apartment.room.rectangles.push_back({0, 0, 1, 1});
   EXPECT_EQ(planTarget(apartment, 0.03).scenario, "room");
   EXPECT_EQ(planTarget(world::World{}, 0.03).scenario, "room");
 }

@@ -161,9 +161,9 @@ TEST(MultiRobotSimulator, a_speed_limit_too_fast_for_the_step_is_refused_naming_
     EXPECT_NE(std::string(e.what()).find("must be below 10.2 m/s"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("got 50"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(sim.world().max_linear_speed, 1.0);  // the limit in force is kept
+  EXPECT_EQ(sim.world().robot().max_linear_speed, 1.0);  // the limit in force is kept
   sim.setSpeedLimits(10, 2);
-  EXPECT_EQ(sim.world().max_linear_speed, 10.0);
+  EXPECT_EQ(sim.world().robot().max_linear_speed, 10.0);
 }
 
 TEST(SpreadRobots, one_robot_stands_at_the_labs_room_centre_two_in_the_halves) {
