@@ -23,6 +23,7 @@ add_library(roomba_behavior_core
   src/bt/retry_node.cpp
   src/bt/timeout_node.cpp
   src/bt/tree_factory.cpp
+  src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp
   src/behavior/roomba_state.cpp
   src/behavior/motion_primitives.cpp

@@ -90,8 +90,9 @@ enum class NodeKind {
   kControl,    ///< one or more children
 };
 
-/// Maps element names to node builders and builds trees from XML in BehaviorTree.CPP v4's format
-/// (doc/behaviours.md, "Tree files"):
+/// Maps element names to node builders (the registry, src/bt/tree_factory.cpp) and builds trees
+/// from XML in BehaviorTree.CPP v4's format (the reader, src/bt/xml_parsing.cpp; doc/behaviours.md,
+/// "Tree files"):
 ///
 ///     <root BTCPP_format="4" main_tree_to_execute="Roomba">
 ///       <include path="other_trees.xml"/>
