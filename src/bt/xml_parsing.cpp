@@ -28,6 +28,20 @@ int childElementCount(const XMLElement& element) {
                       message);
 }
 
+/// BehaviorTree.CPP's explicit form, `<Action ID="MoveForward"/>` for `<MoveForward/>` (Groot 1
+/// writes it, v4 reads it): the element names the category, its ID the node type.
+bool isExplicitForm(const XMLElement& element) {
+  static const std::set<std::string> kCategories = {"Action", "Condition", "Control", "Decorator"};
+  return kCategories.count(element.Name()) > 0;
+}
+
+/// The node type `element` names: its ID in the explicit form ("" if it has none), else its name.
+std::string typeOf(const XMLElement& element) {
+  if (!isExplicitForm(element)) return element.Name();
+  const char* id = element.Attribute("ID");
+  return id ? id : "";
+}
+
 /// The spellings of BehaviorTree.CPP v3 and of our earlier tree files, and their v4 names.
 const std::map<std::string, std::string>& legacySpellings() {
   static const std::map<std::string, std::string> kSpellings = {
@@ -264,7 +278,8 @@ Tree TreeFactory::buildFromText(const std::string& xml, const std::string& sourc
 
 const TreeFactory::Entry& TreeFactory::entryFor(const XMLElement& element,
                                                 const BuildState& state) const {
-  std::string type = element.Name();
+  std::string type = typeOf(element);
+  if (type.empty()) fail(state.source, element, "needs an ID attribute naming the node type");
   const auto legacy = legacySpellings().find(type);
   if (legacy != legacySpellings().end()) {
     notice(state.source + ":" + std::to_string(element.GetLineNum()) + ": <" + type +
@@ -272,7 +287,10 @@ const TreeFactory::Entry& TreeFactory::entryFor(const XMLElement& element,
     type = legacy->second;
   }
   const auto entry = entries_.find(type);
-  if (entry == entries_.end()) fail(state.source, element, "unknown node type");
+  if (entry == entries_.end()) {
+    fail(state.source, element,
+         isExplicitForm(element) ? "unknown node type '" + type + "'" : "unknown node type");
+  }
   return entry->second;
 }
 
@@ -387,8 +405,9 @@ std::unique_ptr<TreeNode> TreeFactory::buildSubTree(const XMLElement& element, i
 NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& entry,
                                      BuildState& state) const {
   NodeSpec spec;
-  spec.type = element.Name();
+  spec.type = typeOf(element);
   spec.name = spec.type;
+  const bool explicit_form = isExplicitForm(element);
   spec.blackboard = state.blackboard;
   spec.ports = &entry.ports;
   spec.tick_rate = tick_rate_;
@@ -398,6 +417,7 @@ NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& ent
       spec.name = a->Value();
       continue;
     }
+    if (explicit_form && key == "ID") continue;  // the type, read by typeOf()
     const bool known = std::any_of(entry.ports.begin(), entry.ports.end(),
                                    [&](const PortInfo& p) { return p.name == key; });
     if (!known) fail(state.source, element, "unknown attribute '" + key + "'");
@@ -453,7 +473,7 @@ std::set<std::string> TreeFactory::typesUsedIn(const std::string& path) const {
     const XMLElement* element = stack.back();
     stack.pop_back();
     for (const XMLElement* c = element->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      std::string type = c->Name();
+      std::string type = typeOf(*c);
       const auto legacy = legacySpellings().find(type);
       if (legacy != legacySpellings().end()) type = legacy->second;
       if (entries_.count(type)) used.insert(type);

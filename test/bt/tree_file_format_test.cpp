@@ -136,6 +136,40 @@ TEST_F(TreeFileFormat, ReadsWhatBehaviorTreeCppV4WritesWithoutNotices) {
   EXPECT_TRUE(notices.empty()) << notices.front();
 }
 
+// What Groot 1 writes, and BehaviorTree.CPP v4 still reads: the category element with an ID.
+TEST_F(TreeFileFormat, TheExplicitFormIsReadAsTheNodeItsIdNames) {
+  const std::string file = writeFile("bt_groot1.xml", R"(
+<root BTCPP_format="4" main_tree_to_execute="Main">
+  <BehaviorTree ID="Main">
+    <Control ID="Sequence" name="both">
+      <Condition ID="IsSunny"/>
+      <Decorator ID="Inverter"><Decorator ID="Inverter"><Action ID="Ok"/></Decorator></Decorator>
+      <Action ID="Say" text="hi" out="{said}"/>
+      <SubTree ID="Other"/>
+    </Control>
+  </BehaviorTree>
+  <BehaviorTree ID="Other"><Action ID="Ok"/></BehaviorTree>
+</root>)");
+  Tree tree = factory.buildFromFile(file);
+  EXPECT_EQ(tree.tick(), Status::kSuccess);
+  EXPECT_EQ(*tree.blackboard().get<std::string>("said"), "hi");
+  EXPECT_EQ(tree.root().name(), "both");
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(factory.typesUsedIn(file),
+            (std::set<std::string>{"Inverter", "IsSunny", "Ok", "Say", "Sequence"}));
+}
+
+TEST_F(TreeFileFormat, TheExplicitFormNeedsAKnownId) {
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action/>\n</BehaviorTree></root>"),
+            "t.xml:3: <Action>: needs an ID attribute naming the node type");
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action ID=\"Fly\"/>\n"
+                    "</BehaviorTree></root>"),
+            "t.xml:3: <Action>: unknown node type 'Fly'");
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\"><BehaviorTree>\n<Action ID=\"Say\" text=\"a\" "
+                    "colour=\"red\"/>\n</BehaviorTree></root>"),
+            "t.xml:2: <Action>: unknown attribute 'colour'");
+}
+
 TEST_F(TreeFileFormat, V3SpellingsAreReadWithANoticeNamingTheV4One) {
   Tree tree = factory.buildFromText(
       "<root>\n<BehaviorTree>\n<Selector>\n<RetryUntilSuccesful num_attempts=\"2\"><Ok/>"

@@ -110,7 +110,9 @@ enum class NodeKind {
 /// PipelineSequence and RecoveryNode (`number_of_retries`, two children); the decorators
 /// Inverter, Repeat (`num_cycles`), RetryUntilSuccessful (`num_attempts`), Timeout (`msec`, or
 /// our deterministic `ticks`) and Nav2's RateController (`hz`); SubTree (`ID`, port remapping
-/// `port="{parent_key}"` or `port="literal"`, `_autoremap`); `<include path="...">` (relative to
+/// `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit form
+/// `<Action ID="MoveForward"/>` (also Condition, Control, Decorator; Groot 1 writes it), read as
+/// `<MoveForward/>`; `<include path="...">` (relative to
 /// the including file) under <root>; a <TreeNodesModel> under <root> (Groot2 writes one) is
 /// ignored. Leaves are registered by the application. The spellings of BehaviorTree.CPP v3 and of
 /// our earlier files (Selector, ReactiveSelector, Retry, RetryUntilSuccesful, SequenceStar) are
