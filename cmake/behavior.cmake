@@ -22,6 +22,14 @@ add_library(roomba_behavior_core
   src/bt/repeat_node.cpp
   src/bt/retry_node.cpp
   src/bt/timeout_node.cpp
+  src/bt/keep_running_until_failure.cpp
+  src/bt/delay_node.cpp
+  src/bt/sleep_node.cpp
+  src/bt/parallel_node.cpp
+  src/bt/parallel_all_node.cpp
+  src/bt/if_then_else_node.cpp
+  src/bt/while_do_else_node.cpp
+  src/bt/switch_node.cpp
   src/bt/tree_factory.cpp
   src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp
@@ -64,6 +72,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(bt_test test/bt/control_nodes_test.cpp test/bt/decorators_test.cpp
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
+    test/bt/standard_nodes_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.

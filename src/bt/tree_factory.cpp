@@ -6,7 +6,14 @@
 #include <cmath>
 #include <iostream>
 
+#include "roomba_rrt/bt/always_status.h"
+#include "roomba_rrt/bt/delay_node.h"
+#include "roomba_rrt/bt/force_status.h"
+#include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/inverter_node.h"
+#include "roomba_rrt/bt/keep_running_until_failure.h"
+#include "roomba_rrt/bt/parallel_all_node.h"
+#include "roomba_rrt/bt/parallel_node.h"
 #include "roomba_rrt/bt/pipeline_sequence.h"
 #include "roomba_rrt/bt/rate_controller.h"
 #include "roomba_rrt/bt/reactive_selector.h"
@@ -17,7 +24,10 @@
 #include "roomba_rrt/bt/selector_node.h"
 #include "roomba_rrt/bt/sequence_node.h"
 #include "roomba_rrt/bt/sequence_with_memory.h"
+#include "roomba_rrt/bt/sleep_node.h"
+#include "roomba_rrt/bt/switch_node.h"
 #include "roomba_rrt/bt/timeout_node.h"
+#include "roomba_rrt/bt/while_do_else_node.h"
 
 namespace roomba_rrt::bt {
 namespace {
@@ -26,6 +36,12 @@ namespace {
 template <class Node>
 TreeFactory::Builder namedBuilder() {
   return [](const NodeSpec& spec) { return std::make_unique<Node>(spec.name); };
+}
+
+/// Milliseconds as ticks at the tree's tick rate: 0 stays 0 (Delay and Sleep: at once).
+long ticksOf(const NodeSpec& spec, const std::string& port) {
+  const long msec = spec.literal<long>(port);
+  return msec == 0 ? 0 : TimeoutNode::ticksFor(msec, spec.tick_rate);
 }
 
 }  // namespace
@@ -73,6 +89,44 @@ TreeFactory::TreeFactory()
     return std::make_unique<RateController>(s.name, s.literal<double>("hz"), s.tick_rate,
                                             *s.blackboard);
   });
+  registerStandardNodes();
+}
+
+void TreeFactory::registerStandardNodes() {
+  registerNode("AlwaysSuccess", NodeKind::kLeaf, namedBuilder<AlwaysSuccess>());
+  registerNode("AlwaysFailure", NodeKind::kLeaf, namedBuilder<AlwaysFailure>());
+  registerNodeType<SleepNode>("Sleep", [](const NodeSpec& s) {
+    return std::make_unique<SleepNode>(s.name, ticksOf(s, "msec"), *s.blackboard);
+  });
+  registerNode("ForceSuccess", NodeKind::kDecorator, namedBuilder<ForceSuccess>());
+  registerNode("ForceFailure", NodeKind::kDecorator, namedBuilder<ForceFailure>());
+  registerNode("KeepRunningUntilFailure", NodeKind::kDecorator,
+               namedBuilder<KeepRunningUntilFailure>());
+  registerNodeType<DelayNode>("Delay", [](const NodeSpec& s) {
+    return std::make_unique<DelayNode>(s.name, ticksOf(s, "delay_msec"), *s.blackboard);
+  });
+  registerNodeType<ParallelNode>("Parallel", [](const NodeSpec& s) {
+    return std::make_unique<ParallelNode>(s.name, s.literal<int>("success_count"),
+                                          s.literal<int>("failure_count"));
+  });
+  registerNodeType<ParallelAllNode>("ParallelAll", [](const NodeSpec& s) {
+    return std::make_unique<ParallelAllNode>(s.name, s.literal<int>("max_failures"));
+  });
+  registerNode("IfThenElse", NodeKind::kControl, namedBuilder<IfThenElseNode>());
+  registerNode("WhileDoElse", NodeKind::kControl, namedBuilder<WhileDoElseNode>());
+  for (std::size_t cases = 2; cases <= 6; ++cases) {
+    registerNodeWithPorts(
+        "Switch" + std::to_string(cases), NodeKind::kControl,
+        [cases](const NodeSpec& s) {
+          std::vector<InputPort<std::string>> values;
+          for (std::size_t i = 1; i <= cases; ++i) {
+            values.push_back(s.input<std::string>("case_" + std::to_string(i)));
+          }
+          return std::make_unique<SwitchNode>(s.name, s.input<std::string>("variable"),
+                                              std::move(values));
+        },
+        SwitchNode::portsFor(cases));
+  }
 }
 
 void TreeFactory::registerNode(const std::string& type, NodeKind kind, Builder builder,

@@ -56,11 +56,32 @@ const std::map<std::string, std::string>& legacySpellings() {
 
 /// The nodes BehaviorTree.CPP v4 builds in: Groot2 knows them without a model.
 bool builtIntoBehaviorTreeCpp(const std::string& type) {
-  static const std::set<std::string> kBuiltIn = {"Sequence",         "SequenceWithMemory",
-                                                 "Fallback",         "ReactiveSequence",
-                                                 "ReactiveFallback", "Inverter",
-                                                 "Repeat",           "RetryUntilSuccessful",
-                                                 "Timeout",          "SubTree"};
+  static const std::set<std::string> kBuiltIn = {"AlwaysFailure",
+                                                 "AlwaysSuccess",
+                                                 "Delay",
+                                                 "Fallback",
+                                                 "ForceFailure",
+                                                 "ForceSuccess",
+                                                 "IfThenElse",
+                                                 "Inverter",
+                                                 "KeepRunningUntilFailure",
+                                                 "Parallel",
+                                                 "ParallelAll",
+                                                 "ReactiveFallback",
+                                                 "ReactiveSequence",
+                                                 "Repeat",
+                                                 "RetryUntilSuccessful",
+                                                 "Sequence",
+                                                 "SequenceWithMemory",
+                                                 "Sleep",
+                                                 "SubTree",
+                                                 "Switch2",
+                                                 "Switch3",
+                                                 "Switch4",
+                                                 "Switch5",
+                                                 "Switch6",
+                                                 "Timeout",
+                                                 "WhileDoElse"};
   return kBuiltIn.count(type) > 0;
 }
 
@@ -330,11 +351,9 @@ std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int 
   if (!node) fail(state.source, element, "the registered builder returned no node");
   auto* control = dynamic_cast<ControlNode*>(node.get());
   auto* decorator = dynamic_cast<DecoratorNode*>(node.get());
-  if (control && control->requiredChildren() != 0 &&
-      static_cast<std::size_t>(children) != control->requiredChildren()) {
-    fail(state.source, element,
-         "needs exactly " + std::to_string(control->requiredChildren()) + " children, got " +
-             std::to_string(children));
+  if (control) {
+    const std::string problem = control->childCountProblem(static_cast<std::size_t>(children));
+    if (!problem.empty()) fail(state.source, element, problem);
   }
   if (children > 0 && !control && !decorator) {
     fail(state.source, element, "registered with children but built as a leaf");

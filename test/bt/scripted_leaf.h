@@ -4,6 +4,7 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "roomba_rrt/bt/tree_node.h"
@@ -42,6 +43,15 @@ inline std::unique_ptr<ScriptedLeaf> scripted(ScriptedLeaf** out, std::vector<St
   auto leaf = std::make_unique<ScriptedLeaf>(std::move(name), std::move(script));
   *out = leaf.get();
   return leaf;
+}
+
+/// Decorator `Node` (named "decorator", built with `args`) over a scripted leaf reachable
+/// through `leaf`.
+template <class Node, class... Args>
+std::unique_ptr<Node> decorate(ScriptedLeaf** leaf, std::vector<Status> script, Args&&... args) {
+  auto node = std::make_unique<Node>("decorator", std::forward<Args>(args)...);
+  node->setChild(scripted(leaf, std::move(script)));
+  return node;
 }
 
 constexpr Status S = Status::kSuccess;

@@ -202,9 +202,10 @@ TEST_F(TreeFileFormat, TimeoutInMillisecondsCountsTicksAtTheTickRate) {
 }
 
 TEST_F(TreeFileFormat, UnknownThingsAreStillRefusedNamingElementAndLine) {
-  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Parallel><Ok/></Parallel>\n"
-                    "</BehaviorTree>\n</root>"),
-            "t.xml:3: <Parallel>: unknown node type");
+  EXPECT_EQ(
+      errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Concurrently><Ok/></Concurrently>\n"
+              "</BehaviorTree>\n</root>"),
+      "t.xml:3: <Concurrently>: unknown node type");
   EXPECT_EQ(errorOf("<root BTCPP_format=\"5\"><BehaviorTree><Ok/></BehaviorTree></root>"),
             "t.xml:1: <root>: BTCPP_format \"5\" is not supported (4 or 3)");
   EXPECT_EQ(errorOf("<root>\n<Tree><Ok/></Tree>\n</root>"),

@@ -109,7 +109,8 @@ enum class NodeKind {
 /// SequenceWithMemory, Fallback, ReactiveSequence, ReactiveFallback, and Nav2's
 /// PipelineSequence and RecoveryNode (`number_of_retries`, two children); the decorators
 /// Inverter, Repeat (`num_cycles`), RetryUntilSuccessful (`num_attempts`), Timeout (`msec`, or
-/// our deterministic `ticks`) and Nav2's RateController (`hz`); SubTree (`ID`, port remapping
+/// our deterministic `ticks`) and Nav2's RateController (`hz`); BehaviorTree.CPP 4's other
+/// standard nodes (registerStandardNodes(), doc/behaviours.md); SubTree (`ID`, port remapping
 /// `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit form
 /// `<Action ID="MoveForward"/>` (also Condition, Control, Decorator; Groot 1 writes it), read as
 /// `<MoveForward/>`; `<include path="...">` (relative to
@@ -228,6 +229,9 @@ class TreeFactory {
   void bindPorts(const tinyxml2::XMLElement& element, const Entry& entry, NodeSpec& spec,
                  BuildState& state) const;
   void notice(const std::string& text) const;
+  /// Registers the standard nodes of BehaviorTree.CPP 4 besides the ones the tree files of this
+  /// package were first written with (doc/behaviours.md lists them all).
+  void registerStandardNodes();
 
   std::map<std::string, Entry> entries_;
   double tick_rate_ = 60.0;
