@@ -464,14 +464,15 @@ void TreeFactory::bindPorts(const XMLElement& element, const Entry& entry, NodeS
       } catch (const std::invalid_argument& error) {
         fail(state.source, element, describe(port) + ": " + error.what());
       }
-      if (port.direction == PortDirection::kOutput) {
+      if (port.direction != PortDirection::kInput) {
         state.written.insert(key);
       } else {
         state.reads.push_back({key, port.name, state.source, &element});
       }
-    } else if (port.direction == PortDirection::kOutput) {
+    } else if (port.direction != PortDirection::kInput) {
       fail(state.source, element,
-           "output " + describe(port) + " needs a blackboard key like {" + port.name + "}, got '" +
+           std::string(port.direction == PortDirection::kOutput ? "output " : "inout ") +
+               describe(port) + " needs a blackboard key like {" + port.name + "}, got '" +
                it->second + "'");
     } else {
       const std::string problem = port.check(port, it->second);
@@ -517,7 +518,9 @@ std::string TreeFactory::treeNodesModel() const {
     out.OpenElement(kCategory.at(entry.kind));
     out.PushAttribute("ID", type.c_str());
     for (const PortInfo& port : entry.ports) {
-      out.OpenElement(port.direction == PortDirection::kOutput ? "output_port" : "input_port");
+      out.OpenElement(port.direction == PortDirection::kInput    ? "input_port"
+                      : port.direction == PortDirection::kOutput ? "output_port"
+                                                                 : "inout_port");
       out.PushAttribute("name", port.name.c_str());
       out.PushAttribute("type", port.type_name.c_str());
       if (port.default_value) out.PushAttribute("default", port.default_value->c_str());

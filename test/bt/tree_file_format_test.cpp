@@ -47,6 +47,17 @@ struct Say final : LeafNode {
   OutputPort<std::string> out;
 };
 
+/// Adds one to key `n`, which it reads and writes (an inout port).
+struct Count final : LeafNode {
+  static PortList providedPorts() { return {inoutPort<int>("n", "the count")}; }
+  Count(std::string name, OutputPort<int> n) : LeafNode(std::move(name)), n(n) {}
+  Status onTick() override {
+    n.set(n.get() ? *n.get() + 1 : 1);
+    return Status::kSuccess;
+  }
+  OutputPort<int> n;
+};
+
 struct IsSunny final : ConditionNode {
   using ConditionNode::ConditionNode;
   static PortList providedPorts() { return {}; }
@@ -63,6 +74,9 @@ class TreeFileFormat : public ::testing::Test {
     factory.registerNodeType<Say>("Say", [](const NodeSpec& s) {
       return std::make_unique<Say>(s.name, s.input<std::string>("text"),
                                    s.output<std::string>("out"));
+    });
+    factory.registerNodeType<Count>("Count", [](const NodeSpec& s) {
+      return std::make_unique<Count>(s.name, s.output<int>("n"));
     });
     factory.registerNodeType<IsSunny>(
         "IsSunny", [](const NodeSpec& s) { return std::make_unique<IsSunny>(s.name); });
@@ -355,6 +369,20 @@ TEST_F(TreeFileFormat, TheTreeNodesModelListsOurNodesWithTheirPortsForGroot2) {
   const auto* out = nodes["Say"]->FirstChildElement("output_port");
   ASSERT_NE(out, nullptr);
   EXPECT_STREQ(out->Attribute("default"), "{said}");
+  const auto* inout = nodes["Count"]->FirstChildElement("inout_port");
+  ASSERT_NE(inout, nullptr);
+  EXPECT_STREQ(inout->Attribute("name"), "n");
+}
+
+TEST_F(TreeFileFormat, AnInoutPortNeedsAKeyAndBothReadsAndWritesIt) {
+  Tree tree = factory.buildFromText(R"(<root BTCPP_format="4"><BehaviorTree>
+    <Sequence><Count n="{n}"/><Count n="{n}"/></Sequence></BehaviorTree></root>)");
+  EXPECT_EQ(tree.tick(), Status::kSuccess);
+  EXPECT_EQ(*tree.blackboard().get<int>("n"), 2);
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\"><BehaviorTree>\n<Count n=\"3\"/>\n"
+                    "</BehaviorTree></root>"),
+            "t.xml:2: <Count>: inout port 'n' (int: the count) needs a blackboard key like {n}, "
+            "got '3'");
 }
 
 }  // namespace
