@@ -30,6 +30,11 @@ add_library(roomba_behavior_core
   src/bt/if_then_else_node.cpp
   src/bt/while_do_else_node.cpp
   src/bt/switch_node.cpp
+  src/bt/script.cpp
+  src/bt/node_conditions.cpp
+  src/bt/script_node.cpp
+  src/bt/precondition_node.cpp
+  src/bt/blackboard_nodes.cpp
   src/bt/tree_factory.cpp
   src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp
@@ -72,7 +77,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(bt_test test/bt/control_nodes_test.cpp test/bt/decorators_test.cpp
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
-    test/bt/standard_nodes_test.cpp
+    test/bt/standard_nodes_test.cpp test/bt/script_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "roomba_rrt/bt/always_status.h"
+#include "roomba_rrt/bt/blackboard_nodes.h"
 #include "roomba_rrt/bt/delay_node.h"
 #include "roomba_rrt/bt/force_status.h"
 #include "roomba_rrt/bt/if_then_else_node.h"
@@ -15,12 +16,14 @@
 #include "roomba_rrt/bt/parallel_all_node.h"
 #include "roomba_rrt/bt/parallel_node.h"
 #include "roomba_rrt/bt/pipeline_sequence.h"
+#include "roomba_rrt/bt/precondition_node.h"
 #include "roomba_rrt/bt/rate_controller.h"
 #include "roomba_rrt/bt/reactive_selector.h"
 #include "roomba_rrt/bt/reactive_sequence.h"
 #include "roomba_rrt/bt/recovery_node.h"
 #include "roomba_rrt/bt/repeat_node.h"
 #include "roomba_rrt/bt/retry_node.h"
+#include "roomba_rrt/bt/script_node.h"
 #include "roomba_rrt/bt/selector_node.h"
 #include "roomba_rrt/bt/sequence_node.h"
 #include "roomba_rrt/bt/sequence_with_memory.h"
@@ -114,6 +117,40 @@ void TreeFactory::registerStandardNodes() {
   });
   registerNode("IfThenElse", NodeKind::kControl, namedBuilder<IfThenElseNode>());
   registerNode("WhileDoElse", NodeKind::kControl, namedBuilder<WhileDoElseNode>());
+  registerNodeType<ScriptNode>("Script", [](const NodeSpec& s) {
+    return std::make_unique<ScriptNode>(s.name, s.script("code"), *s.blackboard);
+  });
+  registerNodeType<ScriptCondition>("ScriptCondition", [](const NodeSpec& s) {
+    return std::make_unique<ScriptCondition>(s.name, s.script("code"), *s.blackboard);
+  });
+  registerNodeType<PreconditionNode>("Precondition", [](const NodeSpec& s) {
+    const std::string otherwise = s.literal<std::string>("else");
+    const std::map<std::string, Status> statuses = {{"SUCCESS", Status::kSuccess},
+                                                    {"FAILURE", Status::kFailure},
+                                                    {"RUNNING", Status::kRunning}};
+    if (statuses.count(otherwise) == 0) {
+      throw std::invalid_argument("port 'else' must be SUCCESS, FAILURE or RUNNING, got '" +
+                                  otherwise + "'");
+    }
+    return std::make_unique<PreconditionNode>(s.name, s.script("if"), statuses.at(otherwise),
+                                              *s.blackboard);
+  });
+  // Their keys are named, not bound: any type scripts know, so plain attributes.
+  registerNode("SetBlackboard", NodeKind::kLeaf,
+               [](const NodeSpec& s) {
+                 std::string source;
+                 const bool copy = parseBlackboardKey(s.attributes.at("value"), source);
+                 return std::make_unique<SetBlackboard>(
+                     s.name, s.keyName("output_key"),
+                     copy ? std::optional<std::string>(source) : std::nullopt,
+                     s.attributes.at("value"), *s.blackboard);
+               },
+               {"value", "output_key"});
+  registerNode("UnsetBlackboard", NodeKind::kLeaf,
+               [](const NodeSpec& s) {
+                 return std::make_unique<UnsetBlackboard>(s.name, s.keyName("key"), *s.blackboard);
+               },
+               {"key"});
   for (std::size_t cases = 2; cases <= 6; ++cases) {
     registerNodeWithPorts(
         "Switch" + std::to_string(cases), NodeKind::kControl,

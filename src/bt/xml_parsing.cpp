@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "roomba_rrt/bt/node_conditions.h"
 #include "roomba_rrt/bt/tree_factory.h"
 #include "roomba_rrt/util/text_file.h"
 
@@ -67,12 +68,16 @@ bool builtIntoBehaviorTreeCpp(const std::string& type) {
                                                  "KeepRunningUntilFailure",
                                                  "Parallel",
                                                  "ParallelAll",
+                                                 "Precondition",
                                                  "ReactiveFallback",
                                                  "ReactiveSequence",
                                                  "Repeat",
                                                  "RetryUntilSuccessful",
+                                                 "Script",
+                                                 "ScriptCondition",
                                                  "Sequence",
                                                  "SequenceWithMemory",
+                                                 "SetBlackboard",
                                                  "Sleep",
                                                  "SubTree",
                                                  "Switch2",
@@ -81,6 +86,7 @@ bool builtIntoBehaviorTreeCpp(const std::string& type) {
                                                  "Switch5",
                                                  "Switch6",
                                                  "Timeout",
+                                                 "UnsetBlackboard",
                                                  "WhileDoElse"};
   return kBuiltIn.count(type) > 0;
 }
@@ -349,6 +355,7 @@ std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int 
     fail(state.source, element, error.what());
   }
   if (!node) fail(state.source, element, "the registered builder returned no node");
+  node->setConditions(readConditions(element, spec, state));
   auto* control = dynamic_cast<ControlNode*>(node.get());
   auto* decorator = dynamic_cast<DecoratorNode*>(node.get());
   if (control) {
@@ -430,19 +437,52 @@ NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& ent
   spec.blackboard = state.blackboard;
   spec.ports = &entry.ports;
   spec.tick_rate = tick_rate_;
+  spec.key_of = [scope = state.scope](const std::string& name) {
+    std::string key;
+    if (!parseBlackboardKey(scope->resolve("{" + name + "}"), key)) {
+      throw std::invalid_argument("the SubTree passes a literal for it, not a key");
+    }
+    return key;
+  };
   for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
     const std::string key = a->Name();
     if (key == "name") {
       spec.name = a->Value();
       continue;
     }
-    if (explicit_form && key == "ID") continue;  // the type, read by typeOf()
+    if (explicit_form && key == "ID") continue;               // the type, read by typeOf()
+    if (NodeConditions::isConditionAttribute(key)) continue;  // read by buildNode()
+    if (key == "_skipIf" || key == "_while") {
+      fail(state.source, element,
+           "'" + key +
+               "' needs BehaviorTree.CPP's SKIPPED status, which this engine does not "
+               "have (use _failureIf or _successIf, or a Precondition)");
+    }
     const bool known = std::any_of(entry.ports.begin(), entry.ports.end(),
                                    [&](const PortInfo& p) { return p.name == key; });
     if (!known) fail(state.source, element, "unknown attribute '" + key + "'");
     spec.attributes[key] = state.scope->resolve(a->Value());
   }
   return spec;
+}
+
+std::shared_ptr<const NodeConditions> TreeFactory::readConditions(const XMLElement& element,
+                                                                  const NodeSpec& spec,
+                                                                  BuildState& state) const {
+  std::shared_ptr<NodeConditions> conditions;
+  for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
+    if (!NodeConditions::isConditionAttribute(a->Name())) continue;
+    if (!conditions) {
+      conditions = std::make_shared<NodeConditions>();
+      conditions->board = state.blackboard;
+    }
+    try {
+      conditions->set(a->Name(), Script(a->Value(), spec.key_of));
+    } catch (const std::invalid_argument& error) {
+      fail(state.source, element, std::string("attribute '") + a->Name() + "': " + error.what());
+    }
+  }
+  return conditions;
 }
 
 void TreeFactory::bindPorts(const XMLElement& element, const Entry& entry, NodeSpec& spec,

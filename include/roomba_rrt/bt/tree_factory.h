@@ -12,6 +12,7 @@
 #include "roomba_rrt/bt/control_node.h"
 #include "roomba_rrt/bt/decorator_node.h"
 #include "roomba_rrt/bt/ports.h"
+#include "roomba_rrt/bt/script.h"
 #include "roomba_rrt/bt/tree.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -50,6 +51,8 @@ struct NodeSpec {
   Blackboard* blackboard = nullptr;  ///< the tree's blackboard
   const PortList* ports = nullptr;   ///< the node type's ports (empty for plain attributes)
   double tick_rate = 60.0;           ///< the factory's tick rate (Hz)
+  /// A script variable's blackboard key, through the SubTree's remapping as a port's `{key}`.
+  Script::KeyOf key_of;
 
   /// The literal value of port `port` (attribute or default).
   template <class T>
@@ -65,6 +68,14 @@ struct NodeSpec {
     std::string key;
     if (parseBlackboardKey(text(port), key)) return InputPort<T>::key(board().declare<T>(key));
     return InputPort<T>::literal(literal<T>(port));
+  }
+  /// The script in attribute `port` (std::invalid_argument on a syntax error).
+  Script script(const std::string& port) const { return Script(text(port), key_of); }
+  /// The blackboard key attribute `port` names, as `{key}` or as a bare name (SetBlackboard's
+  /// `output_key`).
+  std::string keyName(const std::string& port) const {
+    std::string key;
+    return parseBlackboardKey(text(port), key) ? key : key_of(text(port));
   }
   /// Output port `port`: its blackboard entry.
   template <class T>
@@ -228,6 +239,10 @@ class TreeFactory {
   /// the keys; fills in defaults.
   void bindPorts(const tinyxml2::XMLElement& element, const Entry& entry, NodeSpec& spec,
                  BuildState& state) const;
+  /// The pre/post-condition scripts in `element`'s attributes (`_successIf`, ...), or nullptr.
+  std::shared_ptr<const NodeConditions> readConditions(const tinyxml2::XMLElement& element,
+                                                       const NodeSpec& spec,
+                                                       BuildState& state) const;
   void notice(const std::string& text) const;
   /// Registers the standard nodes of BehaviorTree.CPP 4 besides the ones the tree files of this
   /// package were first written with (doc/behaviours.md lists them all).

@@ -1,11 +1,14 @@
 // The base class of every behavior-tree node: leaves, decorators and control nodes.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "roomba_rrt/bt/status.h"
 
 namespace roomba_rrt::bt {
+
+struct NodeConditions;
 
 /// A node of a behavior tree.
 ///
@@ -27,8 +30,10 @@ class TreeNode {
   TreeNode(const TreeNode&) = delete;
   TreeNode& operator=(const TreeNode&) = delete;
 
-  /// Enters the node if it is not running, then executes it once.
+  /// Enters the node if it is not running, then executes it once. A node with pre/post-condition
+  /// scripts (node_conditions.h) checks and runs them around that.
   Status tick() {
+    if (conditions_) return tickWithConditions();
     if (!running_) onEnter();
     const Status status = onTick();
     running_ = status == Status::kRunning;
@@ -40,11 +45,16 @@ class TreeNode {
     if (!running_) return;
     onHalt();
     running_ = false;
+    if (conditions_) afterHalt();
   }
 
   bool isRunning() const { return running_; }
   /// The instance name (from the tree file's `name` attribute, or the node type).
   const std::string& name() const { return name_; }
+  /// Gives the node pre/post-condition scripts (the tree factory does, for `_successIf` & co).
+  void setConditions(std::shared_ptr<const NodeConditions> conditions) {
+    conditions_ = std::move(conditions);
+  }
 
  protected:
   /// Called on the first tick after a (re)start, right before onTick().
@@ -55,8 +65,12 @@ class TreeNode {
   virtual void onHalt() {}
 
  private:
+  Status tickWithConditions();
+  void afterHalt();
+
   std::string name_;
   bool running_ = false;
+  std::shared_ptr<const NodeConditions> conditions_;  ///< nullptr: none (one branch per tick)
 };
 
 /// A leaf: an action or a condition written by the user (no children).

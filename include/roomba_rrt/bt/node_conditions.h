@@ -1,0 +1,40 @@
+// BehaviorTree.CPP's pre- and post-conditions: scripts in a node's attributes that decide
+// whether it is ticked (`_failureIf`, `_successIf`) and run when it finishes (`_onSuccess`,
+// `_onFailure`, `_post`) or is halted (`_onHalted`).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "roomba_rrt/bt/blackboard.h"
+#include "roomba_rrt/bt/script.h"
+
+namespace roomba_rrt::bt {
+
+/// The condition scripts of one node, and the blackboard they run on.
+///
+/// When the node is ticked and is not running:
+/// - `_failureIf` true: it returns FAILURE without being entered or ticked;
+/// - else `_successIf` true: it returns SUCCESS likewise;
+/// - else it is entered and ticked as usual. While it is running they are not checked.
+/// When it returns SUCCESS (ticked, or by `_successIf`), `_onSuccess` runs; on FAILURE,
+/// `_onFailure`; on either, `_post` after that. When it is halted, `_onHalted` runs.
+///
+/// A script that cannot be evaluated (ScriptError: a key never written, a type mismatch) fails
+/// the node: the pre-condition returns FAILURE without ticking it, a post-condition turns the
+/// result into FAILURE (BT.CPP throws an exception from the tick instead).
+///
+/// Not supported: `_skipIf` and `_while`, which need BT.CPP's SKIPPED status (the tree factory
+/// refuses them, naming this).
+struct NodeConditions {
+  Blackboard* board = nullptr;
+  std::optional<Script> failure_if, success_if;
+  std::optional<Script> on_success, on_failure, post, on_halted;
+
+  /// The attributes the factory reads into a NodeConditions.
+  static bool isConditionAttribute(const std::string& attribute);
+  /// Sets the script of `attribute` (one isConditionAttribute() accepts).
+  void set(const std::string& attribute, Script script);
+};
+
+}  // namespace roomba_rrt::bt

@@ -1,0 +1,73 @@
+#include "roomba_rrt/bt/node_conditions.h"
+
+#include "roomba_rrt/bt/tree_node.h"
+
+namespace roomba_rrt::bt {
+namespace {
+
+/// Runs `script` if there is one; false when it cannot be evaluated.
+bool run(const std::optional<Script>& script, Blackboard& board) {
+  if (!script) return true;
+  try {
+    script->evaluate(board);
+    return true;
+  } catch (const ScriptError&) {
+    return false;
+  }
+}
+
+/// What a pre-condition decides: nothing (tick the node), or its status.
+enum class Verdict { kTick, kSuccess, kFailure };
+
+/// `script` (if any) true gives `verdict`; one that cannot be evaluated fails the node.
+Verdict check(const std::optional<Script>& script, Blackboard& board, Verdict verdict) {
+  if (!script) return Verdict::kTick;
+  try {
+    return script->isTrue(board) ? verdict : Verdict::kTick;
+  } catch (const ScriptError&) {
+    return Verdict::kFailure;
+  }
+}
+
+}  // namespace
+
+bool NodeConditions::isConditionAttribute(const std::string& attribute) {
+  return attribute == "_failureIf" || attribute == "_successIf" || attribute == "_onSuccess" ||
+         attribute == "_onFailure" || attribute == "_post" || attribute == "_onHalted";
+}
+
+void NodeConditions::set(const std::string& attribute, Script script) {
+  std::optional<Script>& slot = attribute == "_failureIf"   ? failure_if
+                                : attribute == "_successIf" ? success_if
+                                : attribute == "_onSuccess" ? on_success
+                                : attribute == "_onFailure" ? on_failure
+                                : attribute == "_post"      ? post
+                                                            : on_halted;
+  slot = std::move(script);
+}
+
+Status TreeNode::tickWithConditions() {
+  Blackboard& board = *conditions_->board;
+  Verdict verdict = Verdict::kTick;
+  if (!running_) {
+    verdict = check(conditions_->failure_if, board, Verdict::kFailure);
+    if (verdict == Verdict::kTick) {
+      verdict = check(conditions_->success_if, board, Verdict::kSuccess);
+    }
+  }
+  Status status = verdict == Verdict::kSuccess ? Status::kSuccess : Status::kFailure;
+  if (verdict == Verdict::kTick) {
+    if (!running_) onEnter();
+    status = onTick();
+    running_ = status == Status::kRunning;
+  }
+  if (status == Status::kRunning) return status;
+  const bool ran =
+      run(status == Status::kSuccess ? conditions_->on_success : conditions_->on_failure, board) &&
+      run(conditions_->post, board);
+  return ran ? status : Status::kFailure;
+}
+
+void TreeNode::afterHalt() { run(conditions_->on_halted, *conditions_->board); }
+
+}  // namespace roomba_rrt::bt
