@@ -35,6 +35,7 @@ add_library(roomba_behavior_core
   src/bt/script_node.cpp
   src/bt/precondition_node.cpp
   src/bt/blackboard_nodes.cpp
+  src/bt/bt_log.cpp
   src/bt/tree_factory.cpp
   src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp
@@ -78,6 +79,7 @@ if(CATKIN_ENABLE_TESTING)
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
     test/bt/standard_nodes_test.cpp test/bt/script_test.cpp
+    test/bt/bt_log_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.

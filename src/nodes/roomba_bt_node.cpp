@@ -4,13 +4,15 @@
 // (nav_behavior.h); see behavior_node.h for the rest.
 //
 // `roomba_bt --tree-nodes-model` prints the BehaviorTree.CPP v4 <TreeNodesModel> of every node
-// our trees can use (for Groot2) and exits, without a master.
+// our trees can use (for Groot2) and exits, without a master; `roomba_bt --print-log FILE` prints
+// a .btlog (BT.CPP's FileLogger2 format) as text.
 #include <cstring>
 #include <iostream>
 
 #include "behavior_node.h"
 #include "nav_behavior.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
+#include "roomba_rrt/bt/bt_log.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 
@@ -21,11 +23,27 @@ int main(int argc, char** argv) {
           {roomba_rrt::coverage::coverageLeaves(nullptr)});
       return 0;
     }
+    if (std::strcmp(argv[i], "--print-log") == 0) {
+      if (i + 1 >= argc) {
+        std::cerr << "roomba_bt: --print-log needs a .btlog file\n";
+        return 2;
+      }
+      try {
+        roomba_rrt::bt::printBtLog(roomba_rrt::bt::readBtLogFile(argv[i + 1]), std::cout);
+      } catch (const roomba_rrt::util::InvalidInput& error) {
+        std::cerr << "roomba_bt: " << error.what() << '\n';
+        return 1;
+      }
+      return 0;
+    }
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
       std::cout << "Usage: rosrun roomba_rrt roomba_bt [_tree_file:=FILE] [_param:=value ...]\n"
                    "       rosrun roomba_rrt roomba_bt --tree-nodes-model > nodes.xml\n"
+                   "       rosrun roomba_rrt roomba_bt --print-log FILE.btlog\n"
                    "  --tree-nodes-model  print the BehaviorTree.CPP v4 <TreeNodesModel> of our\n"
                    "                      leaves and control nodes (Groot2 loads it) and exit\n"
+                   "  --print-log FILE    print a .btlog (BehaviorTree.CPP's FileLogger2 format)\n"
+                   "                      as text: time (s), node path, old -> new status\n"
                    "Parameters: doc/nodes.md (roomba_bt).\n";
       return 0;
     }
