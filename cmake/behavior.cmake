@@ -9,6 +9,7 @@ pkg_check_modules(TINYXML2 REQUIRED IMPORTED_TARGET tinyxml2)
 add_library(roomba_behavior_core
   src/fsm/state_machine.cpp
   src/bt/status.cpp
+  src/bt/tree_node.cpp
   src/bt/control_node.cpp
   src/bt/sequence_node.cpp
   src/bt/sequence_with_memory.cpp
@@ -36,6 +37,7 @@ add_library(roomba_behavior_core
   src/bt/precondition_node.cpp
   src/bt/blackboard_nodes.cpp
   src/bt/bt_log.cpp
+  src/bt/bt_file_logger.cpp
   src/bt/tree_factory.cpp
   src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp

@@ -1,7 +1,5 @@
 #include "roomba_rrt/bt/node_conditions.h"
 
-#include "roomba_rrt/bt/tree_node.h"
-
 namespace roomba_rrt::bt {
 namespace {
 
@@ -46,28 +44,19 @@ void NodeConditions::set(const std::string& attribute, Script script) {
   slot = std::move(script);
 }
 
-Status TreeNode::tickWithConditions() {
-  Blackboard& board = *conditions_->board;
-  Verdict verdict = Verdict::kTick;
-  if (!running_) {
-    verdict = check(conditions_->failure_if, board, Verdict::kFailure);
-    if (verdict == Verdict::kTick) {
-      verdict = check(conditions_->success_if, board, Verdict::kSuccess);
-    }
-  }
-  Status status = verdict == Verdict::kSuccess ? Status::kSuccess : Status::kFailure;
-  if (verdict == Verdict::kTick) {
-    if (!running_) onEnter();
-    status = onTick();
-    running_ = status == Status::kRunning;
-  }
-  if (status == Status::kRunning) return status;
+std::optional<Status> NodeConditions::before() const {
+  Verdict verdict = check(failure_if, *board, Verdict::kFailure);
+  if (verdict == Verdict::kTick) verdict = check(success_if, *board, Verdict::kSuccess);
+  if (verdict == Verdict::kTick) return std::nullopt;
+  return verdict == Verdict::kSuccess ? Status::kSuccess : Status::kFailure;
+}
+
+Status NodeConditions::after(Status status) const {
   const bool ran =
-      run(status == Status::kSuccess ? conditions_->on_success : conditions_->on_failure, board) &&
-      run(conditions_->post, board);
+      run(status == Status::kSuccess ? on_success : on_failure, *board) && run(post, *board);
   return ran ? status : Status::kFailure;
 }
 
-void TreeNode::afterHalt() { run(conditions_->on_halted, *conditions_->board); }
+void NodeConditions::halted() const { run(on_halted, *board); }
 
 }  // namespace roomba_rrt::bt

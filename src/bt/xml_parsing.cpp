@@ -356,6 +356,8 @@ std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int 
   }
   if (!node) fail(state.source, element, "the registered builder returned no node");
   node->setConditions(readConditions(element, spec, state));
+  const auto legacy = legacySpellings().find(spec.type);
+  node->setTypeName(legacy == legacySpellings().end() ? spec.type : legacy->second);
   auto* control = dynamic_cast<ControlNode*>(node.get());
   auto* decorator = dynamic_cast<DecoratorNode*>(node.get());
   if (control) {

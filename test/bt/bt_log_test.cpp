@@ -4,7 +4,10 @@
 
 #include <sstream>
 
+#include "roomba_rrt/bt/bt_file_logger.h"
 #include "roomba_rrt/bt/bt_log.h"
+#include "roomba_rrt/bt/tree_factory.h"
+#include "scripted_leaf.h"
 
 namespace roomba_rrt::bt {
 namespace {
@@ -88,6 +91,88 @@ TEST(BtLog, prints_time_path_and_change_per_transition) {
             "    1.250000  Roomba/root/clean/MoveForward  RUNNING -> FAILURE\n"
             "    1.250000  Roomba/root/GoBack  IDLE -> RUNNING\n"
             "    1.266667  #9  IDLE -> SUCCESS\n");
+}
+
+/// A tree from a file, recorded: Fallback(Sequence(MoveForward, Spiral), GoBack).
+struct Recorded {
+  static constexpr Status S = Status::kSuccess, F = Status::kFailure, R = Status::kRunning;
+  TreeFactory leaves() {
+    TreeFactory f;
+    f.registerLeaf("MoveForward", [this](const NodeSpec& s) {
+      return testing::scripted(&forward, {R, F, R}, s.name);
+    });
+    f.registerLeaf("Spiral", [](const NodeSpec& s) {
+      return std::make_unique<testing::ScriptedLeaf>(s.name, std::vector<Status>{R});
+    });
+    f.registerLeaf("GoBack",
+                   [this](const NodeSpec& s) { return testing::scripted(&back, {S}, s.name); });
+    return f;
+  }
+  testing::ScriptedLeaf* forward = nullptr;
+  testing::ScriptedLeaf* back = nullptr;
+  TreeFactory factory = leaves();
+  Tree tree = factory.buildFromText(R"(<root BTCPP_format="4"><BehaviorTree>
+    <Fallback name="root"><Sequence name="clean"><MoveForward/><Spiral/></Sequence><GoBack/>
+    </Fallback></BehaviorTree></root>)");
+  std::int64_t now = 1000000;
+};
+
+TEST(BtFileLogger, writes_the_tree_with_uids_in_depth_first_order) {
+  Recorded r;
+  EXPECT_EQ(treeXmlWithUids(r.tree.root(), "Roomba"),
+            "<root BTCPP_format=\"4\" main_tree_to_execute=\"Roomba\">\n"
+            "    <BehaviorTree ID=\"Roomba\">\n"
+            "        <Fallback name=\"root\" _uid=\"1\">\n"
+            "            <Sequence name=\"clean\" _uid=\"2\">\n"
+            "                <MoveForward _uid=\"3\"/>\n"
+            "                <Spiral _uid=\"4\"/>\n"
+            "            </Sequence>\n"
+            "            <GoBack _uid=\"5\"/>\n"
+            "        </Fallback>\n"
+            "    </BehaviorTree>\n"
+            "</root>\n");
+  const std::string with_model =
+      treeXmlWithUids(r.tree.root(), "Roomba", r.factory.treeNodesModel());
+  EXPECT_NE(with_model.find("<Action ID=\"GoBack\"/>"), std::string::npos) << with_model;
+}
+
+TEST(BtFileLogger, records_each_change_with_resets_to_idle_as_bt_cpp_does) {
+  Recorded r;
+  std::ostringstream out(std::ios::binary);
+  {
+    BtFileLogger logger(r.tree, out, "Roomba", "", [&r] { return r.now; });
+    r.tree.tick();  // MoveForward RUNNING
+    r.now += 16667;
+    r.tree.tick();  // MoveForward FAILURE: GoBack SUCCESS, root SUCCESS
+    r.now += 16667;
+    r.tree.tick();  // the root again: MoveForward RUNNING
+    r.tree.halt();
+    EXPECT_EQ(logger.transitions(), 16u);
+  }
+  std::istringstream in(out.str(), std::ios::binary);
+  const BtLog log = readBtLog(in, "run.btlog");
+  EXPECT_EQ(log.start_usec, 1000000);
+  std::ostringstream text;
+  printBtLog(log, text);
+  EXPECT_EQ(text.str(),
+            "    0.000000  Roomba/root/clean/MoveForward  IDLE -> RUNNING\n"
+            "    0.000000  Roomba/root/clean  IDLE -> RUNNING\n"
+            "    0.000000  Roomba/root  IDLE -> RUNNING\n"
+            "    0.016667  Roomba/root/clean/MoveForward  RUNNING -> FAILURE\n"
+            "    0.016667  Roomba/root/clean/MoveForward  FAILURE -> IDLE\n"
+            "    0.016667  Roomba/root/clean  RUNNING -> FAILURE\n"
+            "    0.016667  Roomba/root/GoBack  IDLE -> SUCCESS\n"
+            "    0.016667  Roomba/root/clean  FAILURE -> IDLE\n"
+            "    0.016667  Roomba/root/GoBack  SUCCESS -> IDLE\n"
+            "    0.016667  Roomba/root  RUNNING -> SUCCESS\n"
+            "    0.033334  Roomba/root/clean/MoveForward  IDLE -> RUNNING\n"
+            "    0.033334  Roomba/root/clean  IDLE -> RUNNING\n"
+            "    0.033334  Roomba/root  SUCCESS -> RUNNING\n"
+            "    0.033334  Roomba/root/clean/MoveForward  RUNNING -> IDLE\n"
+            "    0.033334  Roomba/root/clean  RUNNING -> IDLE\n"
+            "    0.033334  Roomba/root  RUNNING -> IDLE\n");
+  // Detached: the tree ticks without it.
+  EXPECT_EQ(r.tree.tick(), Status::kRunning);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "roomba_rrt/bt/blackboard.h"
 #include "roomba_rrt/bt/script.h"
+#include "roomba_rrt/bt/status.h"
 
 namespace roomba_rrt::bt {
 
@@ -30,6 +31,15 @@ struct NodeConditions {
   Blackboard* board = nullptr;
   std::optional<Script> failure_if, success_if;
   std::optional<Script> on_success, on_failure, post, on_halted;
+
+  /// What the pre-conditions decide for a node that is not running: nullopt (tick it), or the
+  /// status it returns without being ticked.
+  std::optional<Status> before() const;
+  /// Runs the post-conditions for a node that finished with `status`: `status`, or FAILURE when
+  /// one of them cannot be evaluated.
+  Status after(Status status) const;
+  /// Runs `_onHalted`.
+  void halted() const;
 
   /// The attributes the factory reads into a NodeConditions.
   static bool isConditionAttribute(const std::string& attribute);

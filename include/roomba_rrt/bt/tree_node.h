@@ -9,6 +9,18 @@
 namespace roomba_rrt::bt {
 
 struct NodeConditions;
+class TreeNode;
+
+/// Told of every status a node returns and of every halt: a logger (bt_file_logger.h) or a
+/// monitor. Opt-in per node (TreeNode::setObserver); nodes without one pay nothing for it.
+class TreeObserver {
+ public:
+  virtual ~TreeObserver() = default;
+  /// `node` returned `status` from tick().
+  virtual void onStatus(const TreeNode& node, Status status) = 0;
+  /// `node` was halted while running.
+  virtual void onHalted(const TreeNode& node) = 0;
+};
 
 /// A node of a behavior tree.
 ///
@@ -21,7 +33,7 @@ struct NodeConditions;
 ///   node is no longer running, so its next tick enters it anew. Halting a node that is not
 ///   running does nothing.
 ///
-/// The wrappers cost one branch and a virtual call: no clock, lock, allocation or std::function
+/// The wrappers cost two branches and a virtual call: no clock, lock, allocation or std::function
 /// per tick, so a tree of a dozen nodes ticks in a few nanoseconds.
 class TreeNode {
  public:
@@ -33,7 +45,7 @@ class TreeNode {
   /// Enters the node if it is not running, then executes it once. A node with pre/post-condition
   /// scripts (node_conditions.h) checks and runs them around that.
   Status tick() {
-    if (conditions_) return tickWithConditions();
+    if (!plain_) return tickWithExtras();
     if (!running_) onEnter();
     const Status status = onTick();
     running_ = status == Status::kRunning;
@@ -45,7 +57,7 @@ class TreeNode {
     if (!running_) return;
     onHalt();
     running_ = false;
-    if (conditions_) afterHalt();
+    if (!plain_) afterHalt();
   }
 
   bool isRunning() const { return running_; }
@@ -54,7 +66,18 @@ class TreeNode {
   /// Gives the node pre/post-condition scripts (the tree factory does, for `_successIf` & co).
   void setConditions(std::shared_ptr<const NodeConditions> conditions) {
     conditions_ = std::move(conditions);
+    plain_ = !conditions_ && !observer_;
   }
+  /// Reports this node's statuses and halts to `observer` (nullptr: to nobody), which must
+  /// outlive the node or be taken off first.
+  void setObserver(TreeObserver* observer) {
+    observer_ = observer;
+    plain_ = !conditions_ && !observer_;
+  }
+  /// The node type it was built as (the tree file's element, e.g. "Sequence"; the factory sets
+  /// it), or its name when it was built in code.
+  const std::string& typeName() const { return type_name_.empty() ? name_ : type_name_; }
+  void setTypeName(std::string type) { type_name_ = std::move(type); }
 
  protected:
   /// Called on the first tick after a (re)start, right before onTick().
@@ -65,12 +88,16 @@ class TreeNode {
   virtual void onHalt() {}
 
  private:
-  Status tickWithConditions();
+  /// tick() and halt() with conditions and an observer (src/bt/tree_node.cpp).
+  Status tickWithExtras();
   void afterHalt();
 
   std::string name_;
   bool running_ = false;
-  std::shared_ptr<const NodeConditions> conditions_;  ///< nullptr: none (one branch per tick)
+  bool plain_ = true;  ///< no conditions and no observer: tick() takes the short path
+  std::shared_ptr<const NodeConditions> conditions_;
+  TreeObserver* observer_ = nullptr;
+  std::string type_name_;
 };
 
 /// A leaf: an action or a condition written by the user (no children).

@@ -1,0 +1,28 @@
+#include "roomba_rrt/bt/tree_node.h"
+
+#include "roomba_rrt/bt/node_conditions.h"
+
+namespace roomba_rrt::bt {
+
+Status TreeNode::tickWithExtras() {
+  std::optional<Status> decided;
+  if (conditions_ && !running_) decided = conditions_->before();
+  Status status;
+  if (decided) {
+    status = *decided;
+  } else {
+    if (!running_) onEnter();
+    status = onTick();
+    running_ = status == Status::kRunning;
+  }
+  if (conditions_ && status != Status::kRunning) status = conditions_->after(status);
+  if (observer_) observer_->onStatus(*this, status);
+  return status;
+}
+
+void TreeNode::afterHalt() {
+  if (conditions_) conditions_->halted();
+  if (observer_) observer_->onHalted(*this);
+}
+
+}  // namespace roomba_rrt::bt
