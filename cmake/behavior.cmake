@@ -31,6 +31,7 @@ add_library(roomba_behavior_core
   src/bt/if_then_else_node.cpp
   src/bt/while_do_else_node.cpp
   src/bt/switch_node.cpp
+  src/bt/run_once_node.cpp
   src/bt/script.cpp
   src/bt/node_conditions.cpp
   src/bt/script_node.cpp
@@ -81,7 +82,7 @@ if(CATKIN_ENABLE_TESTING)
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
     test/bt/standard_nodes_test.cpp test/bt/script_test.cpp
-    test/bt/bt_log_test.cpp
+    test/bt/bt_log_test.cpp test/bt/skipped_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
 
   # The lab's behaviour: its constants, the FSM and the tree, and their equivalence.

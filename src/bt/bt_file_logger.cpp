@@ -48,6 +48,8 @@ LogStatus logStatus(Status status) {
       return LogStatus::kFailure;
     case Status::kRunning:
       return LogStatus::kRunning;
+    case Status::kSkipped:  // BT.CPP keeps a skipped node IDLE
+      return LogStatus::kIdle;
   }
   return LogStatus::kIdle;
 }

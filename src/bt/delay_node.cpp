@@ -19,6 +19,8 @@ Status DelayNode::onTick() {
     case Status::kFailure:
     case Status::kRunning:
       return status;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("Delay", status);
   }

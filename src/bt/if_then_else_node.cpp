@@ -21,7 +21,8 @@ Status IfThenElseNode::onTick() {
         branch_ = 2;
         break;
       case Status::kRunning:
-        return Status::kRunning;
+      case Status::kSkipped:  // no branch chosen
+        return condition;
       default:
         throwImpossibleStatus("IfThenElse", condition);
     }

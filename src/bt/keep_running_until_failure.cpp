@@ -10,6 +10,8 @@ Status KeepRunningUntilFailure::onTick() {
       return Status::kRunning;  // after a success the child is not running: entered anew
     case Status::kFailure:
       return Status::kFailure;
+    case Status::kSkipped:  // as BT.CPP: keep running
+      return Status::kRunning;
     default:
       throwImpossibleStatus("KeepRunningUntilFailure", status);
   }

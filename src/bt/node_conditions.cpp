@@ -15,7 +15,7 @@ bool run(const std::optional<Script>& script, Blackboard& board) {
 }
 
 /// What a pre-condition decides: nothing (tick the node), or its status.
-enum class Verdict { kTick, kSuccess, kFailure };
+enum class Verdict { kTick, kSuccess, kFailure, kSkip };
 
 /// `script` (if any) true gives `verdict`; one that cannot be evaluated fails the node.
 Verdict check(const std::optional<Script>& script, Blackboard& board, Verdict verdict) {
@@ -30,13 +30,16 @@ Verdict check(const std::optional<Script>& script, Blackboard& board, Verdict ve
 }  // namespace
 
 bool NodeConditions::isConditionAttribute(const std::string& attribute) {
-  return attribute == "_failureIf" || attribute == "_successIf" || attribute == "_onSuccess" ||
-         attribute == "_onFailure" || attribute == "_post" || attribute == "_onHalted";
+  return attribute == "_failureIf" || attribute == "_successIf" || attribute == "_skipIf" ||
+         attribute == "_while" || attribute == "_onSuccess" || attribute == "_onFailure" ||
+         attribute == "_post" || attribute == "_onHalted";
 }
 
 void NodeConditions::set(const std::string& attribute, Script script) {
   std::optional<Script>& slot = attribute == "_failureIf"   ? failure_if
                                 : attribute == "_successIf" ? success_if
+                                : attribute == "_skipIf"    ? skip_if
+                                : attribute == "_while"     ? while_true
                                 : attribute == "_onSuccess" ? on_success
                                 : attribute == "_onFailure" ? on_failure
                                 : attribute == "_post"      ? post
@@ -44,11 +47,31 @@ void NodeConditions::set(const std::string& attribute, Script script) {
   slot = std::move(script);
 }
 
-std::optional<Status> NodeConditions::before() const {
-  Verdict verdict = check(failure_if, *board, Verdict::kFailure);
-  if (verdict == Verdict::kTick) verdict = check(success_if, *board, Verdict::kSuccess);
-  if (verdict == Verdict::kTick) return std::nullopt;
-  return verdict == Verdict::kSuccess ? Status::kSuccess : Status::kFailure;
+std::optional<Status> NodeConditions::before(bool running) const {
+  Verdict verdict = Verdict::kTick;
+  if (!running) {
+    verdict = check(failure_if, *board, Verdict::kFailure);
+    if (verdict == Verdict::kTick) verdict = check(success_if, *board, Verdict::kSuccess);
+    if (verdict == Verdict::kTick) verdict = check(skip_if, *board, Verdict::kSkip);
+  }
+  if (verdict == Verdict::kTick && while_true) {
+    try {
+      if (!while_true->isTrue(*board)) verdict = Verdict::kSkip;
+    } catch (const ScriptError&) {
+      verdict = Verdict::kFailure;
+    }
+  }
+  switch (verdict) {
+    case Verdict::kSuccess:
+      return Status::kSuccess;
+    case Verdict::kFailure:
+      return Status::kFailure;
+    case Verdict::kSkip:
+      return Status::kSkipped;
+    case Verdict::kTick:
+      break;
+  }
+  return std::nullopt;
 }
 
 Status NodeConditions::after(Status status) const {

@@ -18,6 +18,7 @@ void ParallelAllNode::onEnter() {
 }
 
 Status ParallelAllNode::onTick() {
+  std::size_t skipped = 0;
   for (std::size_t i = 0; i < children_.size(); ++i) {
     if (finished_[i]) continue;
     const Status status = children_[i]->tick();
@@ -29,13 +30,17 @@ Status ParallelAllNode::onTick() {
         break;
       case Status::kRunning:
         continue;
+      case Status::kSkipped:
+        ++skipped;
+        continue;
       default:
         throwImpossibleStatus("ParallelAll", status);
     }
     finished_[i] = true;
     ++done_;
   }
-  if (done_ < children_.size()) return Status::kRunning;
+  if (skipped == children_.size()) return Status::kSkipped;
+  if (done_ + skipped < children_.size()) return Status::kRunning;
   return failures_ >= childThreshold(max_failures_, children_.size()) ? Status::kFailure
                                                                       : Status::kSuccess;
 }

@@ -35,6 +35,7 @@ Status ParallelNode::onTick() {
   const long n = static_cast<long>(children_.size());
   const long needed_successes = childThreshold(success_count_, children_.size());
   const long needed_failures = childThreshold(failure_count_, children_.size());
+  std::size_t skipped = 0;
   for (std::size_t i = 0; i < children_.size(); ++i) {
     if (finished_[i]) continue;
     const Status status = children_[i]->tick();
@@ -49,10 +50,15 @@ Status ParallelNode::onTick() {
         break;
       case Status::kRunning:
         break;
+      case Status::kSkipped:
+        ++skipped;
+        break;
       default:
         throwImpossibleStatus("Parallel", status);
     }
-    if (successes_ >= needed_successes) {
+    // With success_count < 0 ("all"), a skipped child counts as one that succeeded (BT.CPP).
+    const long skipped_as_success = success_count_ < 0 ? static_cast<long>(skipped) : 0;
+    if (successes_ + skipped_as_success >= needed_successes) {
       haltChildren();
       return Status::kSuccess;
     }
@@ -61,7 +67,7 @@ Status ParallelNode::onTick() {
       return Status::kFailure;
     }
   }
-  return Status::kRunning;
+  return skipped == children_.size() ? Status::kSkipped : Status::kRunning;
 }
 
 }  // namespace roomba_rrt::bt

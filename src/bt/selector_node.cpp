@@ -10,7 +10,11 @@ Status SelectorNode::onTick() {
         current_ = 0;
         return Status::kSuccess;
       case Status::kFailure:
+        executed_ = true;
         ++current_;  // enter and tick the next child in this same tick
+        break;
+      case Status::kSkipped:
+        ++current_;
         break;
       case Status::kRunning:
         return Status::kRunning;
@@ -19,7 +23,7 @@ Status SelectorNode::onTick() {
     }
   }
   current_ = 0;
-  return Status::kFailure;
+  return executed_ ? Status::kFailure : Status::kSkipped;
 }
 
 }  // namespace roomba_rrt::bt

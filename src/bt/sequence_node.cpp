@@ -7,7 +7,11 @@ Status SequenceNode::onTick() {
     const Status status = children_[current_]->tick();
     switch (status) {
       case Status::kSuccess:
+        executed_ = true;
         ++current_;  // enter and tick the next child in this same tick
+        break;
+      case Status::kSkipped:
+        ++current_;
         break;
       case Status::kFailure:
         current_ = 0;
@@ -19,7 +23,7 @@ Status SequenceNode::onTick() {
     }
   }
   current_ = 0;
-  return Status::kSuccess;
+  return executed_ ? Status::kSuccess : Status::kSkipped;
 }
 
 }  // namespace roomba_rrt::bt

@@ -23,6 +23,7 @@
 #include "roomba_rrt/bt/recovery_node.h"
 #include "roomba_rrt/bt/repeat_node.h"
 #include "roomba_rrt/bt/retry_node.h"
+#include "roomba_rrt/bt/run_once_node.h"
 #include "roomba_rrt/bt/script_node.h"
 #include "roomba_rrt/bt/selector_node.h"
 #include "roomba_rrt/bt/sequence_node.h"
@@ -115,6 +116,9 @@ void TreeFactory::registerStandardNodes() {
   registerNodeType<ParallelAllNode>("ParallelAll", [](const NodeSpec& s) {
     return std::make_unique<ParallelAllNode>(s.name, s.literal<int>("max_failures"));
   });
+  registerNodeType<RunOnceNode>("RunOnce", [](const NodeSpec& s) {
+    return std::make_unique<RunOnceNode>(s.name, s.literal<bool>("then_skip"));
+  });
   registerNode("IfThenElse", NodeKind::kControl, namedBuilder<IfThenElseNode>());
   registerNode("WhileDoElse", NodeKind::kControl, namedBuilder<WhileDoElseNode>());
   registerNodeType<ScriptNode>("Script", [](const NodeSpec& s) {
@@ -127,10 +131,11 @@ void TreeFactory::registerStandardNodes() {
     const std::string otherwise = s.literal<std::string>("else");
     const std::map<std::string, Status> statuses = {{"SUCCESS", Status::kSuccess},
                                                     {"FAILURE", Status::kFailure},
-                                                    {"RUNNING", Status::kRunning}};
+                                                    {"RUNNING", Status::kRunning},
+                                                    {"SKIPPED", Status::kSkipped}};
     if (statuses.count(otherwise) == 0) {
-      throw std::invalid_argument("port 'else' must be SUCCESS, FAILURE or RUNNING, got '" +
-                                  otherwise + "'");
+      throw std::invalid_argument(
+          "port 'else' must be SUCCESS, FAILURE, RUNNING or SKIPPED, got '" + otherwise + "'");
     }
     return std::make_unique<PreconditionNode>(s.name, s.script("if"), statuses.at(otherwise),
                                               *s.blackboard);

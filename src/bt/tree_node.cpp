@@ -6,16 +6,19 @@ namespace roomba_rrt::bt {
 
 Status TreeNode::tickWithExtras() {
   std::optional<Status> decided;
-  if (conditions_ && !running_) decided = conditions_->before();
+  if (conditions_) decided = conditions_->before(running_);
   Status status;
   if (decided) {
     status = *decided;
+    halt();  // only `_while` decides for a running node: it stops it
   } else {
     if (!running_) onEnter();
     status = onTick();
     running_ = status == Status::kRunning;
   }
-  if (conditions_ && status != Status::kRunning) status = conditions_->after(status);
+  if (conditions_ && (status == Status::kSuccess || status == Status::kFailure)) {
+    status = conditions_->after(status);
+  }
   if (observer_) observer_->onStatus(*this, status);
   return status;
 }

@@ -19,7 +19,8 @@ Status WhileDoElseNode::onTick() {
       children_[1]->halt();
       return children_.size() == 3 ? children_[2]->tick() : Status::kFailure;
     case Status::kRunning:
-      return Status::kRunning;
+    case Status::kSkipped:
+      return condition;
     default:
       throwImpossibleStatus("WhileDoElse", condition);
   }

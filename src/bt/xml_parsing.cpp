@@ -69,6 +69,7 @@ bool builtIntoBehaviorTreeCpp(const std::string& type) {
                                                  "Parallel",
                                                  "ParallelAll",
                                                  "Precondition",
+                                                 "RunOnce",
                                                  "ReactiveFallback",
                                                  "ReactiveSequence",
                                                  "Repeat",
@@ -454,12 +455,6 @@ NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& ent
     }
     if (explicit_form && key == "ID") continue;               // the type, read by typeOf()
     if (NodeConditions::isConditionAttribute(key)) continue;  // read by buildNode()
-    if (key == "_skipIf" || key == "_while") {
-      fail(state.source, element,
-           "'" + key +
-               "' needs BehaviorTree.CPP's SKIPPED status, which this engine does not "
-               "have (use _failureIf or _successIf, or a Precondition)");
-    }
     const bool known = std::any_of(entry.ports.begin(), entry.ports.end(),
                                    [&](const PortInfo& p) { return p.name == key; });
     if (!known) fail(state.source, element, "unknown attribute '" + key + "'");

@@ -145,9 +145,9 @@ TEST_F(ScriptedTree, precondition_checks_once_per_run_and_returns_else_when_fals
   EXPECT_EQ(work->ticks, 2);
   EXPECT_EQ(tree.tick(), S);  // a new run: false, `else` without ticking the child
   EXPECT_EQ(work->ticks, 2);
-  EXPECT_EQ(errorOf("<Precondition if=\"1\" else=\"SKIPPED\"><Work/></Precondition>"),
-            "t.xml:2: <Precondition>: port 'else' must be SUCCESS, FAILURE or RUNNING, got "
-            "'SKIPPED'");
+  EXPECT_EQ(errorOf("<Precondition if=\"1\" else=\"IDLE\"><Work/></Precondition>"),
+            "t.xml:2: <Precondition>: port 'else' must be SUCCESS, FAILURE, RUNNING or SKIPPED, "
+            "got 'IDLE'");
 }
 
 TEST_F(ScriptedTree, set_and_unset_blackboard_write_copy_and_forget_keys) {
@@ -232,14 +232,11 @@ TEST_F(ScriptedTree, script_variables_follow_the_subtree_s_remapping) {
   EXPECT_EQ(*board->get<double>("Count#1/private"), 1.0);
 }
 
-TEST_F(ScriptedTree, bad_scripts_and_skipped_conditions_are_refused_naming_the_element) {
+TEST_F(ScriptedTree, bad_scripts_and_unknown_conditions_are_refused_naming_the_element) {
   EXPECT_EQ(errorOf("<Script code=\"a :=\"/>"),
             "t.xml:2: <Script>: script 'a :=': expected a value at column 5");
   EXPECT_EQ(errorOf("<Work _successIf=\"1 +\"/>"),
             "t.xml:2: <Work>: attribute '_successIf': script '1 +': expected a value at column 4");
-  EXPECT_EQ(errorOf("<Work _skipIf=\"true\"/>"),
-            "t.xml:2: <Work>: '_skipIf' needs BehaviorTree.CPP's SKIPPED status, which this "
-            "engine does not have (use _failureIf or _successIf, or a Precondition)");
   EXPECT_EQ(errorOf("<Work _unknown=\"true\"/>"), "t.xml:2: <Work>: unknown attribute '_unknown'");
 }
 

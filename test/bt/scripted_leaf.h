@@ -54,8 +54,22 @@ std::unique_ptr<Node> decorate(ScriptedLeaf** leaf, std::vector<Status> script, 
   return node;
 }
 
+/// A composite of type Node (built with "node" and `args`) over two scripted children.
+template <class Node, class... Args>
+struct TwoChildren {
+  explicit TwoChildren(std::vector<Status> a, std::vector<Status> b, Args... args)
+      : node("node", args...) {
+    node.addChild(scripted(&first, std::move(a), "first"));
+    node.addChild(scripted(&second, std::move(b), "second"));
+  }
+  Node node;
+  ScriptedLeaf* first = nullptr;
+  ScriptedLeaf* second = nullptr;
+};
+
 constexpr Status S = Status::kSuccess;
 constexpr Status F = Status::kFailure;
 constexpr Status R = Status::kRunning;
+constexpr Status K = Status::kSkipped;
 
 }  // namespace roomba_rrt::bt::testing

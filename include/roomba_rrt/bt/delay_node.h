@@ -19,6 +19,7 @@ namespace roomba_rrt::bt {
 /// - SUCCESS: returns SUCCESS; the next tick enters Delay anew and waits again.
 /// - FAILURE: returns FAILURE; likewise.
 /// - RUNNING: returns RUNNING and ticks the child on the next tick (no further wait).
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 ///
 /// Halting it halts the child; the next tick waits again.
 class DelayNode final : public DecoratorNode {

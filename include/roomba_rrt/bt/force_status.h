@@ -11,6 +11,7 @@ namespace roomba_rrt::bt {
 /// - SUCCESS: returns `kResult`.
 /// - FAILURE: returns `kResult`.
 /// - RUNNING: returns RUNNING.
+/// - SKIPPED: returns SKIPPED.
 template <Status kResult>
 class ForceStatus final : public DecoratorNode {
   static_assert(kResult != Status::kRunning, "ForceStatus forces SUCCESS or FAILURE");
@@ -27,6 +28,8 @@ class ForceStatus final : public DecoratorNode {
         return kResult;
       case Status::kRunning:
         return Status::kRunning;
+      case Status::kSkipped:
+        return Status::kSkipped;
       default:
         throwImpossibleStatus(kResult == Status::kSuccess ? "ForceSuccess" : "ForceFailure",
                               status);

@@ -16,6 +16,7 @@ namespace roomba_rrt::bt {
 ///   finishes; IfThenElse returns what it returns.
 /// - FAILURE: likewise the third child; without one, IfThenElse returns FAILURE.
 /// - RUNNING: returns RUNNING and ticks the condition next time.
+/// - SKIPPED: returns SKIPPED (no branch is chosen).
 class IfThenElseNode final : public ControlNode {
  public:
   using ControlNode::ControlNode;

@@ -12,6 +12,7 @@ namespace roomba_rrt::bt {
 /// - SUCCESS: returns RUNNING; the child is entered anew on the next tick.
 /// - FAILURE: returns FAILURE.
 /// - RUNNING: returns RUNNING.
+/// - SKIPPED: returns RUNNING (as BT.CPP).
 class KeepRunningUntilFailure final : public DecoratorNode {
  public:
   using DecoratorNode::DecoratorNode;

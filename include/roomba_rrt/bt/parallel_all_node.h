@@ -15,6 +15,8 @@ namespace roomba_rrt::bt {
 /// early.
 ///
 /// - While a child is RUNNING: returns RUNNING.
+/// - SKIPPED children count as finished, without failing; when every child was skipped in one
+///   tick, ParallelAll returns SKIPPED.
 /// - When every child has finished (SUCCESS or FAILURE): returns FAILURE if at least
 ///   `max_failures` of them failed (a negative value counts from the number of children N: -1 is
 ///   all N), else SUCCESS.

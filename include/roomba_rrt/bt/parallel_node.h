@@ -24,7 +24,9 @@ std::string childThresholdProblem(const char* port, int count, std::size_t child
 /// - SUCCESS reach `success_count`: the running children are halted, Parallel returns SUCCESS.
 /// - FAILURE reach `failure_count`, or leave too few to reach `success_count`: the running
 ///   children are halted, Parallel returns FAILURE.
-/// Otherwise (children still RUNNING) it returns RUNNING after ticking them all.
+/// Otherwise (children still RUNNING) it returns RUNNING after ticking them all. A SKIPPED child
+/// counts as a success when `success_count` is negative (so children all skipped reach "all");
+/// otherwise, when every child was skipped in one tick, Parallel returns SKIPPED.
 class ParallelNode final : public ControlNode {
  public:
   static PortList providedPorts() {

@@ -12,8 +12,8 @@ namespace roomba_rrt::bt {
 /// Checks `if` (a script, script.h) when the child is not running:
 /// - true: the child is ticked, and on the following ticks until it finishes without `if` being
 ///   checked again; Precondition returns the child's SUCCESS, FAILURE or RUNNING.
-/// - false: returns `else` (SUCCESS, FAILURE or RUNNING; default FAILURE) without ticking the
-///   child.
+/// - false: returns `else` (SUCCESS, FAILURE, RUNNING or SKIPPED; default FAILURE) without
+///   ticking the child.
 /// - not evaluable (a key never written, a type mismatch): returns FAILURE.
 class PreconditionNode final : public DecoratorNode {
  public:

@@ -23,7 +23,9 @@ class ScriptError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A parsed script: statements separated by ';', its value that of the last one.
+/// A parsed script: statements separated by ';', its value that of the last one. Scripts are
+/// BT.CPP's Script and ScriptCondition nodes, Precondition's `if`, and the pre/post-conditions
+/// (node_conditions.h).
 ///
 /// The subset of BT.CPP's language (doc/behaviours.md, "Scripts"):
 /// - literals: numbers (`3`, `-0.5`, `1e3`), strings in single quotes (`'docked'`), `true`,

@@ -17,6 +17,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: the next child is entered and ticked in the same tick; after the last child the
 ///   Selector returns FAILURE and its next tick starts again from the first child.
 /// - RUNNING: the Selector returns RUNNING and ticks the same child next time.
+/// - SKIPPED: as FAILURE, but if every child was skipped the Selector returns SKIPPED.
 ///
 /// Halting the Selector halts the running child and rewinds to the first child.
 class SelectorNode final : public ControlNode {
@@ -24,10 +25,14 @@ class SelectorNode final : public ControlNode {
   using ControlNode::ControlNode;
 
  private:
-  void onEnter() override { current_ = 0; }
+  void onEnter() override {
+    current_ = 0;
+    executed_ = false;
+  }
   Status onTick() override;
 
   std::size_t current_ = 0;  ///< the child ticked next
+  bool executed_ = false;    ///< a child was not skipped in this run
 };
 
 }  // namespace roomba_rrt::bt

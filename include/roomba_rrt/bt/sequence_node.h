@@ -16,6 +16,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: the Sequence returns FAILURE at once (later children are not ticked); its next tick
 ///   starts again from the first child.
 /// - RUNNING: the Sequence returns RUNNING and ticks the same child next time.
+/// - SKIPPED: as SUCCESS, but if every child was skipped the Sequence returns SKIPPED.
 ///
 /// Halting the Sequence halts the running child and rewinds to the first child.
 class SequenceNode final : public ControlNode {
@@ -23,10 +24,14 @@ class SequenceNode final : public ControlNode {
   using ControlNode::ControlNode;
 
  private:
-  void onEnter() override { current_ = 0; }
+  void onEnter() override {
+    current_ = 0;
+    executed_ = false;
+  }
   Status onTick() override;
 
   std::size_t current_ = 0;  ///< the child ticked next
+  bool executed_ = false;    ///< a child was not skipped in this run
 };
 
 }  // namespace roomba_rrt::bt

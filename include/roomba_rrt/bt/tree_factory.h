@@ -121,8 +121,11 @@ enum class NodeKind {
 /// PipelineSequence and RecoveryNode (`number_of_retries`, two children); the decorators
 /// Inverter, Repeat (`num_cycles`), RetryUntilSuccessful (`num_attempts`), Timeout (`msec`, or
 /// our deterministic `ticks`) and Nav2's RateController (`hz`); BehaviorTree.CPP 4's other
-/// standard nodes (registerStandardNodes(), doc/behaviours.md); SubTree (`ID`, port remapping
-/// `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit form
+/// standard nodes (registerStandardNodes(), doc/behaviours.md) and the pre/post-condition
+/// attributes `_failureIf`, `_successIf`, `_skipIf`, `_while`, `_onSuccess`, `_onFailure`,
+/// `_post`, `_onHalted` on any node but a SubTree (node_conditions.h); SubTree (`ID`, port
+/// remapping `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit
+/// form
 /// `<Action ID="MoveForward"/>` (also Condition, Control, Decorator; Groot 1 writes it), read as
 /// `<MoveForward/>`; `<include path="...">` (relative to
 /// the including file) under <root>; a <TreeNodesModel> under <root> (Groot2 writes one) is

@@ -14,7 +14,8 @@ namespace roomba_rrt::bt {
 /// - SUCCESS: the else branch is halted and the do branch ticked; WhileDoElse returns its status.
 /// - FAILURE: the do branch is halted and the else branch ticked, WhileDoElse returning its
 ///   status; without an else branch it returns FAILURE.
-/// - RUNNING: returns RUNNING (neither branch is ticked nor halted).
+/// - RUNNING: returns RUNNING (neither branch is ticked nor halted); SKIPPED: returns SKIPPED,
+///   likewise.
 class WhileDoElseNode final : public ControlNode {
  public:
   using ControlNode::ControlNode;
