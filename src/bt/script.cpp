@@ -72,6 +72,23 @@ class Parser {
   }
 
  private:
+  /// Parsing and evaluating recurse: a script nests at most kMaxDepth levels (parentheses,
+  /// `!`, `-`, chained assignments) and has at most kMaxNodes operands and operators, so a
+  /// hostile tree file cannot exhaust the stack.
+  static constexpr int kMaxDepth = 64;
+  static constexpr int kMaxNodes = 1000;
+  struct Nested {
+    explicit Nested(Parser& p) : parser(p) {
+      if (++parser.depth_ > kMaxDepth) parser.fail("nested deeper than 64 levels");
+    }
+    ~Nested() { --parser.depth_; }
+    Parser& parser;
+  };
+  std::unique_ptr<Expr> node() {
+    if (++nodes_ > kMaxNodes) fail("more than 1000 operands and operators");
+    return std::make_unique<Expr>();
+  }
+
   [[noreturn]] void fail(const std::string& what) const {
     throw std::invalid_argument("script '" + code_ + "': " + what + " at column " +
                                 std::to_string(at_ + 1));
@@ -88,8 +105,8 @@ class Parser {
     at_ += token.size();
     return true;
   }
-  static std::unique_ptr<Expr> binary(Op op, std::unique_ptr<Expr> l, std::unique_ptr<Expr> r) {
-    auto e = std::make_unique<Expr>();
+  std::unique_ptr<Expr> binary(Op op, std::unique_ptr<Expr> l, std::unique_ptr<Expr> r) {
+    auto e = node();
     e->op = op;
     e->left = std::move(l);
     e->right = std::move(r);
@@ -101,13 +118,14 @@ class Parser {
   }
 
   std::unique_ptr<Expr> statement() {
+    const Nested nested(*this);
     skipSpace();
     const std::size_t start = at_;
     if (nameAt(at_)) {
       std::string name = readName();
       const bool create = accept(":=");
       if (create || accept("=")) {
-        auto e = std::make_unique<Expr>();
+        auto e = node();
         e->op = create ? Op::kCreate : Op::kAssign;
         e->name = name;
         e->key = keyOf(name);
@@ -163,13 +181,14 @@ class Parser {
     }
   }
   std::unique_ptr<Expr> unary() {
+    const Nested nested(*this);
     if (accept("!")) return binary(Op::kNot, unary(), nullptr);
     if (accept("-")) return binary(Op::kNegate, unary(), nullptr);
     return primary();
   }
   std::unique_ptr<Expr> primary() {
     skipSpace();
-    auto e = std::make_unique<Expr>();
+    auto e = node();
     if (accept("(")) {
       e = orExpr();
       if (!accept(")")) fail("expected ')'");
@@ -225,6 +244,8 @@ class Parser {
   const std::string& code_;
   const Script::KeyOf& key_of_;
   std::size_t at_ = 0;
+  int depth_ = 0;
+  int nodes_ = 0;
 };
 
 template <class Int>

@@ -83,6 +83,14 @@ TEST(Script, syntax_errors_name_the_column) {
   EXPECT_EQ(syntaxError("1 +"), "script '1 +': expected a value at column 4");
   EXPECT_EQ(syntaxError(" ; "), "the script is empty");
   EXPECT_EQ(syntaxError("a $ 1"), "script 'a $ 1': expected ';' or the end at column 3");
+  // Parsing and evaluating recurse: a hostile file cannot exhaust the stack.
+  EXPECT_NE(syntaxError(std::string(100000, '(') + "1").find("nested deeper than 64 levels"),
+            std::string::npos);
+  EXPECT_NE(syntaxError(std::string(100000, '!') + "1").find("nested deeper than 64 levels"),
+            std::string::npos);
+  std::string sum = "1";
+  for (int i = 0; i < 100000; ++i) sum += "+1";
+  EXPECT_NE(syntaxError(sum).find("more than 1000 operands and operators"), std::string::npos);
 }
 
 class ScriptedTree : public ::testing::Test {
