@@ -144,11 +144,11 @@ void TreeFactory::registerStandardNodes() {
   registerNode("SetBlackboard", NodeKind::kLeaf,
                [](const NodeSpec& s) {
                  std::string source;
-                 const bool copy = parseBlackboardKey(s.attributes.at("value"), source);
+                 const bool copy = parseBlackboardKey(s.literal<std::string>("value"), source);
                  return std::make_unique<SetBlackboard>(
                      s.name, s.keyName("output_key"),
                      copy ? std::optional<std::string>(source) : std::nullopt,
-                     s.attributes.at("value"), *s.blackboard);
+                     s.literal<std::string>("value"), *s.blackboard);
                },
                {"value", "output_key"});
   registerNode("UnsetBlackboard", NodeKind::kLeaf,

@@ -173,6 +173,8 @@ TEST_F(ScriptedTree, set_and_unset_blackboard_write_copy_and_forget_keys) {
   EXPECT_EQ(*board->get<int>("laps"), 3);
   EXPECT_EQ(*board->get<double>("copy"), 0.5);
   EXPECT_EQ(board->get<std::string>("greeting"), nullptr);
+  EXPECT_EQ(errorOf("<SetBlackboard output_key=\"speed\"/>"),
+            "t.xml:2: <SetBlackboard>: missing port 'value'");
   Tree refused = build("<SetBlackboard value=\"fast\" output_key=\"speed\"/>");
   EXPECT_EQ(refused.tick(), F);  // not a number: the double is left alone
   EXPECT_EQ(*board->get<double>("speed"), 0.5);
