@@ -32,6 +32,7 @@ add_library(roomba_behavior_core
   src/bt/while_do_else_node.cpp
   src/bt/switch_node.cpp
   src/bt/run_once_node.cpp
+  src/bt/entry_updated.cpp
   src/bt/script.cpp
   src/bt/node_conditions.cpp
   src/bt/script_node.cpp

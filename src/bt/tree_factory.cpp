@@ -9,6 +9,7 @@
 #include "roomba_rrt/bt/always_status.h"
 #include "roomba_rrt/bt/blackboard_nodes.h"
 #include "roomba_rrt/bt/delay_node.h"
+#include "roomba_rrt/bt/entry_updated.h"
 #include "roomba_rrt/bt/force_status.h"
 #include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/inverter_node.h"
@@ -156,6 +157,22 @@ void TreeFactory::registerStandardNodes() {
                  return std::make_unique<UnsetBlackboard>(s.name, s.keyName("key"), *s.blackboard);
                },
                {"key"});
+  registerNode("WasEntryUpdated", NodeKind::kCondition,
+               [](const NodeSpec& s) {
+                 return std::make_unique<WasEntryUpdated>(s.name, s.keyName("entry"),
+                                                          *s.blackboard);
+               },
+               {"entry"});
+  for (const auto& [type, otherwise] :
+       {std::pair<const char*, Status>{"SkipUnlessUpdated", Status::kSkipped},
+        {"WaitValueUpdate", Status::kRunning}}) {
+    registerNode(type, NodeKind::kDecorator,
+                 [otherwise = otherwise](const NodeSpec& s) {
+                   return std::make_unique<EntryUpdatedDecorator>(s.name, s.keyName("entry"),
+                                                                  *s.blackboard, otherwise);
+                 },
+                 {"entry"});
+  }
   for (std::size_t cases = 2; cases <= 6; ++cases) {
     registerNodeWithPorts(
         "Switch" + std::to_string(cases), NodeKind::kControl,

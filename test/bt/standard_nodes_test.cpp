@@ -6,6 +6,7 @@
 
 #include "roomba_rrt/bt/always_status.h"
 #include "roomba_rrt/bt/delay_node.h"
+#include "roomba_rrt/bt/entry_updated.h"
 #include "roomba_rrt/bt/force_status.h"
 #include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/keep_running_until_failure.h"
@@ -238,6 +239,25 @@ TEST(Switch, the_matching_case_runs_the_last_child_by_default_and_a_move_halts) 
   EXPECT_EQ(two->ticks, 1);
 }
 
+TEST(EntryUpdated, reacts_to_writes_since_it_last_looked) {
+  Blackboard board;
+  auto& goal = board.declare<double>("goal");
+  WasEntryUpdated updated("updated", "goal", board);
+  EXPECT_EQ(updated.tick(), F);  // never written
+  goal.set(1);
+  EXPECT_EQ(updated.tick(), S);
+  EXPECT_EQ(updated.tick(), F);
+  ScriptedLeaf* leaf;
+  auto skip = decorate<EntryUpdatedDecorator>(&leaf, {R, S}, "goal", board, Status::kSkipped);
+  EXPECT_EQ(skip->tick(), R);  // written once before: that counts
+  EXPECT_EQ(skip->tick(), S);  // a running child is ticked to its end
+  EXPECT_EQ(skip->tick(), Status::kSkipped);
+  goal.set(2);
+  EXPECT_EQ(skip->tick(), S);
+  auto wait = decorate<EntryUpdatedDecorator>(&leaf, {S}, "missing", board, R);
+  EXPECT_EQ(wait->tick(), R);  // WaitValueUpdate: RUNNING until written
+}
+
 /// The standard nodes as a tree file names them, with BT.CPP's ports.
 TEST(StandardNodes, are_read_from_tree_files_with_behaviortree_cpp_s_ports) {
   TreeFactory factory;
@@ -255,6 +275,10 @@ TEST(StandardNodes, are_read_from_tree_files_with_behaviortree_cpp_s_ports) {
     <ParallelAll max_failures="2"><AlwaysFailure/><AlwaysSuccess/></ParallelAll>
     <WhileDoElse><AlwaysFailure/><Busy/><AlwaysSuccess/></WhileDoElse>
     <Switch2 variable="b" case_1="a" case_2="b"><Busy/><Delay delay_msec="0"><AlwaysSuccess/></Delay><Busy/></Switch2>
+    <SetBlackboard value="1" output_key="mode"/>
+    <WasEntryUpdated entry="{mode}"/>
+    <SkipUnlessUpdated entry="mode"><AlwaysSuccess/></SkipUnlessUpdated>
+    <WaitValueUpdate entry="mode"><AlwaysSuccess/></WaitValueUpdate>
     <KeepRunningUntilFailure><AlwaysSuccess/></KeepRunningUntilFailure>
   </Sequence>
 </BehaviorTree></root>)");
