@@ -33,6 +33,7 @@ add_library(roomba_behavior_core
   src/bt/switch_node.cpp
   src/bt/run_once_node.cpp
   src/bt/entry_updated.cpp
+  src/bt/try_catch_node.cpp
   src/bt/script.cpp
   src/bt/node_conditions.cpp
   src/bt/script_node.cpp

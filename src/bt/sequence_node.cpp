@@ -4,11 +4,13 @@ namespace roomba_rrt::bt {
 
 Status SequenceNode::onTick() {
   while (current_ < children_.size()) {
+    const bool was_running = children_[current_]->isRunning();
     const Status status = children_[current_]->tick();
     switch (status) {
       case Status::kSuccess:
         executed_ = true;
         ++current_;  // enter and tick the next child in this same tick
+        if (async_ && !was_running && current_ < children_.size()) return Status::kRunning;
         break;
       case Status::kSkipped:
         ++current_;

@@ -32,6 +32,7 @@
 #include "roomba_rrt/bt/sleep_node.h"
 #include "roomba_rrt/bt/switch_node.h"
 #include "roomba_rrt/bt/timeout_node.h"
+#include "roomba_rrt/bt/try_catch_node.h"
 #include "roomba_rrt/bt/while_do_else_node.h"
 
 namespace roomba_rrt::bt {
@@ -119,6 +120,13 @@ void TreeFactory::registerStandardNodes() {
   });
   registerNodeType<RunOnceNode>("RunOnce", [](const NodeSpec& s) {
     return std::make_unique<RunOnceNode>(s.name, s.literal<bool>("then_skip"));
+  });
+  registerNode("AsyncSequence", NodeKind::kControl,
+               [](const NodeSpec& s) { return std::make_unique<SequenceNode>(s.name, true); });
+  registerNode("AsyncFallback", NodeKind::kControl,
+               [](const NodeSpec& s) { return std::make_unique<SelectorNode>(s.name, true); });
+  registerNodeType<TryCatchNode>("TryCatch", [](const NodeSpec& s) {
+    return std::make_unique<TryCatchNode>(s.name, s.literal<bool>("catch_on_halt"));
   });
   registerNode("IfThenElse", NodeKind::kControl, namedBuilder<IfThenElseNode>());
   registerNode("WhileDoElse", NodeKind::kControl, namedBuilder<WhileDoElseNode>());

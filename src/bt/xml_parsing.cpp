@@ -58,6 +58,8 @@ const std::map<std::string, std::string>& legacySpellings() {
 /// The nodes BehaviorTree.CPP v4 builds in: Groot2 knows them without a model.
 bool builtIntoBehaviorTreeCpp(const std::string& type) {
   static const std::set<std::string> kBuiltIn = {"AlwaysFailure",
+                                                 "AsyncFallback",
+                                                 "AsyncSequence",
                                                  "AlwaysSuccess",
                                                  "Delay",
                                                  "Fallback",
@@ -90,6 +92,7 @@ bool builtIntoBehaviorTreeCpp(const std::string& type) {
                                                  "Switch5",
                                                  "Switch6",
                                                  "Timeout",
+                                                 "TryCatch",
                                                  "UnsetBlackboard",
                                                  "WhileDoElse"};
   return kBuiltIn.count(type) > 0;

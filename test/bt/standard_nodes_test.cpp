@@ -12,9 +12,12 @@
 #include "roomba_rrt/bt/keep_running_until_failure.h"
 #include "roomba_rrt/bt/parallel_all_node.h"
 #include "roomba_rrt/bt/parallel_node.h"
+#include "roomba_rrt/bt/selector_node.h"
+#include "roomba_rrt/bt/sequence_node.h"
 #include "roomba_rrt/bt/sleep_node.h"
 #include "roomba_rrt/bt/switch_node.h"
 #include "roomba_rrt/bt/tree_factory.h"
+#include "roomba_rrt/bt/try_catch_node.h"
 #include "roomba_rrt/bt/while_do_else_node.h"
 #include "scripted_leaf.h"
 
@@ -258,6 +261,45 @@ TEST(EntryUpdated, reacts_to_writes_since_it_last_looked) {
   EXPECT_EQ(wait->tick(), R);  // WaitValueUpdate: RUNNING until written
 }
 
+TEST(AsyncSequence, yields_after_a_child_that_finished_in_the_tick_it_was_entered) {
+  auto seq = std::make_unique<SequenceNode>("async", true);
+  ScriptedLeaf *a, *b, *c;
+  seq->addChild(scripted(&a, {S}));
+  seq->addChild(scripted(&b, {R, S}));
+  seq->addChild(scripted(&c, {S}));
+  EXPECT_EQ(seq->tick(), R);  // a succeeded at once: yield
+  EXPECT_EQ(b->ticks, 0);
+  EXPECT_EQ(seq->tick(), R);  // b runs
+  EXPECT_EQ(seq->tick(), S);  // b had been running: c in the same tick, the last child
+  auto fallback = std::make_unique<SelectorNode>("async", true);
+  fallback->addChild(scripted(&a, {F}));
+  fallback->addChild(scripted(&b, {S}));
+  EXPECT_EQ(fallback->tick(), R);
+  EXPECT_EQ(fallback->tick(), S);
+}
+
+TEST(TryCatch, a_failure_in_the_try_block_runs_the_catch_child_then_fails) {
+  ScriptedLeaf *a, *b, *catcher;
+  auto node = compose<TryCatchNode>({&a, &b, &catcher}, {{S}, {R, F, S}, {R, S}}, false);
+  EXPECT_EQ(node->tick(), R);
+  EXPECT_EQ(node->tick(), R);  // b failed: catch ticked in the same tick, running
+  EXPECT_EQ(catcher->ticks, 1);
+  EXPECT_EQ(node->tick(), F);  // catch finished: FAILURE whatever it returned
+  EXPECT_EQ(node->tick(), S);  // a new run: the try block succeeds
+  EXPECT_EQ(catcher->ticks, 2);
+  EXPECT_NE(node->childCountProblem(1), "");
+}
+
+TEST(TryCatch, catch_on_halt_runs_the_catch_child_when_halted_in_the_try_block) {
+  ScriptedLeaf *a, *catcher;
+  auto node = compose<TryCatchNode>({&a, &catcher}, {{R}, {R}}, true);
+  EXPECT_EQ(node->tick(), R);
+  node->halt();
+  EXPECT_EQ(a->halts, 1);
+  EXPECT_EQ(catcher->ticks, 1);
+  EXPECT_EQ(catcher->halts, 1);  // still running: stopped
+}
+
 /// The standard nodes as a tree file names them, with BT.CPP's ports.
 TEST(StandardNodes, are_read_from_tree_files_with_behaviortree_cpp_s_ports) {
   TreeFactory factory;
@@ -279,6 +321,8 @@ TEST(StandardNodes, are_read_from_tree_files_with_behaviortree_cpp_s_ports) {
     <WasEntryUpdated entry="{mode}"/>
     <SkipUnlessUpdated entry="mode"><AlwaysSuccess/></SkipUnlessUpdated>
     <WaitValueUpdate entry="mode"><AlwaysSuccess/></WaitValueUpdate>
+    <TryCatch catch_on_halt="true"><AsyncSequence><AlwaysSuccess/></AsyncSequence><AlwaysSuccess/></TryCatch>
+    <AsyncFallback><AlwaysSuccess/></AsyncFallback>
     <KeepRunningUntilFailure><AlwaysSuccess/></KeepRunningUntilFailure>
   </Sequence>
 </BehaviorTree></root>)");

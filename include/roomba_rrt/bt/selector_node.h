@@ -22,7 +22,11 @@ namespace roomba_rrt::bt {
 /// Halting the Selector halts the running child and rewinds to the first child.
 class SelectorNode final : public ControlNode {
  public:
-  using ControlNode::ControlNode;
+  /// `async` (BehaviorTree.CPP's AsyncSelector): after a child that finished with FAILURE in the
+  /// tick it was entered in, return RUNNING and go on with the next child on the next tick, so a
+  /// long row of instant children does not run in one tick.
+  explicit SelectorNode(std::string name, bool async = false)
+      : ControlNode(std::move(name)), async_(async) {}
 
  private:
   void onEnter() override {
@@ -31,6 +35,7 @@ class SelectorNode final : public ControlNode {
   }
   Status onTick() override;
 
+  bool async_;
   std::size_t current_ = 0;  ///< the child ticked next
   bool executed_ = false;    ///< a child was not skipped in this run
 };

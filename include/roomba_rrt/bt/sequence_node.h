@@ -21,7 +21,11 @@ namespace roomba_rrt::bt {
 /// Halting the Sequence halts the running child and rewinds to the first child.
 class SequenceNode final : public ControlNode {
  public:
-  using ControlNode::ControlNode;
+  /// `async` (BehaviorTree.CPP's AsyncSequence): after a child that finished with SUCCESS in the
+  /// tick it was entered in, return RUNNING and go on with the next child on the next tick, so a
+  /// long row of instant children does not run in one tick.
+  explicit SequenceNode(std::string name, bool async = false)
+      : ControlNode(std::move(name)), async_(async) {}
 
  private:
   void onEnter() override {
@@ -30,6 +34,7 @@ class SequenceNode final : public ControlNode {
   }
   Status onTick() override;
 
+  bool async_;
   std::size_t current_ = 0;  ///< the child ticked next
   bool executed_ = false;    ///< a child was not skipped in this run
 };
