@@ -7,6 +7,7 @@
 
 #include "roomba_rrt/bt/control_node.h"
 #include "roomba_rrt/bt/decorator_node.h"
+#include "roomba_rrt/bt/tree.h"
 
 namespace roomba_rrt::bt {
 namespace {

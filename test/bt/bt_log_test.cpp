@@ -2,6 +2,8 @@
 // where BT.CPP puts them, damaged files refused, and the text roomba_bt --print-log prints.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 
 #include "roomba_rrt/bt/bt_file_logger.h"
@@ -173,6 +175,26 @@ TEST(BtFileLogger, records_each_change_with_resets_to_idle_as_bt_cpp_does) {
             "    0.033334  Roomba/root  RUNNING -> IDLE\n");
   // Detached: the tree ticks without it.
   EXPECT_EQ(r.tree.tick(), Status::kRunning);
+}
+
+TEST(BtFileLogger, a_tree_records_into_a_file_it_owns_until_the_log_stops) {
+  Recorded r;
+  const std::string path = ::testing::TempDir() + "bt_log_test.btlog";
+  r.tree.startLog(std::make_unique<std::ofstream>(path, std::ios::binary), "Roomba", "",
+                  [&r] { return r.now; });
+  r.tree.tick();
+  r.now += 16667;
+  r.tree.tick();
+  ASSERT_NE(r.tree.logger(), nullptr);
+  const std::size_t written = r.tree.logger()->transitions();
+  r.tree.stopLog();
+  EXPECT_EQ(r.tree.logger(), nullptr);
+  r.tree.tick();  // not recorded
+  const BtLog log = readBtLogFile(path);
+  EXPECT_EQ(log.transitions.size(), written);
+  EXPECT_EQ(log.transitions.size(), 10u);
+  EXPECT_EQ(log.transitions.back(), (LogTransition{16667, 1, LogStatus::kSuccess}));
+  std::remove(path.c_str());
 }
 
 }  // namespace

@@ -8,6 +8,10 @@
 #include "roomba_rrt/behavior/roomba_state.h"
 #include "roomba_rrt/robot/robot_state.h"
 
+namespace roomba_rrt::bt {
+class Tree;
+}
+
 namespace roomba_rrt::behavior {
 
 /// A Roomba behaviour ticked once per sample time: bumper in, (v, ω) out.
@@ -34,6 +38,9 @@ class RoombaBehavior {
   /// keeps its own until it ends, as the lab's rules say. The rate is the sample time the
   /// behaviour was started with and stays: `params.rate` is ignored.
   virtual void setParams(const RoombaParams& params);
+
+  /// The behavior tree it runs, or nullptr (the FSM): roomba_bt records it into ~log_file.
+  virtual bt::Tree* behaviorTree() { return nullptr; }
 
  protected:
   RoombaParams params_;

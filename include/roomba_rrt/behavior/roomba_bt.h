@@ -36,6 +36,7 @@ class RoombaBt final : public RoombaBehavior {
   /// True when the last tick was an idle tick (the root finished).
   bool lastTickIdle() const { return idle_; }
   bt::Tree& tree() { return tree_; }
+  bt::Tree* behaviorTree() override { return &tree_; }
 
  private:
   /// `xml` is the file's text when `from_file` is false.

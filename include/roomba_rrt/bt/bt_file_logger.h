@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "roomba_rrt/bt/bt_log.h"
-#include "roomba_rrt/bt/tree.h"
+#include "roomba_rrt/bt/tree_node.h"
 
 namespace roomba_rrt::bt {
+
+class Tree;
 
 /// The tree below `root` as BehaviorTree.CPP writes it for Groot2 (WriteTreeToXML with
 /// metadata): one <BehaviorTree ID="`tree_id`">, every node an element of its type name with
