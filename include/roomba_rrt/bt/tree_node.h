@@ -12,7 +12,8 @@ struct NodeConditions;
 class TreeNode;
 
 /// Told of every status a node returns and of every halt: a logger (bt_file_logger.h) or a
-/// monitor. Opt-in per node (TreeNode::setObserver); nodes without one pay nothing for it.
+/// monitor. Opt-in per node (TreeNode::setObserver); a node without one (and without
+/// conditions) pays one predictable branch per tick for the possibility.
 class TreeObserver {
  public:
   virtual ~TreeObserver() = default;
