@@ -37,8 +37,9 @@ class ScriptError : public std::runtime_error {
 /// - arithmetic `+ - * /` and unary `-` on numbers; comparisons `== != < <= > >=` on two
 ///   numbers, two strings, or two booleans (== and != only); `&&`, `||`, `!` on booleans (a
 ///   number is true when it is not 0); parentheses.
-/// Not supported: BT.CPP's `..` (string concatenation), `? :`, `+=` and friends, bit operators,
-/// hex literals and enums.
+/// Not supported: BT.CPP's `..` (string concatenation), `? :`, `+=` and friends, bit operators
+/// and enums. At most 64 levels of nesting and 1000 operands and operators (the parser and the
+/// evaluation recurse).
 class Script {
  public:
   /// Maps a variable name to its blackboard key (the SubTree's scope); std::invalid_argument
