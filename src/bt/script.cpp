@@ -209,6 +209,7 @@ class Parser {
       if (end == begin || nameAt(at_ + static_cast<std::size_t>(end - begin))) {
         fail("a malformed number");
       }
+      if (!std::isfinite(value)) fail("a number out of range");
       at_ += static_cast<std::size_t>(end - begin);
       e->literal = value;
       return e;
@@ -315,19 +316,27 @@ ScriptValue evaluate(Blackboard& board, const Expr& e) {
   }
   const ScriptValue a = evaluate(board, *e.left);
   const ScriptValue b = evaluate(board, *e.right);
+  double result = 0;
   switch (e.op) {
     case Op::kAdd:
-      return number(a) + number(b);
+      result = number(a) + number(b);
+      break;
     case Op::kSubtract:
-      return number(a) - number(b);
+      result = number(a) - number(b);
+      break;
     case Op::kMultiply:
-      return number(a) * number(b);
+      result = number(a) * number(b);
+      break;
     case Op::kDivide:
       if (number(b) == 0) throw ScriptError("division by zero");
-      return number(a) / number(b);
+      result = number(a) / number(b);
+      break;
     default:
       return compare(e.op, a, b);
   }
+  if (!std::isfinite(result))
+    throw ScriptError("a result out of range (" + show(a) + ", " + show(b) + ")");
+  return result;
 }
 
 }  // namespace

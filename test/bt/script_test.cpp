@@ -71,6 +71,7 @@ TEST(Script, what_cannot_be_evaluated_says_why) {
   EXPECT_EQ(evaluationError("mode + 1", board), "arithmetic needs numbers, got 'clean'");
   EXPECT_EQ(evaluationError("mode == 1", board), "cannot compare 'clean' with 1");
   EXPECT_EQ(evaluationError("1 / 0", board), "division by zero");
+  EXPECT_EQ(evaluationError("1e308 * 10", board), "a result out of range (1e+308, 10)");
   EXPECT_THROW(Script("mode", sameName).isTrue(board), ScriptError);
   board.set<std::vector<int>>("list", {});
   EXPECT_EQ(evaluationError("list", board).find("'list' holds "), 0u);
@@ -82,6 +83,7 @@ TEST(Script, syntax_errors_name_the_column) {
   EXPECT_EQ(syntaxError("'open"), "script ''open': a string without its closing quote at column 1");
   EXPECT_EQ(syntaxError("1 +"), "script '1 +': expected a value at column 4");
   EXPECT_EQ(syntaxError(" ; "), "the script is empty");
+  EXPECT_EQ(syntaxError("x := 1e999"), "script 'x := 1e999': a number out of range at column 6");
   EXPECT_EQ(syntaxError("a $ 1"), "script 'a $ 1': expected ';' or the end at column 3");
   // Parsing and evaluating recurse: a hostile file cannot exhaust the stack.
   EXPECT_NE(syntaxError(std::string(100000, '(') + "1").find("nested deeper than 64 levels"),
