@@ -153,6 +153,14 @@ struct TreeFactory::Scope {
     if (autoremap) return parent->resolve(text);
     return "{" + prefix + key + "}";
   }
+  /// The blackboard key a script's variable `name` is in this scope (a port's `{name}`).
+  std::string keyOf(const std::string& name) const {
+    std::string key;
+    if (!parseBlackboardKey(resolve("{" + name + "}"), key)) {
+      throw std::invalid_argument("the SubTree passes a literal for it, not a key");
+    }
+    return key;
+  }
 };
 
 /// What the build of one tree collects to check the blackboard keys at the end.
@@ -362,7 +370,7 @@ std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int 
     fail(state.source, element, error.what());
   }
   if (!node) fail(state.source, element, "the registered builder returned no node");
-  node->setConditions(readConditions(element, spec, state));
+  node->setConditions(readConditions(element, spec.key_of, state));
   const auto legacy = legacySpellings().find(spec.type);
   node->setTypeName(legacy == legacySpellings().end() ? spec.type : legacy->second);
   auto* control = dynamic_cast<ControlNode*>(node.get());
@@ -407,6 +415,7 @@ std::unique_ptr<TreeNode> TreeFactory::buildSubTree(const XMLElement& element, i
     const std::string key = a->Name();
     const std::string value = a->Value();
     if (key == "ID" || key == "name") continue;
+    if (NodeConditions::isConditionAttribute(key)) continue;  // on the tree's root, below
     if (key == "_autoremap") {
       if (value != "true" && value != "false") {
         fail(state.source, element,
@@ -434,6 +443,17 @@ std::unique_ptr<TreeNode> TreeFactory::buildSubTree(const XMLElement& element, i
   state.subtrees.pop_back();
   state.scope = caller_scope;
   state.source = caller_source;
+  // Pre/post-conditions on the SubTree element guard the tree's root, in the caller's scope.
+  if (auto conditions = readConditions(
+          element, [caller_scope](const std::string& name) { return caller_scope->keyOf(name); },
+          state)) {
+    if (node->hasConditions()) {
+      fail(state.source, element,
+           std::string("both this SubTree and the root of tree \"") + id +
+               "\" have pre/post-conditions: keep them in one place");
+    }
+    node->setConditions(std::move(conditions));
+  }
   return node;
 }
 
@@ -446,13 +466,7 @@ NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& ent
   spec.blackboard = state.blackboard;
   spec.ports = &entry.ports;
   spec.tick_rate = tick_rate_;
-  spec.key_of = [scope = state.scope](const std::string& name) {
-    std::string key;
-    if (!parseBlackboardKey(scope->resolve("{" + name + "}"), key)) {
-      throw std::invalid_argument("the SubTree passes a literal for it, not a key");
-    }
-    return key;
-  };
+  spec.key_of = [scope = state.scope](const std::string& name) { return scope->keyOf(name); };
   for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
     const std::string key = a->Name();
     if (key == "name") {
@@ -470,7 +484,7 @@ NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& ent
 }
 
 std::shared_ptr<const NodeConditions> TreeFactory::readConditions(const XMLElement& element,
-                                                                  const NodeSpec& spec,
+                                                                  const Script::KeyOf& key_of,
                                                                   BuildState& state) const {
   std::shared_ptr<NodeConditions> conditions;
   for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
@@ -480,7 +494,7 @@ std::shared_ptr<const NodeConditions> TreeFactory::readConditions(const XMLEleme
       conditions->board = state.blackboard;
     }
     try {
-      conditions->set(a->Name(), Script(a->Value(), spec.key_of));
+      conditions->set(a->Name(), Script(a->Value(), key_of));
     } catch (const std::invalid_argument& error) {
       fail(state.source, element, std::string("attribute '") + a->Name() + "': " + error.what());
     }

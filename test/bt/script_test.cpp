@@ -244,6 +244,33 @@ TEST_F(ScriptedTree, script_variables_follow_the_subtree_s_remapping) {
   EXPECT_EQ(*board->get<double>("Count#1/private"), 1.0);
 }
 
+TEST_F(ScriptedTree, conditions_on_a_subtree_guard_its_root_in_the_caller_s_scope) {
+  Tree tree = factory.buildFromText(R"(<root BTCPP_format="4" main_tree_to_execute="Main">
+  <BehaviorTree ID="Main">
+    <SubTree ID="Job" _successIf="done" _onSuccess="done := true"/>
+  </BehaviorTree>
+  <BehaviorTree ID="Job"><Work/></BehaviorTree>
+</root>)",
+                                    "t.xml", board);
+  board->set<bool>("done", false);
+  EXPECT_EQ(tree.tick(), R);
+  EXPECT_EQ(tree.tick(), S);
+  EXPECT_EQ(*board->get<bool>("done"), true);  // the caller's key, not Job#1/done
+  EXPECT_EQ(tree.tick(), S);                   // _successIf: Work not ticked again
+  EXPECT_EQ(work->ticks, 2);
+  try {
+    factory.buildFromText(R"(<root BTCPP_format="4" main_tree_to_execute="Main">
+  <BehaviorTree ID="Main"><SubTree ID="Twice" _skipIf="true"/></BehaviorTree>
+  <BehaviorTree ID="Twice"><Work _skipIf="false"/></BehaviorTree></root>)",
+                          "t.xml");
+    FAIL() << "conditions in two places were accepted";
+  } catch (const TreeFileError& e) {
+    EXPECT_STREQ(e.what(),
+                 "t.xml:2: <SubTree>: both this SubTree and the root of tree \"Twice\" have "
+                 "pre/post-conditions: keep them in one place");
+  }
+}
+
 TEST_F(ScriptedTree, bad_scripts_and_unknown_conditions_are_refused_naming_the_element) {
   EXPECT_EQ(errorOf("<Script code=\"a :=\"/>"),
             "t.xml:2: <Script>: script 'a :=': expected a value at column 5");

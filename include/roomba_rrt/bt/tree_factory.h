@@ -123,7 +123,8 @@ enum class NodeKind {
 /// our deterministic `ticks`) and Nav2's RateController (`hz`); BehaviorTree.CPP 4's other
 /// standard nodes (registerStandardNodes(), doc/behaviours.md) and the pre/post-condition
 /// attributes `_failureIf`, `_successIf`, `_skipIf`, `_while`, `_onSuccess`, `_onFailure`,
-/// `_post`, `_onHalted` on any node but a SubTree (node_conditions.h); SubTree (`ID`, port
+/// `_post`, `_onHalted` on any node, a SubTree's guarding its tree's root (node_conditions.h);
+/// SubTree (`ID`, port
 /// remapping `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit
 /// form
 /// `<Action ID="MoveForward"/>` (also Condition, Control, Decorator; Groot 1 writes it), read as
@@ -244,7 +245,7 @@ class TreeFactory {
                  BuildState& state) const;
   /// The pre/post-condition scripts in `element`'s attributes (`_successIf`, ...), or nullptr.
   std::shared_ptr<const NodeConditions> readConditions(const tinyxml2::XMLElement& element,
-                                                       const NodeSpec& spec,
+                                                       const Script::KeyOf& key_of,
                                                        BuildState& state) const;
   void notice(const std::string& text) const;
   /// Registers the standard nodes of BehaviorTree.CPP 4 besides the ones the tree files of this

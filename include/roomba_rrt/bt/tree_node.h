@@ -65,6 +65,7 @@ class TreeNode {
   /// The instance name (from the tree file's `name` attribute, or the node type).
   const std::string& name() const { return name_; }
   /// Gives the node pre/post-condition scripts (the tree factory does, for `_successIf` & co).
+  bool hasConditions() const { return conditions_ != nullptr; }
   void setConditions(std::shared_ptr<const NodeConditions> conditions) {
     conditions_ = std::move(conditions);
     plain_ = !conditions_ && !observer_;
