@@ -9,6 +9,7 @@ pkg_check_modules(TINYXML2 REQUIRED IMPORTED_TARGET tinyxml2)
 add_library(roomba_behavior_core
   src/fsm/state_machine.cpp
   src/bt/status.cpp
+  src/bt/tree_node.cpp
   src/bt/control_node.cpp
   src/bt/sequence_node.cpp
   src/bt/sequence_with_memory.cpp
@@ -22,9 +23,28 @@ add_library(roomba_behavior_core
   src/bt/repeat_node.cpp
   src/bt/retry_node.cpp
   src/bt/timeout_node.cpp
+  src/bt/keep_running_until_failure.cpp
+  src/bt/delay_node.cpp
+  src/bt/sleep_node.cpp
+  src/bt/parallel_node.cpp
+  src/bt/parallel_all_node.cpp
+  src/bt/if_then_else_node.cpp
+  src/bt/while_do_else_node.cpp
+  src/bt/switch_node.cpp
+  src/bt/run_once_node.cpp
+  src/bt/entry_updated.cpp
+  src/bt/try_catch_node.cpp
+  src/bt/script.cpp
+  src/bt/node_conditions.cpp
+  src/bt/script_node.cpp
+  src/bt/precondition_node.cpp
+  src/bt/blackboard_nodes.cpp
+  src/bt/bt_log.cpp
+  src/bt/bt_file_logger.cpp
   src/bt/tree_factory.cpp
   src/bt/tree_monitor.cpp
   src/bt/groot2_protocol.cpp
+  src/bt/xml_parsing.cpp
   src/behavior/roomba_params.cpp
   src/behavior/roomba_state.cpp
   src/behavior/motion_primitives.cpp
@@ -72,6 +92,8 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(bt_test test/bt/control_nodes_test.cpp test/bt/decorators_test.cpp
     test/bt/tree_factory_test.cpp test/bt/tree_file_format_test.cpp
     test/bt/blackboard_ports_test.cpp test/bt/nav_control_nodes_test.cpp
+    test/bt/standard_nodes_test.cpp test/bt/script_test.cpp
+    test/bt/bt_log_test.cpp test/bt/skipped_test.cpp
     LINK roomba_behavior_core PkgConfig::TINYXML2)
   # Watching a tree: the monitor's statuses, Groot2's protocol, and its server over ZeroMQ.
   roomba_rrt_gtest(bt_monitor_test test/bt/tree_monitor_test.cpp test/bt/groot2_protocol_test.cpp

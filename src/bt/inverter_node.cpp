@@ -11,6 +11,8 @@ Status InverterNode::onTick() {
       return Status::kSuccess;
     case Status::kRunning:
       return Status::kRunning;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("Inverter", status);
   }

@@ -38,6 +38,8 @@ Status RateController::onTick() {
     case Status::kSuccess:
     case Status::kRunning:
       return status;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("RateController", status);
   }

@@ -3,11 +3,15 @@
 namespace roomba_rrt::bt {
 
 Status ReactiveSelector::onTick() {
+  bool executed = false;
   for (std::size_t i = 0; i < children_.size(); ++i) {
     const Status status = children_[i]->tick();
     switch (status) {
       case Status::kFailure:
+        executed = true;
         break;  // tick the next child in this same tick
+      case Status::kSkipped:
+        break;
       case Status::kSuccess:
       case Status::kRunning:
         haltChildren(i + 1);  // a later child may have been running
@@ -16,7 +20,7 @@ Status ReactiveSelector::onTick() {
         throwImpossibleStatus("ReactiveSelector", status);
     }
   }
-  return Status::kFailure;
+  return executed ? Status::kFailure : Status::kSkipped;
 }
 
 }  // namespace roomba_rrt::bt

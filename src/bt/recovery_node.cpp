@@ -24,6 +24,7 @@ Status RecoveryNode::onTick() {
     switch (status) {
       case Status::kSuccess:
       case Status::kRunning:
+      case Status::kSkipped:
         return status;
       case Status::kFailure:
         if (retries_ >= number_of_retries_) return Status::kFailure;
@@ -44,6 +45,9 @@ Status RecoveryNode::onTick() {
       return Status::kFailure;
     case Status::kRunning:
       return Status::kRunning;
+    case Status::kSkipped:
+      recovering_ = false;
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("RecoveryNode", status);
   }

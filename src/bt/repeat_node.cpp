@@ -25,6 +25,8 @@ Status RepeatNode::onTick() {
       return Status::kFailure;
     case Status::kRunning:
       return Status::kRunning;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("Repeat", status);
   }

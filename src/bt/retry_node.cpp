@@ -25,6 +25,8 @@ Status RetryNode::onTick() {
       return Status::kRunning;  // the child is not running, so the next tick enters it anew
     case Status::kRunning:
       return Status::kRunning;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("Retry", status);
   }

@@ -4,13 +4,19 @@ namespace roomba_rrt::bt {
 
 Status SelectorNode::onTick() {
   while (current_ < children_.size()) {
+    const bool was_running = children_[current_]->isRunning();
     const Status status = children_[current_]->tick();
     switch (status) {
       case Status::kSuccess:
         current_ = 0;
         return Status::kSuccess;
       case Status::kFailure:
+        executed_ = true;
         ++current_;  // enter and tick the next child in this same tick
+        if (async_ && !was_running && current_ < children_.size()) return Status::kRunning;
+        break;
+      case Status::kSkipped:
+        ++current_;
         break;
       case Status::kRunning:
         return Status::kRunning;
@@ -19,7 +25,7 @@ Status SelectorNode::onTick() {
     }
   }
   current_ = 0;
-  return Status::kFailure;
+  return executed_ ? Status::kFailure : Status::kSkipped;
 }
 
 }  // namespace roomba_rrt::bt

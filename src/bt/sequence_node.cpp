@@ -4,10 +4,16 @@ namespace roomba_rrt::bt {
 
 Status SequenceNode::onTick() {
   while (current_ < children_.size()) {
+    const bool was_running = children_[current_]->isRunning();
     const Status status = children_[current_]->tick();
     switch (status) {
       case Status::kSuccess:
+        executed_ = true;
         ++current_;  // enter and tick the next child in this same tick
+        if (async_ && !was_running && current_ < children_.size()) return Status::kRunning;
+        break;
+      case Status::kSkipped:
+        ++current_;
         break;
       case Status::kFailure:
         current_ = 0;
@@ -19,7 +25,7 @@ Status SequenceNode::onTick() {
     }
   }
   current_ = 0;
-  return Status::kSuccess;
+  return executed_ ? Status::kSuccess : Status::kSkipped;
 }
 
 }  // namespace roomba_rrt::bt

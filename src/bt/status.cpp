@@ -13,6 +13,8 @@ const char* toString(Status status) {
       return "FAILURE";
     case Status::kRunning:
       return "RUNNING";
+    case Status::kSkipped:
+      return "SKIPPED";
   }
   return "INVALID";
 }

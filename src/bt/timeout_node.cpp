@@ -33,6 +33,8 @@ Status TimeoutNode::onTick() {
       if (elapsed_ < ticks_) return Status::kRunning;
       child_->halt();
       return Status::kFailure;
+    case Status::kSkipped:  // the child did not run: neither does this node
+      return Status::kSkipped;
     default:
       throwImpossibleStatus("Timeout", status);
   }

@@ -1,37 +1,42 @@
+// The node registry of TreeFactory (BehaviorTree.CPP's bt_factory): node types, their kinds,
+// builders and ports, and the built-in control nodes and decorators. Reading tree files is
+// xml_parsing.cpp.
 #include "roomba_rrt/bt/tree_factory.h"
 
-#include <tinyxml2.h>
-
-#include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <set>
-#include <sstream>
 
+#include "roomba_rrt/bt/always_status.h"
+#include "roomba_rrt/bt/blackboard_nodes.h"
+#include "roomba_rrt/bt/delay_node.h"
+#include "roomba_rrt/bt/entry_updated.h"
+#include "roomba_rrt/bt/force_status.h"
+#include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/inverter_node.h"
+#include "roomba_rrt/bt/keep_running_until_failure.h"
+#include "roomba_rrt/bt/parallel_all_node.h"
+#include "roomba_rrt/bt/parallel_node.h"
 #include "roomba_rrt/bt/pipeline_sequence.h"
+#include "roomba_rrt/bt/precondition_node.h"
 #include "roomba_rrt/bt/rate_controller.h"
 #include "roomba_rrt/bt/reactive_selector.h"
 #include "roomba_rrt/bt/reactive_sequence.h"
 #include "roomba_rrt/bt/recovery_node.h"
 #include "roomba_rrt/bt/repeat_node.h"
 #include "roomba_rrt/bt/retry_node.h"
+#include "roomba_rrt/bt/run_once_node.h"
+#include "roomba_rrt/bt/script_node.h"
 #include "roomba_rrt/bt/selector_node.h"
 #include "roomba_rrt/bt/sequence_node.h"
 #include "roomba_rrt/bt/sequence_with_memory.h"
+#include "roomba_rrt/bt/sleep_node.h"
+#include "roomba_rrt/bt/switch_node.h"
 #include "roomba_rrt/bt/timeout_node.h"
-#include "roomba_rrt/util/text_file.h"
+#include "roomba_rrt/bt/try_catch_node.h"
+#include "roomba_rrt/bt/while_do_else_node.h"
 
 namespace roomba_rrt::bt {
 namespace {
-
-using tinyxml2::XMLElement;
-
-int childElementCount(const XMLElement& element) {
-  int count = 0;
-  for (const XMLElement* c = element.FirstChildElement(); c; c = c->NextSiblingElement()) ++count;
-  return count;
-}
 
 /// A builder for node types whose only argument is the instance name.
 template <class Node>
@@ -39,115 +44,13 @@ TreeFactory::Builder namedBuilder() {
   return [](const NodeSpec& spec) { return std::make_unique<Node>(spec.name); };
 }
 
-[[noreturn]] void fail(const std::string& source, const XMLElement& element,
-                       const std::string& message) {
-  throw TreeFileError(source, element.GetLineNum(), "<" + std::string(element.Name()) + ">",
-                      message);
-}
-
-/// The spellings of BehaviorTree.CPP v3 and of our earlier tree files, and their v4 names.
-const std::map<std::string, std::string>& legacySpellings() {
-  static const std::map<std::string, std::string> kSpellings = {
-      {"Selector", "Fallback"},
-      {"ReactiveSelector", "ReactiveFallback"},
-      {"Retry", "RetryUntilSuccessful"},
-      {"RetryUntilSuccesful", "RetryUntilSuccessful"},  // v3's misspelling
-      {"SequenceStar", "SequenceWithMemory"},
-  };
-  return kSpellings;
-}
-
-/// The nodes BehaviorTree.CPP v4 builds in: Groot2 knows them without a model.
-bool builtIntoBehaviorTreeCpp(const std::string& type) {
-  static const std::set<std::string> kBuiltIn = {"Sequence",         "SequenceWithMemory",
-                                                 "Fallback",         "ReactiveSequence",
-                                                 "ReactiveFallback", "Inverter",
-                                                 "Repeat",           "RetryUntilSuccessful",
-                                                 "Timeout",          "SubTree"};
-  return kBuiltIn.count(type) > 0;
-}
-
-/// The directory part of `path` with its '/', or "" (relative includes of a text: the cwd).
-std::string directoryOf(const std::string& path) {
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? "" : path.substr(0, slash + 1);
-}
-
-/// A tree file's text: a readable regular file of at most 1 MiB (not a directory or a device an
-/// include might name), else a TreeFileError saying why.
-std::string readFile(const std::string& path) {
-  constexpr std::size_t kMaxTreeFileBytes = 1 << 20;
-  try {
-    return util::readTextFile(path, kMaxTreeFileBytes, "tree file");
-  } catch (const util::InvalidInput& error) {
-    throw TreeFileError(path, 0, "", error.problem());
-  }
-}
-
-/// "port 'goal' (Pose2D: the goal pose)" for messages.
-std::string describe(const PortInfo& port) {
-  return "port '" + port.name + "' (" + port.type_name +
-         (port.description.empty() ? "" : ": " + port.description) + ")";
+/// Milliseconds as ticks at the tree's tick rate: 0 stays 0 (Delay and Sleep: at once).
+long ticksOf(const NodeSpec& spec, const std::string& port) {
+  const long msec = spec.literal<long>(port);
+  return msec == 0 ? 0 : TimeoutNode::ticksFor(msec, spec.tick_rate);
 }
 
 }  // namespace
-
-/// Every <BehaviorTree> a build can reach: the main file's and its includes', by ID. The
-/// documents stay alive as long as the library, since the definitions point into them.
-struct TreeFactory::Library {
-  struct Definition {
-    const XMLElement* element;
-    std::string source;  ///< the file (or text) that defines it, for messages
-  };
-  std::vector<std::unique_ptr<tinyxml2::XMLDocument>> documents;
-  std::map<std::string, Definition> trees;
-  std::vector<std::string> loading;  ///< the include chain being read (cycle check)
-};
-
-/// Where the blackboard keys of the nodes being built live: the main tree's are the
-/// blackboard's own; a SubTree's are remapped to its parent's or private to it.
-struct TreeFactory::Scope {
-  const Scope* parent = nullptr;             ///< nullptr: the main tree
-  std::map<std::string, std::string> remap;  ///< subtree key -> text in the parent's scope
-  bool autoremap = false;
-  std::string prefix;  ///< of private keys, "ID#n/"
-
-  /// An attribute's text as the blackboard sees it: `{key}` resolved to the main tree's key (or
-  /// to the literal a SubTree passed for it); any other text unchanged.
-  std::string resolve(const std::string& text) const {
-    std::string key;
-    if (!parent || !parseBlackboardKey(text, key)) return text;
-    const auto it = remap.find(key);
-    if (it != remap.end()) return parent->resolve(it->second);
-    if (autoremap) return parent->resolve(text);
-    return "{" + prefix + key + "}";
-  }
-};
-
-/// What the build of one tree collects to check the blackboard keys at the end.
-struct TreeFactory::BuildState {
-  std::string source;  ///< the file of the definition being built
-  const Library* library = nullptr;
-  const Scope* scope = nullptr;
-  std::vector<std::string> subtrees;     ///< the SubTree IDs being built (cycle check)
-  std::map<std::string, int> instances;  ///< SubTree ID -> instances built so far
-  Blackboard* blackboard = nullptr;
-  std::set<std::string> declared_before;  ///< keys the application declared
-  std::set<std::string> named;            ///< keys the tree file names
-  std::set<std::string> written;          ///< keys some output port writes
-  struct Read {
-    std::string key;
-    std::string port;
-    std::string source;
-    const XMLElement* element;
-  };
-  std::vector<Read> reads;  ///< input ports bound to keys
-  int nodes = 0;
-};
-
-TreeFileError::TreeFileError(const std::string& source, int line, const std::string& element,
-                             const std::string& problem)
-    : util::InvalidInput(element, problem, source + ":" + std::to_string(line)), line_(line) {}
 
 const std::string& NodeSpec::text(const std::string& port) const {
   const auto it = attributes.find(port);
@@ -192,6 +95,105 @@ TreeFactory::TreeFactory()
     return std::make_unique<RateController>(s.name, s.literal<double>("hz"), s.tick_rate,
                                             *s.blackboard);
   });
+  registerStandardNodes();
+}
+
+void TreeFactory::registerStandardNodes() {
+  registerNode("AlwaysSuccess", NodeKind::kLeaf, namedBuilder<AlwaysSuccess>());
+  registerNode("AlwaysFailure", NodeKind::kLeaf, namedBuilder<AlwaysFailure>());
+  registerNodeType<SleepNode>("Sleep", [](const NodeSpec& s) {
+    return std::make_unique<SleepNode>(s.name, ticksOf(s, "msec"), *s.blackboard);
+  });
+  registerNode("ForceSuccess", NodeKind::kDecorator, namedBuilder<ForceSuccess>());
+  registerNode("ForceFailure", NodeKind::kDecorator, namedBuilder<ForceFailure>());
+  registerNode("KeepRunningUntilFailure", NodeKind::kDecorator,
+               namedBuilder<KeepRunningUntilFailure>());
+  registerNodeType<DelayNode>("Delay", [](const NodeSpec& s) {
+    return std::make_unique<DelayNode>(s.name, ticksOf(s, "delay_msec"), *s.blackboard);
+  });
+  registerNodeType<ParallelNode>("Parallel", [](const NodeSpec& s) {
+    return std::make_unique<ParallelNode>(s.name, s.literal<int>("success_count"),
+                                          s.literal<int>("failure_count"));
+  });
+  registerNodeType<ParallelAllNode>("ParallelAll", [](const NodeSpec& s) {
+    return std::make_unique<ParallelAllNode>(s.name, s.literal<int>("max_failures"));
+  });
+  registerNodeType<RunOnceNode>("RunOnce", [](const NodeSpec& s) {
+    return std::make_unique<RunOnceNode>(s.name, s.literal<bool>("then_skip"));
+  });
+  registerNode("AsyncSequence", NodeKind::kControl,
+               [](const NodeSpec& s) { return std::make_unique<SequenceNode>(s.name, true); });
+  registerNode("AsyncFallback", NodeKind::kControl,
+               [](const NodeSpec& s) { return std::make_unique<SelectorNode>(s.name, true); });
+  registerNodeType<TryCatchNode>("TryCatch", [](const NodeSpec& s) {
+    return std::make_unique<TryCatchNode>(s.name, s.literal<bool>("catch_on_halt"));
+  });
+  registerNode("IfThenElse", NodeKind::kControl, namedBuilder<IfThenElseNode>());
+  registerNode("WhileDoElse", NodeKind::kControl, namedBuilder<WhileDoElseNode>());
+  registerNodeType<ScriptNode>("Script", [](const NodeSpec& s) {
+    return std::make_unique<ScriptNode>(s.name, s.script("code"), *s.blackboard);
+  });
+  registerNodeType<ScriptCondition>("ScriptCondition", [](const NodeSpec& s) {
+    return std::make_unique<ScriptCondition>(s.name, s.script("code"), *s.blackboard);
+  });
+  registerNodeType<PreconditionNode>("Precondition", [](const NodeSpec& s) {
+    const std::string otherwise = s.literal<std::string>("else");
+    const std::map<std::string, Status> statuses = {{"SUCCESS", Status::kSuccess},
+                                                    {"FAILURE", Status::kFailure},
+                                                    {"RUNNING", Status::kRunning},
+                                                    {"SKIPPED", Status::kSkipped}};
+    if (statuses.count(otherwise) == 0) {
+      throw std::invalid_argument(
+          "port 'else' must be SUCCESS, FAILURE, RUNNING or SKIPPED, got '" + otherwise + "'");
+    }
+    return std::make_unique<PreconditionNode>(s.name, s.script("if"), statuses.at(otherwise),
+                                              *s.blackboard);
+  });
+  // Their keys are named, not bound: any type scripts know, so plain attributes.
+  registerNode("SetBlackboard", NodeKind::kLeaf,
+               [](const NodeSpec& s) {
+                 std::string source;
+                 const bool copy = parseBlackboardKey(s.literal<std::string>("value"), source);
+                 return std::make_unique<SetBlackboard>(
+                     s.name, s.keyName("output_key"),
+                     copy ? std::optional<std::string>(source) : std::nullopt,
+                     s.literal<std::string>("value"), *s.blackboard);
+               },
+               {"value", "output_key"});
+  registerNode("UnsetBlackboard", NodeKind::kLeaf,
+               [](const NodeSpec& s) {
+                 return std::make_unique<UnsetBlackboard>(s.name, s.keyName("key"), *s.blackboard);
+               },
+               {"key"});
+  registerNode("WasEntryUpdated", NodeKind::kCondition,
+               [](const NodeSpec& s) {
+                 return std::make_unique<WasEntryUpdated>(s.name, s.keyName("entry"),
+                                                          *s.blackboard);
+               },
+               {"entry"});
+  for (const auto& [type, otherwise] :
+       {std::pair<const char*, Status>{"SkipUnlessUpdated", Status::kSkipped},
+        {"WaitValueUpdate", Status::kRunning}}) {
+    registerNode(type, NodeKind::kDecorator,
+                 [otherwise = otherwise](const NodeSpec& s) {
+                   return std::make_unique<EntryUpdatedDecorator>(s.name, s.keyName("entry"),
+                                                                  *s.blackboard, otherwise);
+                 },
+                 {"entry"});
+  }
+  for (std::size_t cases = 2; cases <= 6; ++cases) {
+    registerNodeWithPorts(
+        "Switch" + std::to_string(cases), NodeKind::kControl,
+        [cases](const NodeSpec& s) {
+          std::vector<InputPort<std::string>> values;
+          for (std::size_t i = 1; i <= cases; ++i) {
+            values.push_back(s.input<std::string>("case_" + std::to_string(i)));
+          }
+          return std::make_unique<SwitchNode>(s.name, s.input<std::string>("variable"),
+                                              std::move(values));
+        },
+        SwitchNode::portsFor(cases));
+  }
 }
 
 void TreeFactory::registerNode(const std::string& type, NodeKind kind, Builder builder,
@@ -251,368 +253,6 @@ std::vector<std::string> TreeFactory::registeredTypes() const {
 
 void TreeFactory::notice(const std::string& text) const {
   if (notice_) notice_(text);
-}
-
-Tree TreeFactory::buildFromFile(const std::string& path) const {
-  return buildFromFile(path, std::make_shared<Blackboard>());
-}
-
-Tree TreeFactory::buildFromText(const std::string& xml, const std::string& source) const {
-  return buildFromText(xml, source, std::make_shared<Blackboard>());
-}
-
-Tree TreeFactory::buildFromFile(const std::string& path,
-                                std::shared_ptr<Blackboard> blackboard) const {
-  return buildFromText(readFile(path), path, std::move(blackboard));
-}
-
-const XMLElement& TreeFactory::load(const std::string& xml, const std::string& source,
-                                    Library& library) const {
-  auto& loading = library.loading;
-  if (std::find(loading.begin(), loading.end(), source) != loading.end()) {
-    std::string chain;
-    for (const std::string& file : loading) chain += file + " -> ";
-    throw TreeFileError(source, 0, "", "the file includes itself (" + chain + source + ")");
-  }
-  library.documents.push_back(std::make_unique<tinyxml2::XMLDocument>());
-  tinyxml2::XMLDocument& document = *library.documents.back();
-  if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    throw TreeFileError(source, document.ErrorLineNum(), "",
-                        std::string("malformed XML: ") + document.ErrorStr());
-  }
-  const XMLElement* root = document.RootElement();
-  if (!root || std::string(root->Name()) != "root") {
-    throw TreeFileError(source, root ? root->GetLineNum() : 0, "",
-                        "the document element must be <root>");
-  }
-  const char* format = root->Attribute("BTCPP_format");
-  if (format && std::string(format) != "4" && std::string(format) != "3") {
-    fail(source, *root, std::string("BTCPP_format \"") + format + "\" is not supported (4 or 3)");
-  }
-
-  loading.push_back(source);
-  for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
-    const std::string name = e->Name();
-    if (name == "BehaviorTree") {
-      // A tree without an ID can only be the main file's single tree: SubTree cannot name it.
-      const char* id = e->Attribute("ID");
-      if (!id) continue;
-      const auto [it, fresh] = library.trees.emplace(id, Library::Definition{e, source});
-      if (!fresh) {
-        fail(source, *e,
-             std::string("ID \"") + id + "\" is used twice (first on " +
-                 (it->second.source == source ? "line " : it->second.source + ":") +
-                 std::to_string(it->second.element->GetLineNum()) + ")");
-      }
-    } else if (name == "include") {
-      if (e->Attribute("ros_pkg")) {
-        fail(source, *e, "ros_pkg is not supported: give the file in path, relative to this file");
-      }
-      const char* path = e->Attribute("path");
-      if (!path || !*path) fail(source, *e, "needs a path attribute");
-      const std::string file = path[0] == '/' ? path : directoryOf(source) + path;
-      std::string text;
-      try {
-        text = readFile(file);
-      } catch (const TreeFileError& error) {
-        fail(source, *e, std::string("cannot include \"") + path + "\": " + error.what());
-      }
-      load(text, file, library);
-    } else if (name != "TreeNodesModel") {  // Groot2 keeps its model in the file: not ours to read
-      fail(source, *e, "unknown element under <root> (BehaviorTree, include or TreeNodesModel)");
-    }
-  }
-  loading.pop_back();
-  return *root;
-}
-
-Tree TreeFactory::buildFromText(const std::string& xml, const std::string& source,
-                                std::shared_ptr<Blackboard> blackboard) const {
-  if (!blackboard) throw std::invalid_argument("buildFromText: the blackboard is null");
-  Library library;
-  const XMLElement& root = load(xml, source, library);
-
-  // Pick the <BehaviorTree> to build: the one named by main_tree_to_execute, or the main file's
-  // only one.
-  const XMLElement* chosen = nullptr;
-  if (const char* main_id = root.Attribute("main_tree_to_execute")) {
-    const auto it = library.trees.find(main_id);
-    if (it == library.trees.end()) {
-      fail(source, root, std::string("no <BehaviorTree ID=\"") + main_id + "\">");
-    }
-    chosen = it->second.element;
-  } else {
-    int trees = 0;
-    for (const XMLElement* t = root.FirstChildElement("BehaviorTree"); t;
-         t = t->NextSiblingElement("BehaviorTree")) {
-      chosen = chosen ? chosen : t;
-      ++trees;
-    }
-    if (trees == 0) fail(source, root, "no <BehaviorTree> element");
-    if (trees > 1) {
-      fail(source, root, "several <BehaviorTree> elements; name one in main_tree_to_execute");
-    }
-  }
-
-  const Scope main_scope;
-  BuildState state;
-  state.library = &library;
-  state.scope = &main_scope;
-  state.blackboard = blackboard.get();
-  state.source = source;
-  for (const auto& [id, definition] : library.trees) {
-    if (definition.element == chosen) {
-      state.source = definition.source;
-      state.subtrees.push_back(id);
-    }
-  }
-  if (childElementCount(*chosen) != 1) {
-    fail(state.source, *chosen,
-         "needs exactly one root node, got " + std::to_string(childElementCount(*chosen)));
-  }
-  std::unique_ptr<TreeNode> node = buildNode(*chosen->FirstChildElement(), 1, state);
-  // Keys the application declared count as written by it (it may write them between ticks).
-  for (const auto& read : state.reads) {
-    if (state.written.count(read.key) == 0 && state.declared_before.count(read.key) == 0) {
-      fail(read.source, *read.element,
-           "port '" + read.port + "' reads blackboard key '" + read.key +
-               "', which nothing writes (no output port of the tree names it and the "
-               "application did not declare it)");
-    }
-  }
-  return Tree(std::move(node), std::move(blackboard));
-}
-
-const TreeFactory::Entry& TreeFactory::entryFor(const XMLElement& element,
-                                                const BuildState& state) const {
-  std::string type = element.Name();
-  const auto legacy = legacySpellings().find(type);
-  if (legacy != legacySpellings().end()) {
-    notice(state.source + ":" + std::to_string(element.GetLineNum()) + ": <" + type +
-           "> is read as <" + legacy->second + ">, its BehaviorTree.CPP v4 name: write that");
-    type = legacy->second;
-  }
-  const auto entry = entries_.find(type);
-  if (entry == entries_.end()) fail(state.source, element, "unknown node type");
-  return entry->second;
-}
-
-std::unique_ptr<TreeNode> TreeFactory::buildNode(const XMLElement& element, int depth,
-                                                 BuildState& state) const {
-  if (depth > kMaxDepth) {
-    fail(state.source, element,
-         "nesting deeper than " + std::to_string(kMaxDepth) + " nodes is not supported");
-  }
-  if (++state.nodes > kMaxNodes) {
-    fail(state.source, element,
-         "more than " + std::to_string(kMaxNodes) + " nodes in one tree is not supported");
-  }
-  if (std::string(element.Name()) == "SubTree") return buildSubTree(element, depth, state);
-  const Entry& e = entryFor(element, state);
-  NodeSpec spec = readAttributes(element, e, state);
-  bindPorts(element, e, spec, state);
-
-  const int children = childElementCount(element);
-  if ((e.kind == NodeKind::kLeaf || e.kind == NodeKind::kCondition) && children > 0) {
-    fail(state.source, element, "a leaf cannot have children");
-  }
-  if (e.kind == NodeKind::kControl && children == 0) {
-    fail(state.source, element, "a control node needs at least one child");
-  }
-  if (e.kind == NodeKind::kDecorator && children != 1) {
-    fail(state.source, element,
-         "a decorator needs exactly one child, got " + std::to_string(children));
-  }
-
-  std::unique_ptr<TreeNode> node;
-  try {
-    node = e.builder(spec);
-  } catch (const std::invalid_argument& error) {
-    fail(state.source, element, error.what());
-  }
-  if (!node) fail(state.source, element, "the registered builder returned no node");
-  const auto legacy = legacySpellings().find(spec.type);
-  node->setTypeName(legacy == legacySpellings().end() ? spec.type : legacy->second);
-  auto* control = dynamic_cast<ControlNode*>(node.get());
-  auto* decorator = dynamic_cast<DecoratorNode*>(node.get());
-  if (control && control->requiredChildren() != 0 &&
-      static_cast<std::size_t>(children) != control->requiredChildren()) {
-    fail(state.source, element,
-         "needs exactly " + std::to_string(control->requiredChildren()) + " children, got " +
-             std::to_string(children));
-  }
-  if (children > 0 && !control && !decorator) {
-    fail(state.source, element, "registered with children but built as a leaf");
-  }
-  for (const XMLElement* c = element.FirstChildElement(); c; c = c->NextSiblingElement()) {
-    std::unique_ptr<TreeNode> child = buildNode(*c, depth + 1, state);
-    if (control) {
-      control->addChild(std::move(child));
-    } else {
-      decorator->setChild(std::move(child));
-    }
-  }
-  return node;
-}
-
-std::unique_ptr<TreeNode> TreeFactory::buildSubTree(const XMLElement& element, int depth,
-                                                    BuildState& state) const {
-  if (childElementCount(element) > 0) fail(state.source, element, "a SubTree cannot have children");
-  const char* id = element.Attribute("ID");
-  if (!id || !*id) fail(state.source, element, "needs an ID attribute naming a <BehaviorTree>");
-  const auto definition = state.library->trees.find(id);
-  if (definition == state.library->trees.end()) {
-    fail(state.source, element, std::string("no <BehaviorTree ID=\"") + id + "\">");
-  }
-  if (std::find(state.subtrees.begin(), state.subtrees.end(), id) != state.subtrees.end()) {
-    std::string chain;
-    for (const std::string& tree : state.subtrees) chain += tree + " -> ";
-    fail(state.source, element, std::string("the tree contains itself (") + chain + id + ")");
-  }
-
-  Scope scope;
-  scope.parent = state.scope;
-  scope.prefix = std::string(id) + "#" + std::to_string(++state.instances[id]) + "/";
-  for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
-    const std::string key = a->Name();
-    const std::string value = a->Value();
-    if (key == "ID" || key == "name") continue;
-    if (key == "_autoremap") {
-      if (value != "true" && value != "false") {
-        fail(state.source, element,
-             "attribute '_autoremap' must be true or false, got '" + value + "'");
-      }
-      scope.autoremap = value == "true";
-    } else if (!key.empty() && key.front() == '_') {
-      fail(state.source, element, "unknown attribute '" + key + "'");
-    } else {
-      scope.remap[key] = value == "{=}" ? "{" + key + "}" : value;  // {=}: the same name
-    }
-  }
-
-  const XMLElement& tree = *definition->second.element;
-  const std::string caller_source = state.source;
-  state.source = definition->second.source;
-  if (childElementCount(tree) != 1) {
-    fail(state.source, tree,
-         "needs exactly one root node, got " + std::to_string(childElementCount(tree)));
-  }
-  const Scope* caller_scope = state.scope;
-  state.scope = &scope;
-  state.subtrees.push_back(id);
-  std::unique_ptr<TreeNode> node = buildNode(*tree.FirstChildElement(), depth + 1, state);
-  state.subtrees.pop_back();
-  state.scope = caller_scope;
-  state.source = caller_source;
-  return node;
-}
-
-NodeSpec TreeFactory::readAttributes(const XMLElement& element, const Entry& entry,
-                                     BuildState& state) const {
-  NodeSpec spec;
-  spec.type = element.Name();
-  spec.name = spec.type;
-  spec.blackboard = state.blackboard;
-  spec.ports = &entry.ports;
-  spec.tick_rate = tick_rate_;
-  for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
-    const std::string key = a->Name();
-    if (key == "name") {
-      spec.name = a->Value();
-      continue;
-    }
-    const bool known = std::any_of(entry.ports.begin(), entry.ports.end(),
-                                   [&](const PortInfo& p) { return p.name == key; });
-    if (!known) fail(state.source, element, "unknown attribute '" + key + "'");
-    spec.attributes[key] = state.scope->resolve(a->Value());
-  }
-  return spec;
-}
-
-void TreeFactory::bindPorts(const XMLElement& element, const Entry& entry, NodeSpec& spec,
-                            BuildState& state) const {
-  for (const PortInfo& port : entry.ports) {
-    if (port.raw) continue;
-    auto it = spec.attributes.find(port.name);
-    if (it == spec.attributes.end()) {
-      if (port.required()) fail(state.source, element, "missing required " + describe(port));
-      it = spec.attributes.emplace(port.name, *port.default_value).first;
-    }
-    std::string key;
-    if (parseBlackboardKey(it->second, key)) {
-      if (state.named.insert(key).second && state.blackboard->find(key)) {
-        state.declared_before.insert(key);  // there before this tree named it
-      }
-      try {
-        port.declare(*state.blackboard, key);
-      } catch (const std::invalid_argument& error) {
-        fail(state.source, element, describe(port) + ": " + error.what());
-      }
-      if (port.direction == PortDirection::kOutput) {
-        state.written.insert(key);
-      } else {
-        state.reads.push_back({key, port.name, state.source, &element});
-      }
-    } else if (port.direction == PortDirection::kOutput) {
-      fail(state.source, element,
-           "output " + describe(port) + " needs a blackboard key like {" + port.name + "}, got '" +
-               it->second + "'");
-    } else {
-      const std::string problem = port.check(port, it->second);
-      if (!problem.empty()) {
-        fail(state.source, element, "attribute '" + port.name + "' " + problem);
-      }
-    }
-  }
-}
-
-std::set<std::string> TreeFactory::typesUsedIn(const std::string& path) const {
-  Library library;
-  load(readFile(path), path, library);
-  std::set<std::string> used;
-  std::vector<const XMLElement*> stack;
-  for (const auto& tree : library.trees) stack.push_back(tree.second.element);
-  while (!stack.empty()) {
-    const XMLElement* element = stack.back();
-    stack.pop_back();
-    for (const XMLElement* c = element->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      std::string type = c->Name();
-      const auto legacy = legacySpellings().find(type);
-      if (legacy != legacySpellings().end()) type = legacy->second;
-      if (entries_.count(type)) used.insert(type);
-      stack.push_back(c);
-    }
-  }
-  return used;
-}
-
-std::string TreeFactory::treeNodesModel() const {
-  static const std::map<NodeKind, const char*> kCategory = {{NodeKind::kLeaf, "Action"},
-                                                            {NodeKind::kCondition, "Condition"},
-                                                            {NodeKind::kDecorator, "Decorator"},
-                                                            {NodeKind::kControl, "Control"}};
-  tinyxml2::XMLPrinter out;
-  out.PushHeader(false, true);
-  out.OpenElement("root");
-  out.PushAttribute("BTCPP_format", "4");
-  out.OpenElement("TreeNodesModel");
-  for (const auto& [type, entry] : entries_) {
-    if (builtIntoBehaviorTreeCpp(type)) continue;
-    out.OpenElement(kCategory.at(entry.kind));
-    out.PushAttribute("ID", type.c_str());
-    for (const PortInfo& port : entry.ports) {
-      out.OpenElement(port.direction == PortDirection::kOutput ? "output_port" : "input_port");
-      out.PushAttribute("name", port.name.c_str());
-      out.PushAttribute("type", port.type_name.c_str());
-      if (port.default_value) out.PushAttribute("default", port.default_value->c_str());
-      if (!port.description.empty()) out.PushText(port.description.c_str());
-      out.CloseElement();
-    }
-    out.CloseElement();
-  }
-  out.CloseElement();
-  out.CloseElement();
-  return out.CStr();
 }
 
 }  // namespace roomba_rrt::bt

@@ -101,8 +101,9 @@ struct Driving {
   }
 };
 
+/// The plan and its progress, which FollowCoverage and ResumeCoverage read and write.
 bt::PortInfo progressPort() {
-  return outputPort<CoverageProgress>("coverage", "the cleaning in progress (read and written)");
+  return bt::inoutPort<CoverageProgress>("coverage", "the cleaning in progress");
 }
 bt::PortInfo poseInput(const char* description) {
   return inputPort<robot::Pose2D>("pose", description);
@@ -115,7 +116,8 @@ class PlanCoverage final : public bt::LeafNode {
  public:
   static PortList providedPorts() {
     return {inputPort<robot::Pose2D>("start", "where to plan from (the robot's pose)"),
-            progressPort(), errorOutput("why there is nothing to clean")};
+            outputPort<CoverageProgress>("coverage", "the new plan, nothing cleaned yet"),
+            errorOutput("why there is nothing to clean")};
   }
   PlanCoverage(const NodeSpec& spec, std::shared_ptr<const CoveragePlanner> planner)
       : LeafNode(spec.name),

@@ -168,7 +168,9 @@ robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2
       const std::string* error =
           entry && entry->type == typeid(std::string) ? board_->get<std::string>("error") : nullptr;
       context_.outcome = GoalOutcome::kAborted;
-      context_.message = error ? *error : "the navigation tree failed";
+      context_.message = error                            ? *error
+                         : status == bt::Status::kSkipped ? "the navigation tree skipped the goal"
+                                                          : "the navigation tree failed";
     }
   }
   context_.previous_cmd = context_.cmd;

@@ -93,6 +93,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
     startFollowerReconfigure();
   }
 
+  bt::Tree* behaviorTree() override { return &nav_.tree(); }
+
   /// The lab's constants for the cleaning leaves (BehaviorNode's dynamic_reconfigure).
   void setParams(const behavior::RoombaParams& params) override {
     nav_.setRoombaParams(params);

@@ -13,18 +13,6 @@ namespace {
 
 using namespace testing;  // NOLINT: S, F, R, ScriptedLeaf
 
-/// A composite of type Node over two scripted children.
-template <class Node>
-struct TwoChildren {
-  TwoChildren(std::vector<Status> a, std::vector<Status> b) : node("node") {
-    node.addChild(scripted(&first, std::move(a), "first"));
-    node.addChild(scripted(&second, std::move(b), "second"));
-  }
-  Node node;
-  ScriptedLeaf* first = nullptr;
-  ScriptedLeaf* second = nullptr;
-};
-
 TEST(Sequence, success_enters_and_ticks_the_next_child_in_the_same_tick) {
   TwoChildren<SequenceNode> t({S}, {R});
   EXPECT_EQ(t.node.tick(), R);

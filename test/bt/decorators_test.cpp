@@ -12,14 +12,6 @@ namespace {
 
 using namespace testing;  // NOLINT: S, F, R, ScriptedLeaf
 
-/// `node` decorating a scripted leaf reachable through `leaf`.
-template <class Node, class... Args>
-std::unique_ptr<Node> decorate(ScriptedLeaf** leaf, std::vector<Status> script, Args... args) {
-  auto node = std::make_unique<Node>("decorator", args...);
-  node->setChild(scripted(leaf, std::move(script)));
-  return node;
-}
-
 TEST(Inverter, swaps_success_and_failure_and_keeps_running) {
   ScriptedLeaf* leaf;
   auto inverter = decorate<InverterNode>(&leaf, {S, F, R});

@@ -4,6 +4,7 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "roomba_rrt/bt/tree_node.h"
@@ -44,8 +45,31 @@ inline std::unique_ptr<ScriptedLeaf> scripted(ScriptedLeaf** out, std::vector<St
   return leaf;
 }
 
+/// Decorator `Node` (named "decorator", built with `args`) over a scripted leaf reachable
+/// through `leaf`.
+template <class Node, class... Args>
+std::unique_ptr<Node> decorate(ScriptedLeaf** leaf, std::vector<Status> script, Args&&... args) {
+  auto node = std::make_unique<Node>("decorator", std::forward<Args>(args)...);
+  node->setChild(scripted(leaf, std::move(script)));
+  return node;
+}
+
+/// A composite of type Node (built with "node" and `args`) over two scripted children.
+template <class Node, class... Args>
+struct TwoChildren {
+  explicit TwoChildren(std::vector<Status> a, std::vector<Status> b, Args... args)
+      : node("node", args...) {
+    node.addChild(scripted(&first, std::move(a), "first"));
+    node.addChild(scripted(&second, std::move(b), "second"));
+  }
+  Node node;
+  ScriptedLeaf* first = nullptr;
+  ScriptedLeaf* second = nullptr;
+};
+
 constexpr Status S = Status::kSuccess;
 constexpr Status F = Status::kFailure;
 constexpr Status R = Status::kRunning;
+constexpr Status K = Status::kSkipped;
 
 }  // namespace roomba_rrt::bt::testing

@@ -47,6 +47,17 @@ struct Say final : LeafNode {
   OutputPort<std::string> out;
 };
 
+/// Adds one to key `n`, which it reads and writes (an inout port).
+struct Count final : LeafNode {
+  static PortList providedPorts() { return {inoutPort<int>("n", "the count")}; }
+  Count(std::string name, OutputPort<int> n) : LeafNode(std::move(name)), n(n) {}
+  Status onTick() override {
+    n.set(n.get() ? *n.get() + 1 : 1);
+    return Status::kSuccess;
+  }
+  OutputPort<int> n;
+};
+
 struct IsSunny final : ConditionNode {
   using ConditionNode::ConditionNode;
   static PortList providedPorts() { return {}; }
@@ -63,6 +74,9 @@ class TreeFileFormat : public ::testing::Test {
     factory.registerNodeType<Say>("Say", [](const NodeSpec& s) {
       return std::make_unique<Say>(s.name, s.input<std::string>("text"),
                                    s.output<std::string>("out"));
+    });
+    factory.registerNodeType<Count>("Count", [](const NodeSpec& s) {
+      return std::make_unique<Count>(s.name, s.output<int>("n"));
     });
     factory.registerNodeType<IsSunny>(
         "IsSunny", [](const NodeSpec& s) { return std::make_unique<IsSunny>(s.name); });
@@ -136,6 +150,40 @@ TEST_F(TreeFileFormat, ReadsWhatBehaviorTreeCppV4WritesWithoutNotices) {
   EXPECT_TRUE(notices.empty()) << notices.front();
 }
 
+// What Groot 1 writes, and BehaviorTree.CPP v4 still reads: the category element with an ID.
+TEST_F(TreeFileFormat, TheExplicitFormIsReadAsTheNodeItsIdNames) {
+  const std::string file = writeFile("bt_groot1.xml", R"(
+<root BTCPP_format="4" main_tree_to_execute="Main">
+  <BehaviorTree ID="Main">
+    <Control ID="Sequence" name="both">
+      <Condition ID="IsSunny"/>
+      <Decorator ID="Inverter"><Decorator ID="Inverter"><Action ID="Ok"/></Decorator></Decorator>
+      <Action ID="Say" text="hi" out="{said}"/>
+      <SubTree ID="Other"/>
+    </Control>
+  </BehaviorTree>
+  <BehaviorTree ID="Other"><Action ID="Ok"/></BehaviorTree>
+</root>)");
+  Tree tree = factory.buildFromFile(file);
+  EXPECT_EQ(tree.tick(), Status::kSuccess);
+  EXPECT_EQ(*tree.blackboard().get<std::string>("said"), "hi");
+  EXPECT_EQ(tree.root().name(), "both");
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(factory.typesUsedIn(file),
+            (std::set<std::string>{"Inverter", "IsSunny", "Ok", "Say", "Sequence"}));
+}
+
+TEST_F(TreeFileFormat, TheExplicitFormNeedsAKnownId) {
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action/>\n</BehaviorTree></root>"),
+            "t.xml:3: <Action>: needs an ID attribute naming the node type");
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action ID=\"Fly\"/>\n"
+                    "</BehaviorTree></root>"),
+            "t.xml:3: <Action>: unknown node type 'Fly'");
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\"><BehaviorTree>\n<Action ID=\"Say\" text=\"a\" "
+                    "colour=\"red\"/>\n</BehaviorTree></root>"),
+            "t.xml:2: <Action>: unknown attribute 'colour'");
+}
+
 TEST_F(TreeFileFormat, V3SpellingsAreReadWithANoticeNamingTheV4One) {
   Tree tree = factory.buildFromText(
       "<root>\n<BehaviorTree>\n<Selector>\n<RetryUntilSuccesful num_attempts=\"2\"><Ok/>"
@@ -168,9 +216,10 @@ TEST_F(TreeFileFormat, TimeoutInMillisecondsCountsTicksAtTheTickRate) {
 }
 
 TEST_F(TreeFileFormat, UnknownThingsAreStillRefusedNamingElementAndLine) {
-  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Parallel><Ok/></Parallel>\n"
-                    "</BehaviorTree>\n</root>"),
-            "t.xml:3: <Parallel>: unknown node type");
+  EXPECT_EQ(
+      errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Concurrently><Ok/></Concurrently>\n"
+              "</BehaviorTree>\n</root>"),
+      "t.xml:3: <Concurrently>: unknown node type");
   EXPECT_EQ(errorOf("<root BTCPP_format=\"5\"><BehaviorTree><Ok/></BehaviorTree></root>"),
             "t.xml:1: <root>: BTCPP_format \"5\" is not supported (4 or 3)");
   EXPECT_EQ(errorOf("<root>\n<Tree><Ok/></Tree>\n</root>"),
@@ -320,6 +369,20 @@ TEST_F(TreeFileFormat, TheTreeNodesModelListsOurNodesWithTheirPortsForGroot2) {
   const auto* out = nodes["Say"]->FirstChildElement("output_port");
   ASSERT_NE(out, nullptr);
   EXPECT_STREQ(out->Attribute("default"), "{said}");
+  const auto* inout = nodes["Count"]->FirstChildElement("inout_port");
+  ASSERT_NE(inout, nullptr);
+  EXPECT_STREQ(inout->Attribute("name"), "n");
+}
+
+TEST_F(TreeFileFormat, AnInoutPortNeedsAKeyAndBothReadsAndWritesIt) {
+  Tree tree = factory.buildFromText(R"(<root BTCPP_format="4"><BehaviorTree>
+    <Sequence><Count n="{n}"/><Count n="{n}"/></Sequence></BehaviorTree></root>)");
+  EXPECT_EQ(tree.tick(), Status::kSuccess);
+  EXPECT_EQ(*tree.blackboard().get<int>("n"), 2);
+  EXPECT_EQ(errorOf("<root BTCPP_format=\"4\"><BehaviorTree>\n<Count n=\"3\"/>\n"
+                    "</BehaviorTree></root>"),
+            "t.xml:2: <Count>: inout port 'n' (int: the count) needs a blackboard key like {n}, "
+            "got '3'");
 }
 
 }  // namespace

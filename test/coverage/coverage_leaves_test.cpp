@@ -152,6 +152,16 @@ TEST(CoverageLeaves, the_nodes_model_lists_the_leaves_with_their_ports) {
                            "name=\"skip_after\"", "type=\"CoverageProgress\""}) {
     EXPECT_NE(model.find(text), std::string::npos) << text << " not in\n" << model;
   }
+  // The plan's progress is read and written by the leaves that drive and resume it.
+  const auto ports_of = [&](const std::string& id) {
+    const auto begin = model.find("ID=\"" + id + "\"");
+    return begin == std::string::npos ? ""
+                                      : model.substr(begin, model.find("</Action>", begin) - begin);
+  };
+  EXPECT_NE(ports_of("FollowCoverage").find("<inout_port name=\"coverage\""), std::string::npos)
+      << model;
+  EXPECT_NE(ports_of("ResumeCoverage").find("<inout_port name=\"coverage\""), std::string::npos);
+  EXPECT_NE(ports_of("PlanCoverage").find("<output_port name=\"coverage\""), std::string::npos);
   // Without the registrar the navigation model stays as it was.
   EXPECT_EQ(navigation::treeNodesModel().find("PlanCoverage"), std::string::npos);
 }

@@ -39,8 +39,8 @@ class RoombaBehavior {
   /// behaviour was started with and stays: `params.rate` is ignored.
   virtual void setParams(const RoombaParams& params);
 
-  /// The behavior tree that makes the decisions, for monitors (Groot2, ~tree_status); nullptr
-  /// for the FSM.
+  /// The behavior tree that makes the decisions, for monitors (Groot2, ~tree_status) and
+  /// ~log_file; nullptr for the FSM.
   virtual bt::Tree* behaviorTree() { return nullptr; }
 
  protected:

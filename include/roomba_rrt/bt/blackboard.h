@@ -116,6 +116,10 @@ class Blackboard {
     const auto it = entries_.find(key);
     return it == entries_.end() ? nullptr : it->second.get();
   }
+  EntryBase* find(const std::string& key) {
+    const auto it = entries_.find(key);
+    return it == entries_.end() ? nullptr : it->second.get();
+  }
 
   /// The tree's clock: the number of the current tick (1 in the first tick; Tree::tick()
   /// advances it before ticking the root). Nodes that measure time (RateController) count ticks

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "roomba_rrt/bt/tree_node.h"
@@ -22,6 +23,10 @@ class ControlNode : public TreeNode {
   /// How many children the node needs: 0 for "one or more" (the default), else exactly that
   /// many (the tree factory checks it).
   virtual std::size_t requiredChildren() const { return 0; }
+  /// "" when the node works with `children` children, else what is wrong (the tree factory
+  /// names it). The default checks requiredChildren(); nodes that take a range (IfThenElse: 2 or
+  /// 3) or whose ports bound the count (Parallel's thresholds) override it.
+  virtual std::string childCountProblem(std::size_t children) const;
 
  protected:
   /// Halts every running child from index `first` on (halting a child that is not running does

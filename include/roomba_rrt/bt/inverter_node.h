@@ -9,6 +9,7 @@ namespace roomba_rrt::bt {
 /// - SUCCESS: the Inverter returns FAILURE.
 /// - FAILURE: the Inverter returns SUCCESS.
 /// - RUNNING: the Inverter returns RUNNING.
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 class InverterNode final : public DecoratorNode {
  public:
   using DecoratorNode::DecoratorNode;

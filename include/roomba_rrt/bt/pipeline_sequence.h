@@ -19,6 +19,7 @@ namespace roomba_rrt::bt {
 /// - RUNNING: if it is the furthest child reached, PipelineSequence returns RUNNING; if a later
 ///   child was reached before, the next child is ticked in the same tick (an earlier stage
 ///   running, e.g. a plan being recomputed, does not stop a later one).
+/// - SKIPPED: as SUCCESS (a run in which every child was skipped returns SKIPPED).
 class PipelineSequence final : public ControlNode {
  public:
   using ControlNode::ControlNode;

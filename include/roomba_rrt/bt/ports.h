@@ -91,7 +91,9 @@ struct LiteralParser<double> {
   }
 };
 
-enum class PortDirection : std::uint8_t { kInput, kOutput };
+/// kInOut: a key the node both reads and writes (BehaviorTree.CPP's BidirectionalPort, Groot2's
+/// inout_port); like an output it needs a key, and it counts as writing it.
+enum class PortDirection : std::uint8_t { kInput, kOutput, kInOut };
 
 /// One port of a node type: name, direction, type, default (none: the port is required),
 /// description, and for numbers the accepted range of a literal.
@@ -186,6 +188,16 @@ template <class T>
 PortInfo outputPort(std::string name, std::string description,
                     std::optional<std::string> default_value = std::nullopt) {
   return detail::makePort<T>(PortDirection::kOutput, std::move(name), std::move(description),
+                             std::move(default_value));
+}
+
+/// A port the node reads and writes (BehaviorTree.CPP's BidirectionalPort): always a blackboard
+/// key `{key}`, bound with NodeSpec::output() (an OutputPort reads too). Arguments in
+/// inputPort()'s order.
+template <class T>
+PortInfo inoutPort(std::string name, std::string description,
+                   std::optional<std::string> default_value = std::nullopt) {
+  return detail::makePort<T>(PortDirection::kInOut, std::move(name), std::move(description),
                              std::move(default_value));
 }
 

@@ -20,6 +20,7 @@ namespace roomba_rrt::bt {
 ///   started, then starts it again (Nav2: replan at a rate, the result held in between).
 /// - FAILURE: RateController returns FAILURE; its next tick starts a new run.
 /// - RUNNING: RateController returns RUNNING and ticks the child on the next tick.
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 class RateController final : public DecoratorNode {
  public:
   /// `hz` (double, default 1): how often the child is started, in [1e-6, 1000].

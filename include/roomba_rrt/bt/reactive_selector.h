@@ -15,6 +15,7 @@ namespace roomba_rrt::bt {
 ///   ReactiveSelector returns FAILURE.
 /// - RUNNING: every running child after it is halted (a higher-priority child took over) and the
 ///   ReactiveSelector returns RUNNING.
+/// - SKIPPED: as FAILURE, but if every child was skipped it returns SKIPPED.
 ///
 /// Children that finished are entered anew when they are ticked again on the next tick.
 class ReactiveSelector final : public ControlNode {

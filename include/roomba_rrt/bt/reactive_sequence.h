@@ -14,6 +14,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: every running child after it is halted and the ReactiveSequence returns FAILURE.
 /// - RUNNING: every running child after it is halted (an earlier child took over from a later
 ///   one) and the ReactiveSequence returns RUNNING.
+/// - SKIPPED: as SUCCESS, but if every child was skipped it returns SKIPPED.
 ///
 /// Children that finished are entered anew when they are ticked again on the next tick.
 class ReactiveSequence final : public ControlNode {

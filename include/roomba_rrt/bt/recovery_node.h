@@ -23,6 +23,9 @@ namespace roomba_rrt::bt {
 ///   on the next tick.
 /// - FAILURE: RecoveryNode returns FAILURE (the recovery could not help).
 /// - RUNNING: RecoveryNode returns RUNNING and ticks the recovery on the next tick.
+///
+/// A skipped action or recovery makes RecoveryNode return SKIPPED (nothing ran to recover from,
+/// or nothing recovered).
 class RecoveryNode final : public ControlNode {
  public:
   /// `number_of_retries` (int, default 1): recoveries per run, in [0, 2^31 - 1].

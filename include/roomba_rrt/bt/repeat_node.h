@@ -16,6 +16,7 @@ namespace roomba_rrt::bt {
 ///   returns RUNNING and enters the child anew on the next tick.
 /// - FAILURE: Repeat returns FAILURE (the cycle count starts over on the next run).
 /// - RUNNING: Repeat returns RUNNING.
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 class RepeatNode final : public DecoratorNode {
  public:
   /// `num_cycles` (int, required): repetitions, or -1 for forever.

@@ -16,6 +16,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: one attempt is used up; after `num_attempts` failures Retry returns FAILURE,
 ///   otherwise it returns RUNNING and enters the child anew on the next tick.
 /// - RUNNING: Retry returns RUNNING.
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 class RetryNode final : public DecoratorNode {
  public:
   /// `num_attempts` (int, required): attempts, or -1 for unlimited.

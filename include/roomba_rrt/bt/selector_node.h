@@ -17,17 +17,27 @@ namespace roomba_rrt::bt {
 /// - FAILURE: the next child is entered and ticked in the same tick; after the last child the
 ///   Selector returns FAILURE and its next tick starts again from the first child.
 /// - RUNNING: the Selector returns RUNNING and ticks the same child next time.
+/// - SKIPPED: as FAILURE, but if every child was skipped the Selector returns SKIPPED.
 ///
 /// Halting the Selector halts the running child and rewinds to the first child.
 class SelectorNode final : public ControlNode {
  public:
-  using ControlNode::ControlNode;
+  /// `async` (BehaviorTree.CPP's AsyncSelector): after a child that finished with FAILURE in the
+  /// tick it was entered in, return RUNNING and go on with the next child on the next tick, so a
+  /// long row of instant children does not run in one tick.
+  explicit SelectorNode(std::string name, bool async = false)
+      : ControlNode(std::move(name)), async_(async) {}
 
  private:
-  void onEnter() override { current_ = 0; }
+  void onEnter() override {
+    current_ = 0;
+    executed_ = false;
+  }
   Status onTick() override;
 
+  bool async_;
   std::size_t current_ = 0;  ///< the child ticked next
+  bool executed_ = false;    ///< a child was not skipped in this run
 };
 
 }  // namespace roomba_rrt::bt

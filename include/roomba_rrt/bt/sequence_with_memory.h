@@ -17,6 +17,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: the node returns FAILURE; its next tick resumes at the child that failed (the
 ///   children before it are not re-checked).
 /// - RUNNING: the node returns RUNNING and ticks the same child next time.
+/// - SKIPPED: as SUCCESS, but if every child was skipped the node returns SKIPPED.
 ///
 /// Halting it halts the running child and keeps the place, as BehaviorTree.CPP v4 does.
 class SequenceWithMemory final : public ControlNode {
@@ -27,6 +28,7 @@ class SequenceWithMemory final : public ControlNode {
   Status onTick() override;
 
   std::size_t current_ = 0;  ///< the child ticked next; reset only after the last child succeeds
+  bool executed_ = false;    ///< a child was not skipped since current_ was 0
 };
 
 }  // namespace roomba_rrt::bt

@@ -10,7 +10,10 @@ namespace roomba_rrt::bt {
 /// - kSuccess: the node finished and achieved its goal; it is no longer running.
 /// - kFailure: the node finished without achieving its goal; it is no longer running.
 /// - kRunning: the node needs more ticks; its parent ticks it again (without entering it anew).
-enum class Status : std::uint8_t { kSuccess, kFailure, kRunning };
+/// - kSkipped: the node was not executed (BehaviorTree.CPP 4's SKIPPED: a `_skipIf` held, a
+///   `_while` did not, RunOnce ran before); it is not running, and a composite goes on as if the
+///   child were not there (one whose children were all skipped is skipped itself).
+enum class Status : std::uint8_t { kSuccess, kFailure, kRunning, kSkipped };
 
 /// "SUCCESS", "FAILURE" or "RUNNING" (for logs and test messages).
 const char* toString(Status status);

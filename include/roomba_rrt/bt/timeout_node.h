@@ -16,6 +16,7 @@ namespace roomba_rrt::bt {
 /// - FAILURE: Timeout returns FAILURE.
 /// - RUNNING: Timeout returns RUNNING, unless this was the child's `ticks`-th tick in this run:
 ///   then the child is halted and Timeout returns FAILURE.
+/// - SKIPPED: returns SKIPPED (the child did not run, so neither does it).
 class TimeoutNode final : public DecoratorNode {
  public:
   /// Exactly one of `msec` (BehaviorTree.CPP v4's port: milliseconds, turned into ticks at the

@@ -12,6 +12,7 @@
 #include "roomba_rrt/bt/control_node.h"
 #include "roomba_rrt/bt/decorator_node.h"
 #include "roomba_rrt/bt/ports.h"
+#include "roomba_rrt/bt/script.h"
 #include "roomba_rrt/bt/tree.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -50,6 +51,8 @@ struct NodeSpec {
   Blackboard* blackboard = nullptr;  ///< the tree's blackboard
   const PortList* ports = nullptr;   ///< the node type's ports (empty for plain attributes)
   double tick_rate = 60.0;           ///< the factory's tick rate (Hz)
+  /// A script variable's blackboard key, through the SubTree's remapping as a port's `{key}`.
+  Script::KeyOf key_of;
 
   /// The literal value of port `port` (attribute or default).
   template <class T>
@@ -65,6 +68,14 @@ struct NodeSpec {
     std::string key;
     if (parseBlackboardKey(text(port), key)) return InputPort<T>::key(board().declare<T>(key));
     return InputPort<T>::literal(literal<T>(port));
+  }
+  /// The script in attribute `port` (std::invalid_argument on a syntax error).
+  Script script(const std::string& port) const { return Script(text(port), key_of); }
+  /// The blackboard key attribute `port` names, as `{key}` or as a bare name (SetBlackboard's
+  /// `output_key`).
+  std::string keyName(const std::string& port) const {
+    std::string key;
+    return parseBlackboardKey(text(port), key) ? key : key_of(text(port));
   }
   /// Output port `port`: its blackboard entry.
   template <class T>
@@ -90,8 +101,9 @@ enum class NodeKind {
   kControl,    ///< one or more children
 };
 
-/// Maps element names to node builders and builds trees from XML in BehaviorTree.CPP v4's format
-/// (doc/behaviours.md, "Tree files"):
+/// Maps element names to node builders (the registry, src/bt/tree_factory.cpp) and builds trees
+/// from XML in BehaviorTree.CPP v4's format (the reader, src/bt/xml_parsing.cpp; doc/behaviours.md,
+/// "Tree files"):
 ///
 ///     <root BTCPP_format="4" main_tree_to_execute="Roomba">
 ///       <include path="other_trees.xml"/>
@@ -108,8 +120,15 @@ enum class NodeKind {
 /// SequenceWithMemory, Fallback, ReactiveSequence, ReactiveFallback, and Nav2's
 /// PipelineSequence and RecoveryNode (`number_of_retries`, two children); the decorators
 /// Inverter, Repeat (`num_cycles`), RetryUntilSuccessful (`num_attempts`), Timeout (`msec`, or
-/// our deterministic `ticks`) and Nav2's RateController (`hz`); SubTree (`ID`, port remapping
-/// `port="{parent_key}"` or `port="literal"`, `_autoremap`); `<include path="...">` (relative to
+/// our deterministic `ticks`) and Nav2's RateController (`hz`); BehaviorTree.CPP 4's other
+/// standard nodes (registerStandardNodes(), doc/behaviours.md) and the pre/post-condition
+/// attributes `_failureIf`, `_successIf`, `_skipIf`, `_while`, `_onSuccess`, `_onFailure`,
+/// `_post`, `_onHalted` on any node, a SubTree's guarding its tree's root (node_conditions.h);
+/// SubTree (`ID`, port
+/// remapping `port="{parent_key}"` or `port="literal"`, `_autoremap`); BehaviorTree.CPP's explicit
+/// form
+/// `<Action ID="MoveForward"/>` (also Condition, Control, Decorator; Groot 1 writes it), read as
+/// `<MoveForward/>`; `<include path="...">` (relative to
 /// the including file) under <root>; a <TreeNodesModel> under <root> (Groot2 writes one) is
 /// ignored. Leaves are registered by the application. The spellings of BehaviorTree.CPP v3 and of
 /// our earlier files (Selector, ReactiveSelector, Retry, RetryUntilSuccesful, SequenceStar) are
@@ -224,7 +243,14 @@ class TreeFactory {
   /// the keys; fills in defaults.
   void bindPorts(const tinyxml2::XMLElement& element, const Entry& entry, NodeSpec& spec,
                  BuildState& state) const;
+  /// The pre/post-condition scripts in `element`'s attributes (`_successIf`, ...), or nullptr.
+  std::shared_ptr<const NodeConditions> readConditions(const tinyxml2::XMLElement& element,
+                                                       const Script::KeyOf& key_of,
+                                                       BuildState& state) const;
   void notice(const std::string& text) const;
+  /// Registers the standard nodes of BehaviorTree.CPP 4 besides the ones the tree files of this
+  /// package were first written with (doc/behaviours.md lists them all).
+  void registerStandardNodes();
 
   std::map<std::string, Entry> entries_;
   double tick_rate_ = 60.0;
