@@ -106,8 +106,6 @@ class NavBehavior final : public behavior::RoombaBehavior {
     return step();
   }
 
-  bt::Tree* behaviorTree() override { return &nav_.tree(); }
-
  private:
   robot::Velocity step() {
     robot::Pose2D pose;
