@@ -71,7 +71,7 @@ target_link_libraries(roomba_bt_groot2 PUBLIC roomba_behavior_core PRIVATE PkgCo
 set_target_properties(roomba_bt_groot2 PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # The two nodes share their ROS adapter (parameters, subscriptions, timer, publications).
-add_library(roomba_behavior_node STATIC src/nodes/behavior_node.cpp src/nodes/tree_watch.cpp)
+add_library(roomba_behavior_node STATIC src/ros/behavior_node.cpp src/ros/tree_watch.cpp)
 target_link_libraries(roomba_behavior_node PUBLIC roomba_behavior_core roomba_bt_groot2
   roomba_node_common)
 add_dependencies(roomba_behavior_node ${${PROJECT_NAME}_EXPORTED_TARGETS}

@@ -42,12 +42,12 @@ endif()
 
 # coverage_planner: the coverage planner as a ROS service (~plan_coverage, roomba_rrt/PlanCoverage)
 # in ~world_file's world or on /map; coverage_ros turns requests and plans into messages.
-add_executable(coverage_planner src/nodes/coverage_planner_node.cpp src/nodes/coverage_ros.cpp)
+add_executable(coverage_planner src/nodes/coverage_planner_node.cpp src/ros/coverage_ros.cpp)
 target_link_libraries(coverage_planner roomba_coverage_planning roomba_node_common)
 add_dependencies(coverage_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 if(CATKIN_ENABLE_TESTING)
-  roomba_rrt_gtest(coverage_ros_test test/nodes/coverage_ros_test.cpp src/nodes/coverage_ros.cpp
+  roomba_rrt_gtest(coverage_ros_test test/nodes/coverage_ros_test.cpp src/ros/coverage_ros.cpp
     LINK roomba_coverage_planning roomba_node_common ROS)
   add_rostest(test/coverage/plan_coverage.test DEPENDENCIES coverage_planner roomba_sim)
 endif()

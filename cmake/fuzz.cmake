@@ -42,25 +42,25 @@ if(ROOMBA_RRT_SANITIZE)
   target_include_directories(rrt_planning_sanitized PUBLIC ${PROJECT_SOURCE_DIR}/include)
   target_link_libraries(rrt_planning_sanitized PUBLIC roomba_geometry roomba_world yaml-cpp)
 
-  # The node's own request conversion (src/nodes/planner_ros.cpp) in front of the library.
-  roomba_rrt_fuzzer(plan_path_fuzzer src/nodes/planner_ros.cpp src/nodes/make_plan_ros.cpp)
+  # The node's own request conversion (src/ros/planner_ros.cpp) in front of the library.
+  roomba_rrt_fuzzer(plan_path_fuzzer src/ros/planner_ros.cpp src/ros/make_plan_ros.cpp)
   target_include_directories(plan_path_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
   target_link_libraries(plan_path_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
   target_compile_definitions(plan_path_fuzzer PRIVATE
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(plan_path_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
-  # The coverage_planner node's own request conversion (src/nodes/coverage_ros.cpp) and plan.
-  roomba_rrt_fuzzer(plan_coverage_fuzzer src/nodes/coverage_ros.cpp)
+  # The coverage_planner node's own request conversion (src/ros/coverage_ros.cpp) and plan.
+  roomba_rrt_fuzzer(plan_coverage_fuzzer src/ros/coverage_ros.cpp)
   target_include_directories(plan_coverage_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
   target_link_libraries(plan_coverage_fuzzer roomba_coverage_planning ${catkin_LIBRARIES})
   target_compile_definitions(plan_coverage_fuzzer PRIVATE
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   add_dependencies(plan_coverage_fuzzer ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
-  # A map as it arrives on /map: the nodes' conversion (src/nodes/map_messages.cpp), then what
+  # A map as it arrives on /map: the nodes' conversion (src/ros/map_messages.cpp), then what
   # rrt_planner and coverage_planner build from it.
-  roomba_rrt_fuzzer(map_message_fuzzer src/nodes/map_messages.cpp)
+  roomba_rrt_fuzzer(map_message_fuzzer src/ros/map_messages.cpp)
   target_include_directories(map_message_fuzzer PRIVATE include ${catkin_INCLUDE_DIRS})
   target_link_libraries(map_message_fuzzer rrt_planning_sanitized ${catkin_LIBRARIES})
 

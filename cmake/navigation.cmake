@@ -20,8 +20,8 @@ target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core roomba_world_p
 # roomba_bt: the lab's tree, or a navigation tree behind move_base's interface (the move_base
 # action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client). The conversions are
 # unit-tested without a master (nav_ros_test).
-add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/nodes/nav_behavior.cpp
-  src/nodes/nav_ros.cpp src/nodes/planner_ros.cpp)
+add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/ros/nav_behavior.cpp
+  src/ros/nav_ros.cpp src/ros/planner_ros.cpp)
 target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core roomba_coverage_core)
 add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
@@ -49,7 +49,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(bump_free_navigation_test test/navigation/bump_free_navigation_test.cpp
     LINK roomba_nav_eval_run)
   # roomba_bt's navigation conversions, without a master.
-  roomba_rrt_gtest(nav_ros_test test/navigation/nav_ros_test.cpp src/nodes/nav_ros.cpp
+  roomba_rrt_gtest(nav_ros_test test/navigation/nav_ros_test.cpp src/ros/nav_ros.cpp
     LINK roomba_nav_core ROS)
 
   # roomba_bt's navigation through real ROS: the simulator in the furnished room, rrt_planner.

@@ -3,8 +3,8 @@
 # (master_watch), maps to and from nav_msgs/OccupancyGrid (map_messages), and how a node that
 # serves long requests stops (shutdown_grace).
 
-add_library(roomba_node_common STATIC src/nodes/node_params.cpp src/nodes/master_watch.cpp
-  src/nodes/map_messages.cpp src/nodes/shutdown_grace.cpp)
+add_library(roomba_node_common STATIC src/ros/node_params.cpp src/ros/master_watch.cpp
+  src/ros/map_messages.cpp src/ros/shutdown_grace.cpp)
 target_include_directories(roomba_node_common PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(roomba_node_common PUBLIC roomba_geometry ${catkin_LIBRARIES})
 # The source tree's config/, for a node run without the package on ROS_PACKAGE_PATH.

@@ -63,9 +63,9 @@ endif()
 # --- rrt_planner node (owned by the node helper) ---
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
-add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/nodes/planner_ros.cpp
-  src/nodes/make_plan_ros.cpp
-  src/nodes/plan_slots.cpp)
+add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/ros/planner_ros.cpp
+  src/ros/make_plan_ros.cpp
+  src/ros/plan_slots.cpp)
 target_link_libraries(rrt_planner roomba_world_planning roomba_node_common)
 add_dependencies(rrt_planner ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
@@ -92,13 +92,13 @@ if(CATKIN_ENABLE_TESTING)
     string(REPLACE ":" ";" planner_node_test ${planner_node_test})
     list(GET planner_node_test 0 launch_name)
     list(GET planner_node_test 1 test_target)
-    add_rostest_gtest(${test_target} test/planner_node/${launch_name}.test
-      test/planner_node/${launch_name}_test.cpp test/planner_node/test_support.cpp)
+    add_rostest_gtest(${test_target} test/nodes/${launch_name}.test
+      test/nodes/${launch_name}_test.cpp test/nodes/test_support.cpp)
     target_include_directories(${test_target} PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(${test_target} ${catkin_LIBRARIES})
     add_dependencies(${test_target} rrt_planner
       ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
   endforeach()
   # Who gets a planning thread when all are taken (ROS-free).
-  roomba_rrt_gtest(plan_slots_test test/planner_node/plan_slots_test.cpp src/nodes/plan_slots.cpp)
+  roomba_rrt_gtest(plan_slots_test test/nodes/plan_slots_test.cpp src/ros/plan_slots.cpp)
 endif()

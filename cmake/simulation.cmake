@@ -12,8 +12,8 @@ target_link_libraries(roomba_sim_core PUBLIC roomba_robot roomba_world)
 # sqrt without the errno branch: the coverage grid takes one per row of every step.
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
-# The node wires parameters, topics and timers; src/nodes/sim_ros.cpp builds its messages.
-add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/nodes/sim_ros.cpp)
+# The node wires parameters, topics and timers; src/ros/sim_ros.cpp builds its messages.
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/ros/sim_ros.cpp)
 target_link_libraries(roomba_sim roomba_sim_core roomba_node_common)
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
@@ -29,7 +29,7 @@ if(CATKIN_ENABLE_TESTING)
     LINK roomba_sim_core)
 
   # roomba_sim's messages (odometry, tf, bumper, markers, coverage map), without a master.
-  roomba_rrt_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/nodes/sim_ros.cpp
+  roomba_rrt_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/ros/sim_ros.cpp
     LINK roomba_sim_core ROS)
 
   # A rostest whose test node (gtest) talks to roomba_sim through a real master.

@@ -21,11 +21,11 @@
 #include <roomba_rrt/world/world.h>
 #include <roomba_rrt/world/world_file.h>
 
-#include "coverage_ros.h"
-#include "map_messages.h"
-#include "master_watch.h"
-#include "node_params.h"
-#include "shutdown_grace.h"
+#include "../ros/coverage_ros.h"
+#include "../ros/map_messages.h"
+#include "../ros/master_watch.h"
+#include "../ros/node_params.h"
+#include "../ros/shutdown_grace.h"
 
 namespace roomba_rrt::coverage_node {
 namespace {

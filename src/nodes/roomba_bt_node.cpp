@@ -10,8 +10,8 @@
 #include <fstream>
 #include <iostream>
 
-#include "behavior_node.h"
-#include "nav_behavior.h"
+#include "../ros/behavior_node.h"
+#include "../ros/nav_behavior.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/bt/bt_log.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"

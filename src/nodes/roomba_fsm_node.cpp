@@ -1,5 +1,5 @@
 // roomba_fsm: the lab's Roomba behaviour as a finite state machine (see behavior_node.h).
-#include "behavior_node.h"
+#include "../ros/behavior_node.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 
 int main(int argc, char** argv) {

@@ -34,16 +34,16 @@
 #include <utility>
 #include <vector>
 
-#include "map_messages.h"
-#include "master_watch.h"
-#include "node_params.h"
-#include "reconfigure.h"
+#include "../ros/map_messages.h"
+#include "../ros/master_watch.h"
+#include "../ros/node_params.h"
+#include "../ros/reconfigure.h"
+#include "../ros/shutdown_grace.h"
+#include "../ros/sim_ros.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
 #include "roomba_rrt/world/world_file.h"
-#include "shutdown_grace.h"
-#include "sim_ros.h"
 
 namespace roomba_rrt {
 namespace {

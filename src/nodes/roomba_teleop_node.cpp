@@ -17,7 +17,7 @@
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
-#include "node_params.h"
+#include "../ros/node_params.h"
 #include "roomba_rrt/Bumper.h"
 #include "roomba_rrt/teleop/keyboard_teleop.h"
 #include "roomba_rrt/util/invalid_input.h"

@@ -41,15 +41,15 @@
 #include <roomba_rrt/world_planning/room_problem.h>
 #include "roomba_rrt/world/world_file.h"
 
-#include "make_plan_ros.h"
-#include "map_messages.h"
-#include "master_watch.h"
-#include "message_parts.h"
-#include "node_params.h"
-#include "plan_slots.h"
-#include "planner_ros.h"
-#include "reconfigure.h"
-#include "shutdown_grace.h"
+#include "../ros/make_plan_ros.h"
+#include "../ros/map_messages.h"
+#include "../ros/master_watch.h"
+#include "../ros/message_parts.h"
+#include "../ros/node_params.h"
+#include "../ros/plan_slots.h"
+#include "../ros/planner_ros.h"
+#include "../ros/reconfigure.h"
+#include "../ros/shutdown_grace.h"
 
 namespace roomba_rrt::planner_node {
 namespace {

@@ -107,7 +107,7 @@ class TreeFileFormat : public ::testing::Test {
   std::vector<std::string> files;
 };
 
-TEST(SequenceWithMemoryNode, ResumesAtTheChildThatFailedNotAtTheFirst) {
+TEST(SequenceWithMemoryNode, resumes_at_the_child_that_failed_not_at_the_first) {
   SequenceWithMemory seq("seq");
   auto first = std::make_unique<Scripted>("first", std::vector<Status>{Status::kSuccess});
   auto second = std::make_unique<Scripted>(
@@ -127,7 +127,7 @@ TEST(SequenceWithMemoryNode, ResumesAtTheChildThatFailedNotAtTheFirst) {
   EXPECT_EQ(a->ticks, 2u);
 }
 
-TEST_F(TreeFileFormat, ReadsWhatBehaviorTreeCppV4WritesWithoutNotices) {
+TEST_F(TreeFileFormat, reads_what_behavior_tree_cpp_v4_writes_without_notices) {
   Tree tree = factory.buildFromText(R"(
 <root BTCPP_format="4" main_tree_to_execute="Main">
   <BehaviorTree ID="Main">
@@ -151,7 +151,7 @@ TEST_F(TreeFileFormat, ReadsWhatBehaviorTreeCppV4WritesWithoutNotices) {
 }
 
 // What Groot 1 writes, and BehaviorTree.CPP v4 still reads: the category element with an ID.
-TEST_F(TreeFileFormat, TheExplicitFormIsReadAsTheNodeItsIdNames) {
+TEST_F(TreeFileFormat, the_explicit_form_is_read_as_the_node_its_id_names) {
   const std::string file = writeFile("bt_groot1.xml", R"(
 <root BTCPP_format="4" main_tree_to_execute="Main">
   <BehaviorTree ID="Main">
@@ -173,7 +173,7 @@ TEST_F(TreeFileFormat, TheExplicitFormIsReadAsTheNodeItsIdNames) {
             (std::set<std::string>{"Inverter", "IsSunny", "Ok", "Say", "Sequence"}));
 }
 
-TEST_F(TreeFileFormat, TheExplicitFormNeedsAKnownId) {
+TEST_F(TreeFileFormat, the_explicit_form_needs_a_known_id) {
   EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action/>\n</BehaviorTree></root>"),
             "t.xml:3: <Action>: needs an ID attribute naming the node type");
   EXPECT_EQ(errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Action ID=\"Fly\"/>\n"
@@ -184,7 +184,7 @@ TEST_F(TreeFileFormat, TheExplicitFormNeedsAKnownId) {
             "t.xml:2: <Action>: unknown attribute 'colour'");
 }
 
-TEST_F(TreeFileFormat, V3SpellingsAreReadWithANoticeNamingTheV4One) {
+TEST_F(TreeFileFormat, v3_spellings_are_read_with_a_notice_naming_the_v4_one) {
   Tree tree = factory.buildFromText(
       "<root>\n<BehaviorTree>\n<Selector>\n<RetryUntilSuccesful num_attempts=\"2\"><Ok/>"
       "</RetryUntilSuccesful>\n<SequenceStar><Ok/></SequenceStar>\n</Selector>\n"
@@ -200,7 +200,7 @@ TEST_F(TreeFileFormat, V3SpellingsAreReadWithANoticeNamingTheV4One) {
   EXPECT_NE(notices[2].find("<SequenceStar> is read as <SequenceWithMemory>"), std::string::npos);
 }
 
-TEST_F(TreeFileFormat, TimeoutInMillisecondsCountsTicksAtTheTickRate) {
+TEST_F(TreeFileFormat, timeout_in_milliseconds_counts_ticks_at_the_tick_rate) {
   factory.registerLeaf("Busy", [](const NodeSpec& s) {
     return std::make_unique<Scripted>(s.name, std::vector<Status>{Status::kRunning});
   });
@@ -215,7 +215,7 @@ TEST_F(TreeFileFormat, TimeoutInMillisecondsCountsTicksAtTheTickRate) {
   EXPECT_EQ(TimeoutNode::ticksFor(1000, 60), 60);
 }
 
-TEST_F(TreeFileFormat, UnknownThingsAreStillRefusedNamingElementAndLine) {
+TEST_F(TreeFileFormat, unknown_things_are_still_refused_naming_element_and_line) {
   EXPECT_EQ(
       errorOf("<root BTCPP_format=\"4\">\n<BehaviorTree>\n<Concurrently><Ok/></Concurrently>\n"
               "</BehaviorTree>\n</root>"),
@@ -228,7 +228,7 @@ TEST_F(TreeFileFormat, UnknownThingsAreStillRefusedNamingElementAndLine) {
 }
 
 // BehaviorTree.CPP's isolation: a SubTree's keys are its own unless remapped or autoremapped.
-TEST_F(TreeFileFormat, SubTreeKeysAreRemappedAutoremappedOrPrivate) {
+TEST_F(TreeFileFormat, sub_tree_keys_are_remapped_autoremapped_or_private) {
   auto board = std::make_shared<Blackboard>();
   board->declare<std::string>("greeting");  // the application writes it
   Tree tree = factory.buildFromText(R"(
@@ -255,7 +255,7 @@ TEST_F(TreeFileFormat, SubTreeKeysAreRemappedAutoremappedOrPrivate) {
   EXPECT_EQ(*board->get<std::string>("Greet#3/said"), "private");
 }
 
-TEST_F(TreeFileFormat, ASubTreeReadingAPrivateKeyNothingWritesIsRefused) {
+TEST_F(TreeFileFormat, a_sub_tree_reading_a_private_key_nothing_writes_is_refused) {
   EXPECT_EQ(errorOf(R"(<root BTCPP_format="4" main_tree_to_execute="Main">
 <BehaviorTree ID="Main"><SubTree ID="Greet"/></BehaviorTree>
 <BehaviorTree ID="Greet">
@@ -266,7 +266,7 @@ TEST_F(TreeFileFormat, ASubTreeReadingAPrivateKeyNothingWritesIsRefused) {
             "it)");
 }
 
-TEST_F(TreeFileFormat, BadSubTreesAreRefused) {
+TEST_F(TreeFileFormat, bad_sub_trees_are_refused) {
   const std::string head = "<root BTCPP_format=\"4\" main_tree_to_execute=\"A\">\n";
   EXPECT_EQ(errorOf(head + "<BehaviorTree ID=\"A\">\n<SubTree ID=\"B\"/>\n</BehaviorTree></root>"),
             "t.xml:3: <SubTree>: no <BehaviorTree ID=\"B\">");
@@ -280,7 +280,7 @@ TEST_F(TreeFileFormat, BadSubTreesAreRefused) {
             "t.xml:3: <SubTree>: attribute '_autoremap' must be true or false, got 'yes'");
 }
 
-TEST_F(TreeFileFormat, IncludesAreReadRelativeToTheIncludingFile) {
+TEST_F(TreeFileFormat, includes_are_read_relative_to_the_including_file) {
   writeFile("bt_included.xml", R"(<root BTCPP_format="4">
   <BehaviorTree ID="Greet"><Say text="{greeting}" out="{said}"/></BehaviorTree>
 </root>)");
@@ -296,7 +296,7 @@ TEST_F(TreeFileFormat, IncludesAreReadRelativeToTheIncludingFile) {
   EXPECT_EQ(factory.typesUsedIn(main), (std::set<std::string>{"Say"}));
 }
 
-TEST_F(TreeFileFormat, AnIncludeThatIsMissingOrIncludesItselfIsRefused) {
+TEST_F(TreeFileFormat, an_include_that_is_missing_or_includes_itself_is_refused) {
   const std::string missing = writeFile("bt_missing.xml",
                                         "<root>\n<include path=\"nope.xml\"/>\n"
                                         "<BehaviorTree><Ok/></BehaviorTree>"
@@ -332,7 +332,7 @@ TEST_F(TreeFileFormat, AnIncludeThatIsMissingOrIncludesItselfIsRefused) {
   }
 }
 
-TEST_F(TreeFileFormat, AMissingTreeFileSaysWhy) {
+TEST_F(TreeFileFormat, a_missing_tree_file_says_why) {
   try {
     factory.buildFromFile("/nonexistent/nope.xml");
     FAIL();
@@ -341,7 +341,7 @@ TEST_F(TreeFileFormat, AMissingTreeFileSaysWhy) {
   }
 }
 
-TEST_F(TreeFileFormat, TheTreeNodesModelListsOurNodesWithTheirPortsForGroot2) {
+TEST_F(TreeFileFormat, the_tree_nodes_model_lists_our_nodes_with_their_ports_for_groot2) {
   tinyxml2::XMLDocument doc;
   ASSERT_EQ(doc.Parse(factory.treeNodesModel().c_str()), tinyxml2::XML_SUCCESS);
   const tinyxml2::XMLElement* root = doc.RootElement();
@@ -374,7 +374,7 @@ TEST_F(TreeFileFormat, TheTreeNodesModelListsOurNodesWithTheirPortsForGroot2) {
   EXPECT_STREQ(inout->Attribute("name"), "n");
 }
 
-TEST_F(TreeFileFormat, AnInoutPortNeedsAKeyAndBothReadsAndWritesIt) {
+TEST_F(TreeFileFormat, an_inout_port_needs_a_key_and_both_reads_and_writes_it) {
   Tree tree = factory.buildFromText(R"(<root BTCPP_format="4"><BehaviorTree>
     <Sequence><Count n="{n}"/><Count n="{n}"/></Sequence></BehaviorTree></root>)");
   EXPECT_EQ(tree.tick(), Status::kSuccess);

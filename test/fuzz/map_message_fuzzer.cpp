@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-#include "../../src/nodes/map_messages.h"
+#include "../../src/ros/map_messages.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/problem.h"

@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-#include "../../src/nodes/coverage_ros.h"
+#include "../../src/ros/coverage_ros.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/world/world_file.h"

@@ -18,8 +18,8 @@
 #include <map>
 #include <string>
 
-#include "../../src/nodes/make_plan_ros.h"
-#include "../../src/nodes/planner_ros.h"
+#include "../../src/ros/make_plan_ros.h"
+#include "../../src/ros/planner_ros.h"
 #include "request_fuzzing.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/lab/scenarios.h"

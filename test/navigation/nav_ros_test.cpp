@@ -1,10 +1,10 @@
-// roomba_bt's navigation conversions without a master (src/nodes/nav_ros.h): goals refused with
+// roomba_bt's navigation conversions without a master (src/ros/nav_ros.h): goals refused with
 // the field or the furniture named, poses, plan requests and replies.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "../../src/nodes/nav_ros.h"
+#include "../../src/ros/nav_ros.h"
 #include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::nav_node {

@@ -2,7 +2,7 @@
 // ~plan_coverage gets back for good requests (a path a disc can drive, rows marked, areas) and
 // for bad ones (success false, the field named). The node around it: test/coverage/
 // plan_coverage.test.
-#include "../../src/nodes/coverage_ros.h"
+#include "../../src/ros/coverage_ros.h"
 
 #include <cmath>
 #include <limits>
@@ -273,6 +273,9 @@ TEST(CoverageRos, a_bad_request_is_refused_naming_its_field) {
   expectRefused(r, "world");
   expectRefused(from(nan, 1.0), "start.x");
   expectRefused(from(1.0, inf), "start.y");
+  r = from(1.0, 1.0);
+  r.start.z = nan;  // as plan_path refuses it
+  expectRefused(r, "start.z");
   expectRefused(from(1.3, 3.5), "start");    // in the round table
   expectRefused(from(20.0, 1.0), "start");   // outside the room
   expectRefused(from(1e308, 1.0), "start");  // far outside

@@ -1,6 +1,6 @@
 // Maps to and from nav_msgs/OccupancyGrid: what roomba_sim publishes is map_server's message,
 // cell by cell, and what rrt_planner takes from /map is either a grid or a reason naming a field.
-#include "../../src/nodes/map_messages.h"
+#include "../../src/ros/map_messages.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The small conversions every node shares (src/nodes/message_parts.h).
-#include "../../src/nodes/message_parts.h"
+// The small conversions every node shares (src/ros/message_parts.h).
+#include "../../src/ros/message_parts.h"
 
 #include <gtest/gtest.h>
 

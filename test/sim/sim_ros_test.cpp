@@ -1,4 +1,4 @@
-// roomba_sim's messages without a master (src/nodes/sim_ros.h): what rviz, tf and a behaviour
+// roomba_sim's messages without a master (src/ros/sim_ros.h): what rviz, tf and a behaviour
 // node see of one unnamed robot and of named robots — frames, stamps, values, markers, the
 // coverage map.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "../../src/nodes/sim_ros.h"
+#include "../../src/ros/sim_ros.h"
 
 namespace roomba_rrt::sim_node {
 namespace {

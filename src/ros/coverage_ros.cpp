@@ -162,6 +162,7 @@ PlanCoverage::Response planCoverage(const PlanCoverage::Request& request,
   try {
     util::requireFinite("start.x", request.start.x);
     util::requireFinite("start.y", request.start.y);
+    util::requireFinite("start.z", request.start.z);  // unused, but a NaN is a client's bug
     const world::World world = requestedWorld(request, defaults);
     if (planned_in != nullptr) *planned_in = world;
     const coverage::CoverageOptions options = requestedOptions(request, defaults, world);

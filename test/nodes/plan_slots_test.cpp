@@ -1,7 +1,7 @@
 // Who gets a planning thread when all are taken (plan_slots.h): a free one at once; an ordinary
 // request otherwise takes the oldest long plan's thread (that plan is asked to stop) or waits for
 // an ordinary one to end; a long request never waits and never preempts.
-#include "../../src/nodes/plan_slots.h"
+#include "../../src/ros/plan_slots.h"
 
 #include <gtest/gtest.h>
 
