@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
 #include "disc_lattice.h"
 #include "ompl_lab.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
-#include "usage.h"
 
 namespace {
 
@@ -300,50 +300,35 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
 // ---------------------------------------------------------------------------------------------
 // Command line.
 
-[[noreturn]] void usage(const std::string& error) {
-  roomba_rrt::bench::exitWithUsage(
-      "map_comparison", error,
-      "usage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
-      " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n"
-      "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n");
-}
-
-int parseCount(const std::string& flag, const std::string& text) {
-  const auto v = nonNegativeInteger(text);
-  if (v && *v <= 1000000000) return static_cast<int>(*v);
-  usage(flag + ": expected an integer from 0 to 10^9, got '" + text + "'");
-}
+const char* const kUsage =
+    "usage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
+    " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n"
+    "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n";
 
 Config parseArgs(int argc, char** argv) {
   Config cfg;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usage(arg + ": missing value");
-      return argv[++i];
-    };
-    if (roomba_rrt::bench::isHelp(arg)) {
-      usage("");
-    } else if (arg == "--json") {
+  roomba_rrt::bench::Arguments args(argc, argv, "map_comparison", kUsage);
+  while (args.next()) {
+    if (args.is("--json")) {
       cfg.json = true;
-    } else if (arg == "--maps") {
-      cfg.maps_dir = value();
-    } else if (arg == "--map") {
-      cfg.only_map = value();
-    } else if (arg == "--pairs") {
-      cfg.pairs = std::max(1, parseCount(arg, value()));
-    } else if (arg == "--runs") {
-      cfg.runs = std::max(1, parseCount(arg, value()));
-    } else if (arg == "--warmup") {
-      cfg.warmup = parseCount(arg, value());
-    } else if (arg == "--star-runs") {
-      cfg.star_runs = std::max(1, parseCount(arg, value()));
-    } else if (arg == "--budget-ms") {
-      cfg.budget_s = std::max(1, parseCount(arg, value())) * 1e-3;
-    } else if (arg == "--iterations") {
-      cfg.iterations = static_cast<unsigned>(std::max(1, parseCount(arg, value())));
+    } else if (args.is("--maps")) {
+      cfg.maps_dir = args.value();
+    } else if (args.is("--map")) {
+      cfg.only_map = args.value();
+    } else if (args.is("--pairs")) {
+      cfg.pairs = args.count(1);
+    } else if (args.is("--runs")) {
+      cfg.runs = args.count(1);
+    } else if (args.is("--warmup")) {
+      cfg.warmup = args.count();
+    } else if (args.is("--star-runs")) {
+      cfg.star_runs = args.count(1);
+    } else if (args.is("--budget-ms")) {
+      cfg.budget_s = args.count(1) * 1e-3;
+    } else if (args.is("--iterations")) {
+      cfg.iterations = static_cast<unsigned>(args.count(1));
     } else {
-      usage("unknown argument '" + arg + "'");
+      args.unknown();
     }
   }
   return cfg;
@@ -360,9 +345,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   std::error_code error;
   if (!std::filesystem::is_directory(cfg.maps_dir, error)) {
-    usage("--maps: '" + cfg.maps_dir + "' is not a directory (" +
-          (error ? error.message() : std::string("missing or a file")) +
-          "); the real maps are in shared/maps beside the repository");
+    roomba_rrt::bench::exitWithUsage(
+        "map_comparison",
+        "--maps: '" + cfg.maps_dir + "' is not a directory (" +
+            (error ? error.message() : std::string("missing or a file")) +
+            "); the real maps are in shared/maps beside the repository (doc/testing.md)",
+        kUsage);
   }
   for (const auto& entry : std::filesystem::directory_iterator(cfg.maps_dir)) {
     const auto& p = entry.path();
@@ -371,7 +359,9 @@ int main(int argc, char** argv) {
     }
   }
   std::sort(files.begin(), files.end());
-  if (files.empty()) usage("no map YAML in " + cfg.maps_dir);
+  if (files.empty()) {
+    roomba_rrt::bench::exitWithUsage("map_comparison", "no map YAML in " + cfg.maps_dir, kUsage);
+  }
   std::vector<MapRows> maps;
   for (const std::string& file : files) {
     try {

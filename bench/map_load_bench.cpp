@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
 #include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/geometry/map_file.h"
-#include "usage.h"
 
 namespace {
 
@@ -125,34 +125,22 @@ struct Config {
   bool json = false;
 };
 
-[[noreturn]] void usage(const std::string& error) {
-  roomba_rrt::bench::exitWithUsage(
-      "map_load_bench", error,
-      "usage: map_load_bench [--map FILE.yaml] [--factor K] [--reps N] [--json]\n");
-}
-
 Config parseArgs(int argc, char** argv) {
   Config cfg;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto count = [&] {
-      if (i + 1 >= argc) usage(arg + ": missing value");
-      const int v = std::atoi(argv[++i]);
-      if (v < 1) usage(arg + ": expected a positive integer");
-      return v;
-    };
-    if (roomba_rrt::bench::isHelp(arg)) {
-      usage("");
-    } else if (arg == "--json") {
+  roomba_rrt::bench::Arguments args(
+      argc, argv, "map_load_bench",
+      "usage: map_load_bench [--map FILE.yaml] [--factor K] [--reps N] [--json]\n");
+  while (args.next()) {
+    if (args.is("--json")) {
       cfg.json = true;
-    } else if (arg == "--map" && i + 1 < argc) {
-      cfg.map = argv[++i];
-    } else if (arg == "--factor") {
-      cfg.factor = count();
-    } else if (arg == "--reps") {
-      cfg.reps = count();
+    } else if (args.is("--map")) {
+      cfg.map = args.value();
+    } else if (args.is("--factor")) {
+      cfg.factor = args.count(1);
+    } else if (args.is("--reps")) {
+      cfg.reps = args.count(1);
     } else {
-      usage("unknown argument '" + arg + "'");
+      args.unknown();
     }
   }
   return cfg;

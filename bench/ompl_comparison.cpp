@@ -38,9 +38,9 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
 #include "ompl_lab.h"
 #include "roomba_rrt/world_planning/room_problem.h"
-#include "usage.h"
 
 namespace {
 
@@ -316,65 +316,51 @@ void printMarkdown(const std::vector<ScenarioRow>& scenarios, const std::vector<
 // ---------------------------------------------------------------------------------------------
 // Command line.
 
-[[noreturn]] void usage(const std::string& error) {
-  roomba_rrt::bench::exitWithUsage(
-      "ompl_comparison", error,
-      "usage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
-      " [--growth-reps N] [--scenarios FILE]\n"
-      "                       [--world FILE] [--room-runs N] [--room-iterations N]"
-      " [--room-only]\n"
-      "       ompl_comparison --plan-once ours|ompl [--iterations N]\n");
-}
-
-unsigned parseCount(const std::string& flag, const std::string& text) {
-  if (const auto v = nonNegativeInteger(text)) return static_cast<unsigned>(*v);
-  usage(flag + ": expected a non-negative integer, got '" + text + "'");
-}
+const char* const kUsage =
+    "usage: ompl_comparison [--json] [--runs N] [--warmup N] [--growth N,N,...]"
+    " [--growth-reps N] [--scenarios FILE]\n"
+    "                       [--world FILE] [--room-runs N] [--room-iterations N]"
+    " [--room-only]\n"
+    "       ompl_comparison --plan-once ours|ompl [--iterations N]\n";
 
 Config parseArgs(int argc, char** argv) {
   Config cfg;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usage(arg + ": missing value");
-      return argv[++i];
-    };
-    if (roomba_rrt::bench::isHelp(arg)) {
-      usage("");
-    } else if (arg == "--json") {
+  roomba_rrt::bench::Arguments args(argc, argv, "ompl_comparison", kUsage);
+  while (args.next()) {
+    if (args.is("--json")) {
       cfg.json = true;
-    } else if (arg == "--runs") {
-      cfg.runs = static_cast<int>(parseCount(arg, value()));
-    } else if (arg == "--warmup") {
-      cfg.warmup = static_cast<int>(parseCount(arg, value()));
-    } else if (arg == "--growth-reps") {
-      cfg.growth_reps = std::max(1, static_cast<int>(parseCount(arg, value())));
-    } else if (arg == "--growth") {
+    } else if (args.is("--runs")) {
+      cfg.runs = args.count(1);
+    } else if (args.is("--warmup")) {
+      cfg.warmup = args.count();
+    } else if (args.is("--growth-reps")) {
+      cfg.growth_reps = args.count(1);
+    } else if (args.is("--growth")) {
       cfg.growth.clear();
-      std::stringstream list(value());
+      std::stringstream list(args.value());
       for (std::string item; std::getline(list, item, ',');) {
-        if (!item.empty()) cfg.growth.push_back(parseCount(arg, item));
+        if (!item.empty()) cfg.growth.push_back(static_cast<unsigned>(args.countOf(item)));
       }
-    } else if (arg == "--plan-once") {
-      cfg.plan_once = value();
-      if (cfg.plan_once != "ours" && cfg.plan_once != "ompl") usage("--plan-once: ours or ompl");
-    } else if (arg == "--iterations") {
-      cfg.iterations = parseCount(arg, value());
-    } else if (arg == "--scenarios") {
-      cfg.scenarios_file = value();
-    } else if (arg == "--world") {
-      cfg.world_file = value();
-    } else if (arg == "--room-only") {
+    } else if (args.is("--plan-once")) {
+      cfg.plan_once = args.value();
+      if (cfg.plan_once != "ours" && cfg.plan_once != "ompl")
+        args.fail("--plan-once: ours or ompl");
+    } else if (args.is("--iterations")) {
+      cfg.iterations = static_cast<unsigned>(args.count());
+    } else if (args.is("--scenarios")) {
+      cfg.scenarios_file = args.value();
+    } else if (args.is("--world")) {
+      cfg.world_file = args.value();
+    } else if (args.is("--room-only")) {
       cfg.room_only = true;
-    } else if (arg == "--room-iterations") {
-      cfg.room_iterations = static_cast<int>(parseCount(arg, value()));
-    } else if (arg == "--room-runs") {
-      cfg.room_runs = std::max(1, static_cast<int>(parseCount(arg, value())));
+    } else if (args.is("--room-iterations")) {
+      cfg.room_iterations = args.count();
+    } else if (args.is("--room-runs")) {
+      cfg.room_runs = args.count(1);
     } else {
-      usage("unknown argument '" + arg + "'");
+      args.unknown();
     }
   }
-  if (cfg.runs < 1) usage("--runs: must be at least 1");
   return cfg;
 }
 

@@ -280,17 +280,6 @@ inline std::string num(double v, int precision) {
   return s.str();
 }
 
-/// A command-line count: a non-negative integer and nothing else, or nothing.
-inline std::optional<long> nonNegativeInteger(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(text, &used);
-    if (used == text.size() && v >= 0) return v;
-  } catch (const std::exception&) {
-  }
-  return std::nullopt;
-}
-
 /// The most iterations of our planner (`options`, RRT* in practice) on `query` whose solve stays
 /// within `budget` seconds of CPU time (doubling, then the last count that fit): our planner
 /// stops by iterations, OMPL's by time.

@@ -23,7 +23,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/PlanPath.h>
-#include "usage.h"
+#include "arguments.h"
 
 namespace {
 
@@ -36,39 +36,28 @@ struct Options {
   bool json = false;
 };
 
-[[noreturn]] void usage(const std::string& error) {
-  roomba_rrt::bench::exitWithUsage("plan_path_bench", error,
-                                   "usage: plan_path_bench [--calls N] [--warmup N] "
-                                   "[--scenario NAME] [--service NAME] [--no-markers] [--json]\n");
-}
-
 Options parseOptions(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usage(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--calls") {
-      o.calls = std::atoi(value().c_str());
-    } else if (arg == "--warmup") {
-      o.warmup = std::atoi(value().c_str());
-    } else if (arg == "--scenario") {
-      o.scenario = value();
-    } else if (arg == "--service") {
-      o.service = value();
-    } else if (arg == "--no-markers") {
+  roomba_rrt::bench::Arguments args(argc, argv, "plan_path_bench",
+                                    "usage: plan_path_bench [--calls N] [--warmup N] "
+                                    "[--scenario NAME] [--service NAME] [--no-markers] [--json]\n");
+  while (args.next()) {
+    if (args.is("--calls")) {
+      o.calls = args.count(1);
+    } else if (args.is("--warmup")) {
+      o.warmup = args.count();
+    } else if (args.is("--scenario")) {
+      o.scenario = args.value();
+    } else if (args.is("--service")) {
+      o.service = args.value();
+    } else if (args.is("--no-markers")) {
       o.markers = false;
-    } else if (arg == "--json") {
+    } else if (args.is("--json")) {
       o.json = true;
-    } else if (roomba_rrt::bench::isHelp(arg)) {
-      usage("");
     } else {
-      usage("unknown argument " + arg);
+      args.unknown();
     }
   }
-  if (o.calls < 1 || o.warmup < 0) usage("--calls must be >= 1 and --warmup >= 0");
   return o;
 }
 
