@@ -63,7 +63,7 @@ endif()
 # --- rrt_planner node (owned by the node helper) ---
 # The ROS adapter of the planning library: the rrt_planner node (service ~plan_path, rviz
 # markers on ~tree, ~path), its rostests, and the service round-trip benchmark client.
-add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/ros/planner_ros.cpp
+add_executable(rrt_planner src/nodes/rrt_planner_node.cpp src/ros/rrt_planner.cpp src/ros/planner_ros.cpp
   src/ros/make_plan_ros.cpp
   src/ros/plan_slots.cpp)
 target_link_libraries(rrt_planner roomba_world_planning roomba_node_common)
