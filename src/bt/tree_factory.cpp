@@ -14,6 +14,7 @@
 #include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/inverter_node.h"
 #include "roomba_rrt/bt/keep_running_until_failure.h"
+#include "roomba_rrt/bt/loop_node.h"
 #include "roomba_rrt/bt/parallel_all_node.h"
 #include "roomba_rrt/bt/parallel_node.h"
 #include "roomba_rrt/bt/pipeline_sequence.h"
@@ -42,6 +43,16 @@ namespace {
 template <class Node>
 TreeFactory::Builder namedBuilder() {
   return [](const NodeSpec& spec) { return std::make_unique<Node>(spec.name); };
+}
+
+/// `if_empty` of a Loop node: SUCCESS, FAILURE or SKIPPED.
+Status loopIfEmpty(const NodeSpec& spec) {
+  const std::string text = spec.literal<std::string>("if_empty");
+  if (text == "SUCCESS") return Status::kSuccess;
+  if (text == "FAILURE") return Status::kFailure;
+  if (text == "SKIPPED") return Status::kSkipped;
+  throw std::invalid_argument("port 'if_empty' must be SUCCESS, FAILURE or SKIPPED, got '" + text +
+                              "'");
 }
 
 /// Milliseconds as ticks at the tree's tick rate: 0 stays 0 (Delay and Sleep: at once).
@@ -118,6 +129,17 @@ void TreeFactory::registerStandardNodes() {
   registerNodeType<ParallelAllNode>("ParallelAll", [](const NodeSpec& s) {
     return std::make_unique<ParallelAllNode>(s.name, s.literal<int>("max_failures"));
   });
+  const auto loop = [this](const std::string& type, auto value) {
+    using T = decltype(value);
+    registerNodeType<LoopNode<T>>(type, [](const NodeSpec& s) {
+      return std::make_unique<LoopNode<T>>(s.name, s.input<std::deque<T>>("queue"), loopIfEmpty(s),
+                                           s.output<T>("value"));
+    });
+  };
+  loop("LoopInt", int{});
+  loop("LoopDouble", double{});
+  loop("LoopString", std::string{});
+  loop("LoopBool", bool{});
   registerNodeType<RunOnceNode>("RunOnce", [](const NodeSpec& s) {
     return std::make_unique<RunOnceNode>(s.name, s.literal<bool>("then_skip"));
   });

@@ -1,7 +1,7 @@
 // BehaviorTree.CPP 4's standard nodes beyond the ones our trees were first written with:
 // AlwaysSuccess/Failure, ForceSuccess/Failure, KeepRunningUntilFailure, Delay, Sleep, Parallel,
-// ParallelAll, IfThenElse, WhileDoElse, Switch. One test per line of their header contracts,
-// and each read from a tree file with BT.CPP's ports.
+// ParallelAll, IfThenElse, WhileDoElse, Switch, LoopInt/Double/String/Bool. One test per line of
+// their header contracts, and each read from a tree file with BT.CPP's ports.
 #include <gtest/gtest.h>
 
 #include "roomba_rrt/bt/always_status.h"
@@ -10,6 +10,7 @@
 #include "roomba_rrt/bt/force_status.h"
 #include "roomba_rrt/bt/if_then_else_node.h"
 #include "roomba_rrt/bt/keep_running_until_failure.h"
+#include "roomba_rrt/bt/loop_node.h"
 #include "roomba_rrt/bt/parallel_all_node.h"
 #include "roomba_rrt/bt/parallel_node.h"
 #include "roomba_rrt/bt/selector_node.h"
@@ -298,6 +299,89 @@ TEST(TryCatch, catch_on_halt_runs_the_catch_child_when_halted_in_the_try_block) 
   EXPECT_EQ(a->halts, 1);
   EXPECT_EQ(catcher->ticks, 1);
   EXPECT_EQ(catcher->halts, 1);  // still running: stopped
+}
+
+/// A LoopInt over "2;5;7" whose child records the value it is given; `if_empty` as given.
+struct LoopRun {
+  explicit LoopRun(const std::string& queue, const std::string& if_empty = "SUCCESS",
+                   Status child = Status::kSuccess)
+      : tree(build(queue, if_empty, child)) {}
+
+  /// Appends {v} at each tick and returns `child`.
+  struct RecordValue final : LeafNode {
+    RecordValue(std::string name, Blackboard& board, std::vector<int>& seen, Status child)
+        : LeafNode(std::move(name)), board_(board), seen_(seen), child_(child) {}
+    Status onTick() override {
+      seen_.push_back(*board_.get<int>("v"));
+      return child_;
+    }
+    Blackboard& board_;
+    std::vector<int>& seen_;
+    Status child_;
+  };
+
+  Tree build(const std::string& queue, const std::string& if_empty, Status child) {
+    factory.registerLeaf("Record", [this, child](const NodeSpec& s) {
+      return std::make_unique<RecordValue>(s.name, *board, seen, child);
+    });
+    return factory.buildFromText("<root BTCPP_format=\"4\"><BehaviorTree><LoopInt queue=\"" +
+                                     queue + "\" if_empty=\"" + if_empty +
+                                     "\" value=\"{v}\"><Record/></LoopInt></BehaviorTree></root>",
+                                 "t", board);
+  }
+
+  TreeFactory factory;
+  std::shared_ptr<Blackboard> board = std::make_shared<Blackboard>();
+  std::vector<int> seen;
+  Tree tree;
+};
+
+TEST(LoopNode, runs_the_child_once_per_value_then_returns_if_empty) {
+  LoopRun run("2;5;7");
+  EXPECT_EQ(run.tree.tick(), R);
+  EXPECT_EQ(run.tree.tick(), R);
+  EXPECT_EQ(run.tree.tick(), R);
+  EXPECT_EQ(run.tree.tick(), S);  // no value left
+  EXPECT_EQ(run.seen, (std::vector<int>{2, 5, 7}));
+  EXPECT_EQ(run.tree.tick(), R);  // entered anew: the queue again
+  EXPECT_EQ(run.seen.back(), 2);
+}
+
+TEST(LoopNode, an_empty_queue_returns_if_empty_without_ticking_the_child) {
+  LoopRun skipped("", "SKIPPED");
+  EXPECT_EQ(skipped.tree.tick(), Status::kSkipped);
+  LoopRun failed("", "FAILURE");
+  EXPECT_EQ(failed.tree.tick(), F);
+  EXPECT_TRUE(failed.seen.empty());
+}
+
+TEST(LoopNode, a_failing_child_fails_the_loop) {
+  LoopRun run("1;2", "SUCCESS", Status::kFailure);
+  EXPECT_EQ(run.tree.tick(), F);
+  EXPECT_EQ(run.seen, (std::vector<int>{1}));
+}
+
+TEST(LoopNode, a_queue_on_the_blackboard_is_read_not_emptied_and_bad_literals_are_refused) {
+  TreeFactory factory;
+  auto board = std::make_shared<Blackboard>();
+  board->set<std::deque<double>>("q", {0.5, 1.5});
+  Tree tree = factory.buildFromText(
+      R"(<root BTCPP_format="4"><BehaviorTree><LoopDouble queue="{q}" value="{v}"><AlwaysSuccess/></LoopDouble></BehaviorTree></root>)",
+      "t", board);
+  EXPECT_EQ(tree.tick(), R);
+  EXPECT_EQ(*board->get<double>("v"), 0.5);
+  EXPECT_EQ(tree.tick(), R);
+  EXPECT_EQ(*board->get<double>("v"), 1.5);
+  EXPECT_EQ(tree.tick(), S);
+  EXPECT_EQ(board->get<std::deque<double>>("q")->size(), 2u);
+  for (const char* bad :
+       {R"(<LoopInt queue="1;x" value="{v}"><AlwaysSuccess/></LoopInt>)",
+        R"(<LoopBool queue="true" if_empty="RUNNING" value="{b}"><AlwaysSuccess/></LoopBool>)"}) {
+    EXPECT_THROW(factory.buildFromText(std::string("<root BTCPP_format=\"4\"><BehaviorTree>") +
+                                       bad + "</BehaviorTree></root>"),
+                 std::exception)
+        << bad;
+  }
 }
 
 /// The standard nodes as a tree file names them, with BT.CPP's ports.
