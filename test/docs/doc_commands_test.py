@@ -51,7 +51,8 @@ class Doc:
         # What the checks compare against, read once.
         self.node_sources = "".join(
             open(f, encoding="utf-8").read()
-            for f in glob.glob(os.path.join(root, "src", "nodes", "*.*")))
+            for folder in ("nodes", "ros")  # the mains and the adapters that read parameters
+            for f in glob.glob(os.path.join(root, "src", folder, "*.*")))
         self.request_fields = {}  # service -> (srv file, its request's fields)
         for service, name in (("/rrt_planner/plan_path", "PlanPath"),
                               ("/coverage_planner/plan_coverage", "PlanCoverage")):

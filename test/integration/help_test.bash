@@ -14,7 +14,8 @@ for node in rrt_planner roomba_sim coverage_planner roomba_fsm roomba_bt roomba_
 done
 for exe in "$bin"/*; do
   name=$(basename "$exe")
-  [[ -f $exe && -x $exe && $name != *_test && $name != *_fuzzer ]] || continue
+  # Test executables (gtests, rostest nodes) and fuzzers are not a user's commands.
+  [[ -f $exe && -x $exe && $name != *_test && $name != *_rostest && $name != *_fuzzer ]] || continue
   rc=0
   out=$(timeout 10 "$exe" --help </dev/null 2>/dev/null) || rc=$?
   checked=$((checked + 1))
