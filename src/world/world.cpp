@@ -66,6 +66,7 @@ void validateRobots(const World& world) {
     }
     if (!names.insert(r.name).second) fail(member(prefix, "name"), "repeats '" + r.name + "'");
     requireRobotLimits(prefix, r);
+    sensors::validate(r.sensors, member(prefix, "sensors"), r.radius, world.step);
     if (r.max_linear_speed * world.step >= r.radius) {
       fail("step", "is too long: " + r.name + " would move more than its radius in one step");
     }
@@ -179,6 +180,7 @@ void validate(const World& world, PoseSource pose) {
   requireRoomSize(world.room);
   if (!named) requireRobotLimits("robot", world.robot());
   util::requireInRange("step", world.step, L::kMinStep, L::kMaxStep);
+  if (!named) sensors::validate(world.robot().sensors, "sensors", world.robot().radius, world.step);
   util::requireInRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
   requireRoomFits(world, largestRadius(world));
   const RobotSpec& robot = world.robot();
