@@ -15,3 +15,13 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(sensors_test test/sensors/ray_cast_test.cpp test/sensors/sensor_spec_test.cpp
     test/sensors/scanner_test.cpp LINK roomba_sensors)
 endif()
+
+# Google Benchmark (libbenchmark-dev): rays per second, the lidars' cost per simulator step.
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(sensor_bench bench/sensor_bench.cpp)
+  target_link_libraries(sensor_bench roomba_sensors roomba_sim_core benchmark::benchmark)
+  target_compile_definitions(sensor_bench PRIVATE
+    ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
+    ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+endif()

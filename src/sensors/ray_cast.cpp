@@ -125,12 +125,13 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
   const int sj = ray.dy > 0 ? 1 : (ray.dy < 0 ? -1 : 0);
   // Where the ray crosses the x (y) line that leaves column i (row j) in its direction, always
   // from the ray's own origin: no error builds up along the walk.
-  const auto cross_x = [&](int i) {
-    return si == 0 ? kInf : (g.origin.x + (i + (si > 0)) * res - ray.origin.x) / ray.dx;
-  };
-  const auto cross_y = [&](int j) {
-    return sj == 0 ? kInf : (g.origin.y + (j + (sj > 0)) * res - ray.origin.y) / ray.dy;
-  };
+  // (Multiplied by the inverse: the order of the crossings is all the walk needs, within
+  // rounding, which the corner test below covers; the distance returned is the square's own.)
+  const double inv_x = 1 / ray.dx, inv_y = 1 / ray.dy;
+  const double ox = g.origin.x + (si > 0) * res - ray.origin.x;
+  const double oy = g.origin.y + (sj > 0) * res - ray.origin.y;
+  const auto cross_x = [&](int i) { return si == 0 ? kInf : (ox + i * res) * inv_x; };
+  const auto cross_y = [&](int j) { return sj == 0 ? kInf : (oy + j * res) * inv_y; };
   // A blocked cell the ray touches (its closed square), or +inf: rounding in the cell a jump
   // lands in may name a neighbour the ray only passes by.
   const auto touch = [&](int i, int j) {
@@ -138,33 +139,42 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
   };
   // The squares round cell (i, j), which may touch the ray where it is: at the origin, or where
   // a jump lands, a point that rounding may have put in any of the cells that share it.
+  const auto clearance = [&](int i, int j) {
+    return g.inside(i, j) ? clearance_[static_cast<std::size_t>(j) * g.width + i] : 0;
+  };
   const auto touch_around = [&](int i, int j) {
     double t = kInf;
+    if (clearance(i, j) >= 2) return t;  // all nine are free
     for (int b = j - 1; b <= j + 1; ++b) {
       for (int a = i - 1; a <= i + 1; ++a) t = std::min(t, touch(a, b));
     }
     return t;
   };
+  const double inv_res = 1 / res;
+  const auto column = [&](double x) {
+    return static_cast<int>(std::floor((x - g.origin.x) * inv_res));
+  };
+  const auto row = [&](double y) {
+    return static_cast<int>(std::floor((y - g.origin.y) * inv_res));
+  };
   int i = g.column(ray.origin.x), j = g.row(ray.origin.y);
   double best = touch_around(i, j);
   for (;;) {
-    if (!g.inside(i, j) || clearance_[static_cast<std::size_t>(j) * g.width + i] == 0) {
+    const int k = clearance(i, j);
+    if (k == 0) {
       best = std::min(best, touch(i, j));
       if (best < kInf) return best <= limit ? best : kInf;
-    } else if (const int k = clearance_[static_cast<std::size_t>(j) * g.width + i]; k >= 2) {
+    } else if (k >= 3) {
       // Every cell within k − 1 of (i, j) is free: leave that block in one step, to the cell of
-      // the block where the ray leaves it.
-      const geometry::Rectangle block{g.origin.x + (i - k + 1) * res,
-                                      g.origin.y + (j - k + 1) * res, g.origin.x + (i + k) * res,
-                                      g.origin.y + (j + k) * res};
-      const auto [tx, ty] = exitTimes(ray, block);
+      // the block where the ray leaves it (worth it from two cells on).
+      const int ei = i + si * (k - 1), ej = j + sj * (k - 1);  // its last column and row
+      const double tx = cross_x(ei), ty = cross_y(ej);
       const double t = std::min(tx, ty);
       if (best <= t || t > limit) return best <= limit ? best : kInf;
-      const int ni = tx <= ty
-                         ? i + si * (k - 1)
-                         : std::clamp(g.column(ray.origin.x + t * ray.dx), i - k + 1, i + k - 1);
-      const int nj = ty <= tx ? j + sj * (k - 1)
-                              : std::clamp(g.row(ray.origin.y + t * ray.dy), j - k + 1, j + k - 1);
+      const int ni =
+          tx <= ty ? ei : std::clamp(column(ray.origin.x + t * ray.dx), i - k + 1, i + k - 1);
+      const int nj =
+          ty <= tx ? ej : std::clamp(row(ray.origin.y + t * ray.dy), j - k + 1, j + k - 1);
       if (ni != i || nj != j) {
         i = ni;
         j = nj;
@@ -184,14 +194,11 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
       // ray there count too, as far as the square's own test says they touch it.
       best = std::min({best, touch(i + si, j), touch(i, j + sj)});
     }
-    if (tx == ty) {
-      i += si;
-      j += sj;
-    } else if (tx < ty) {
-      i += si;
-    } else {
-      j += sj;
-    }
+    // One cell at a time, through a corner too (the cell beside it is then visited, which the
+    // ray touches there); without a branch: the order of crossings is hard to predict.
+    const bool step_x = tx <= ty;
+    i += step_x ? si : 0;
+    j += step_x ? 0 : sj;
   }
 }
 

@@ -12,22 +12,29 @@ namespace {
 constexpr double kTimeSlack = 1e-9;
 }  // namespace
 
-void measure(const RayCaster& caster, const RangeSensorSpec& spec, const robot::Pose2D& pose,
-             const std::vector<geometry::Circle>& others, std::mt19937& noise,
-             std::vector<float>& ranges) {
+RayFan::RayFan(const RangeSensorSpec& spec) {
+  for (int k = 0; k < spec.samples; ++k) {
+    const double angle = spec.angle_min + k * spec.angleIncrement();
+    cos.push_back(std::cos(angle));
+    sin.push_back(std::sin(angle));
+  }
+}
+
+void measure(const RayCaster& caster, const RangeSensorSpec& spec, const RayFan& fan,
+             const robot::Pose2D& pose, const std::vector<geometry::Circle>& others,
+             std::mt19937& noise, std::vector<float>& ranges) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   Ray ray;
   ray.origin = {pose.x + c * spec.mount.x - s * spec.mount.y,
                 pose.y + s * spec.mount.x + c * spec.mount.y};
   const double heading = pose.theta + spec.mount.theta;
-  const double increment = spec.angleIncrement();
+  const double ch = std::cos(heading), sh = std::sin(heading);
   std::normal_distribution<double> gauss(0.0, spec.noise_stddev);
   ranges.resize(static_cast<std::size_t>(spec.samples));
   for (int k = 0; k < spec.samples; ++k) {
-    const double angle = heading + spec.angle_min + k * increment;
-    ray.dx = std::cos(angle);
-    ray.dy = std::sin(angle);
+    ray.dx = ch * fan.cos[k] - sh * fan.sin[k];
+    ray.dy = sh * fan.cos[k] + ch * fan.sin[k];
     double range = caster.cast(ray, spec.range_max, others);
     if (range < spec.range_min) {
       ranges[k] = -kInf;
@@ -45,7 +52,7 @@ Scanner::Scanner(const world::World& world) : caster_(world.room) {
     radii_.push_back(world.robots[r].radius);
     const auto& specs = world.robots[r].sensors;
     for (std::size_t k = 0; k < specs.size(); ++k) {
-      sensors_.push_back({r, k, specs[k], std::mt19937(specs[k].seed), 0.0});
+      sensors_.push_back({r, k, specs[k], RayFan(specs[k]), std::mt19937(specs[k].seed), 0.0});
     }
   }
 }
@@ -63,7 +70,8 @@ const std::vector<Scan>& Scanner::scan(double time, const std::vector<robot::Pos
     out.robot = sensor.robot;
     out.sensor = sensor.index;
     out.time = time;
-    measure(caster_, sensor.spec, poses[sensor.robot], others_, sensor.noise, out.ranges);
+    measure(caster_, sensor.spec, sensor.fan, poses[sensor.robot], others_, sensor.noise,
+            out.ranges);
     rays_ += out.ranges.size();
   }
   return scans_;

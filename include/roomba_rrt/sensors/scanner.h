@@ -24,14 +24,21 @@ struct Scan {
   std::vector<float> ranges;
 };
 
-/// The ranges a sensor `spec` mounted on a robot at `pose` reads, into `ranges` (resized to
-/// spec.samples): the exact distance along each ray to the first wall, piece of furniture,
-/// blocked map cell or disc of `others`; −inf below range_min, +inf beyond range_max; a return
-/// within the range gets Gaussian noise of spec.noise_stddev from `noise`, clamped to
+/// The directions of a sensor's rays relative to its heading (cos and sin of angle_min + k ·
+/// angleIncrement()), computed once: a scan then turns them by the heading.
+struct RayFan {
+  explicit RayFan(const RangeSensorSpec& spec);
+  std::vector<double> cos, sin;
+};
+
+/// The ranges a sensor `spec` (its rays `fan`) mounted on a robot at `pose` reads, into `ranges`
+/// (resized to spec.samples): the exact distance along each ray to the first wall, piece of
+/// furniture, blocked map cell or disc of `others`; −inf below range_min, +inf beyond range_max; a
+/// return within the range gets Gaussian noise of spec.noise_stddev from `noise`, clamped to
 /// [range_min, range_max] (a noisy reading never turns into "no return").
-void measure(const RayCaster& caster, const RangeSensorSpec& spec, const robot::Pose2D& pose,
-             const std::vector<geometry::Circle>& others, std::mt19937& noise,
-             std::vector<float>& ranges);
+void measure(const RayCaster& caster, const RangeSensorSpec& spec, const RayFan& fan,
+             const robot::Pose2D& pose, const std::vector<geometry::Circle>& others,
+             std::mt19937& noise, std::vector<float>& ranges);
 
 /// Schedules and takes the scans of every robot's sensors (World::robots[i].sensors).
 class Scanner {
@@ -52,6 +59,7 @@ class Scanner {
   struct Sensor {
     std::size_t robot, index;
     RangeSensorSpec spec;
+    RayFan fan;
     std::mt19937 noise;
     double next_time = 0;  ///< s
   };

@@ -54,7 +54,7 @@ struct RobotSpec {
   double max_angular_speed = 2.0;  ///< |w| is clamped to this, rad/s
   /// Its range sensors (`sensors:`; none here, the LDS preset for a world file that names none):
   /// they sense, and change nothing the robot does.
-  std::vector<sensors::RangeSensorSpec> sensors;
+  std::vector<sensors::RangeSensorSpec> sensors{};
 };
 
 /// Everything the simulator needs to know about the room and the robots, and what the planners
