@@ -14,6 +14,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Crossings of an x line and a y line nearer than this (m) pass (within rounding) through a
 /// cell corner: both cells beside it are tested.
 constexpr double kCornerSlack = 1e-9;
+/// The same near a corner where a jump lands, in cells.
+constexpr double kCornerCells = 1e-6;
 
 /// The ray parameters at which it crosses the box's far x side and far y side (+inf along an
 /// axis it does not move along): where a ray that is inside the box leaves it.
@@ -132,16 +134,18 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
   const double oy = g.origin.y + (sj > 0) * res - ray.origin.y;
   const auto cross_x = [&](int i) { return si == 0 ? kInf : (ox + i * res) * inv_x; };
   const auto cross_y = [&](int j) { return sj == 0 ? kInf : (oy + j * res) * inv_y; };
-  // A blocked cell the ray touches (its closed square), or +inf: rounding in the cell a jump
-  // lands in may name a neighbour the ray only passes by.
-  const auto touch = [&](int i, int j) {
-    return g.blocked(i, j) ? hitRectangle(ray, g.square(i, j)) : kInf;
-  };
-  // The squares round cell (i, j), which may touch the ray where it is: at the origin, or where
-  // a jump lands, a point that rounding may have put in any of the cells that share it.
+  // A cell's clearance, 0 when it is blocked (outside the grid too): the walk reads this array
+  // alone, not the grid's cells as well (one cache miss per new place, not two).
   const auto clearance = [&](int i, int j) {
     return g.inside(i, j) ? clearance_[static_cast<std::size_t>(j) * g.width + i] : 0;
   };
+  // A blocked cell the ray touches (its closed square), or +inf: rounding in the cell a jump
+  // lands in may name a neighbour the ray only passes by.
+  const auto touch = [&](int i, int j) {
+    return clearance(i, j) == 0 ? hitRectangle(ray, g.square(i, j)) : kInf;
+  };
+  // The squares round cell (i, j), which may touch the ray where it is: at the origin, or where
+  // a jump lands, a point that rounding may have put in any of the cells that share it.
   const auto touch_around = [&](int i, int j) {
     double t = kInf;
     if (clearance(i, j) >= 2) return t;  // all nine are free
@@ -151,12 +155,6 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
     return t;
   };
   const double inv_res = 1 / res;
-  const auto column = [&](double x) {
-    return static_cast<int>(std::floor((x - g.origin.x) * inv_res));
-  };
-  const auto row = [&](double y) {
-    return static_cast<int>(std::floor((y - g.origin.y) * inv_res));
-  };
   int i = g.column(ray.origin.x), j = g.row(ray.origin.y);
   double best = touch_around(i, j);
   for (;;) {
@@ -171,14 +169,21 @@ double RayCaster::castMap(const Ray& ray, double limit) const {
       const double tx = cross_x(ei), ty = cross_y(ej);
       const double t = std::min(tx, ty);
       if (best <= t || t > limit) return best <= limit ? best : kInf;
-      const int ni =
-          tx <= ty ? ei : std::clamp(column(ray.origin.x + t * ray.dx), i - k + 1, i + k - 1);
-      const int nj =
-          ty <= tx ? ej : std::clamp(row(ray.origin.y + t * ray.dy), j - k + 1, j + k - 1);
+      // The landing point's other coordinate, in cells: near a whole number, the point is near
+      // a cell corner, where rounding may have picked the wrong one of the cells that share it.
+      const double cells = tx <= ty ? (ray.origin.y + t * ray.dy - g.origin.y) * inv_res
+                                    : (ray.origin.x + t * ray.dx - g.origin.x) * inv_res;
+      const int across = std::clamp(static_cast<int>(std::floor(cells)), (tx <= ty ? j : i) - k + 1,
+                                    (tx <= ty ? j : i) + k - 1);
+      const int ni = tx <= ty ? ei : across;
+      const int nj = tx <= ty ? (ty <= tx ? ej : across) : ej;
       if (ni != i || nj != j) {
         i = ni;
         j = nj;
-        best = std::min(best, touch_around(i, j));
+        // Away from a corner the walk's next crossing reaches the one square the point touches.
+        if (tx == ty || std::abs(cells - std::round(cells)) < kCornerCells) {
+          best = std::min(best, touch_around(i, j));
+        }
         continue;
       }
     }
