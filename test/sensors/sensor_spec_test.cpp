@@ -111,6 +111,11 @@ TEST(SensorSpec, bad_sensors_are_refused_naming_the_field) {
   refuses("{preset: kinect}", "sensors[0].preset: must be lds or ir_bumper, got 'kinect'");
   refuses("{range: 3}", "sensors[0].range: is not a known parameter");
   refuses("{preset: lds}, {preset: lds}", "sensors[1].name: repeats 'scan'");
+  std::string eleven;  // 1.1 M rays per scan
+  for (char name = 'a'; name <= 'k'; ++name) {
+    eleven += std::string(eleven.empty() ? "" : ", ") + "{samples: 100000, name: " + name + "}";
+  }
+  refuses(eleven, "sensors: have 1100000 samples per scan over all robots; at most 1000000");
   EXPECT_NE(errorFor("sensors: {preset: lds}").find("sensors: must be a list"), std::string::npos);
   EXPECT_NE(errorFor("robots:\n  - {name: a, initial_pose: {x: 1, y: 1}, sensors: [{rate: 0}]}")
                 .find("robots[0].sensors[0].rate: must be in (0, 60] Hz"),

@@ -39,6 +39,9 @@ struct SensorLimits {
   static constexpr double kMaxRange = 1000;       ///< range_max ≤ this, m
   static constexpr double kMaxNoise = 100;        ///< noise_stddev ≤ this, m
   static constexpr std::size_t kMaxSensors = 32;  ///< sensors per robot
+  /// Rays of one scan of every sensor of every robot together (the scanner keeps each ray's
+  /// direction and range: 20 MB at most).
+  static constexpr std::size_t kMaxWorldSamples = 1000000;
 };
 
 /// An LDS-style 360° lidar as on a TurtleBot3 (its hls_lfcd_lds driver's scan): topic "scan",
