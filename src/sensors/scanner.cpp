@@ -47,7 +47,18 @@ void measure(const RayCaster& caster, const RangeSensorSpec& spec, const RayFan&
   }
 }
 
-Scanner::Scanner(const world::World& world) : caster_(world.room) {
+namespace {
+/// The room to cast in: the world's, or (no sensors at all) an empty one, so that a large map
+/// does not cost its clearance for nothing.
+world::Room castingRoom(const world::World& world) {
+  for (const world::RobotSpec& robot : world.robots) {
+    if (!robot.sensors.empty()) return world.room;
+  }
+  return {};
+}
+}  // namespace
+
+Scanner::Scanner(const world::World& world) : caster_(castingRoom(world)) {
   for (std::size_t r = 0; r < world.robots.size(); ++r) {
     radii_.push_back(world.robots[r].radius);
     const auto& specs = world.robots[r].sensors;
