@@ -71,7 +71,8 @@ endif()
 
 # --- the other parts' benchmarks (declared in their own fragments) ----------------------------
 # `benchmarks` builds them too, plus the tools scripts/bench runs (the nodes it measures).
-foreach(target IN ITEMS planning_bench behavior_bench sim_bench sim_rtf_probe plan_path_bench
+foreach(target IN ITEMS planning_bench behavior_bench sim_bench sensor_bench sim_rtf_probe
+                        plan_path_bench
                         rrt_monte_carlo roomba_sim roomba_fsm rrt_planner roomba_bt
                         nav_latency_probe fairness_probe coverage_bench)
   if(TARGET ${target})

@@ -14,7 +14,7 @@ target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
 # The node wires parameters, topics and timers; src/ros/sim_ros.cpp builds its messages.
 add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/ros/sim_ros.cpp)
-target_link_libraries(roomba_sim roomba_sim_core roomba_node_common)
+target_link_libraries(roomba_sim roomba_sim_core roomba_sensors roomba_node_common)
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
 # Measures the node's sustained real-time factor while reading every /odom (doc/performance.md).
@@ -30,7 +30,7 @@ if(CATKIN_ENABLE_TESTING)
 
   # roomba_sim's messages (odometry, tf, bumper, markers, coverage map), without a master.
   roomba_rrt_gtest(sim_ros_test test/sim/sim_ros_test.cpp src/ros/sim_ros.cpp
-    LINK roomba_sim_core ROS)
+    LINK roomba_sim_core roomba_sensors ROS)
 
   # A rostest whose test node (gtest) talks to roomba_sim through a real master.
   function(roomba_sim_rostest target launch_file source)
@@ -91,6 +91,9 @@ if(CATKIN_ENABLE_TESTING)
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
     add_dependencies(sim_map_test roomba_fsm)
   endif()
+  # Range sensors: the LDS's LaserScan and tf, one robot at 10x and two named robots at 3x.
+  roomba_sim_rostest(sim_scan_test test/sim/sim_scan.test test/sim/sim_scan_test.cpp)
+  add_rostest(test/sim/sim_scan_two_robots.test DEPENDENCIES sim_scan_test)
   # Two named robots, each driven by its own roomba_fsm under its namespace.
   roomba_sim_rostest(sim_two_robots_test test/sim/sim_two_robots.test
     test/sim/sim_two_robots_test.cpp)

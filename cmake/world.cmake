@@ -4,7 +4,7 @@
 
 add_library(roomba_world src/world/world.cpp src/world/world_file.cpp)
 target_include_directories(roomba_world PUBLIC ${PROJECT_SOURCE_DIR}/include)
-target_link_libraries(roomba_world PUBLIC roomba_geometry yaml-cpp)
+target_link_libraries(roomba_world PUBLIC roomba_geometry roomba_sensor_spec yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(world_test test/world/world_test.cpp LINK roomba_world)

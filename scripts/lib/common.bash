@@ -29,6 +29,7 @@ RR_PACKAGES=(
   ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
   ros-roscpp-msg python3-roscpp-msg
   ros-move-base-msgs libmove-base-msgs-dev python3-move-base-msgs
+  ros-sensor-msgs libsensor-msgs-dev python3-sensor-msgs  # roomba_sim's LaserScan
   # tf2 (C++ and Python) and its tools (tf2_echo, view_frames), actionlib (C++ and Python)
   libtf2-dev libtf2-ros-dev python3-tf2-ros tf2-tools
   libactionlib-dev python3-actionlib python3-actionlib-tools

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The rviz view for several named robots (scripts/run --robots N): the mode's own configuration
-with, for every robot, its state text (its behaviour node's ~state_marker) and its RobotModel
-(tf prefix robotK), and, when a robot navigates, the navigation displays and rviz's 2D Nav Goal
+with, for every robot, its state text (its behaviour node's ~state_marker), its RobotModel
+(tf prefix robotK) and its LDS scan (/robotK/scan), and, when a robot navigates, the navigation displays and rviz's 2D Nav Goal
 tool pointed at the first robot that navigates.
 
 usage: rviz_for_robots.py BASE.rviz OUT.rviz NAV_ROBOT ROBOT:NODE...
@@ -17,10 +17,12 @@ def main():
         config = yaml.safe_load(f)
     displays = config["Visualization Manager"]["Displays"]
     template_model = next((d for d in displays if d.get("Class") == "rviz/RobotModel"), None)
-    # The single robot's state texts and model make no sense with named robots: one per robot.
+    template_scan = next((d for d in displays if d.get("Class") == "rviz/LaserScan"), None)
+    # The single robot's state texts, model and scan make no sense with named robots: one per
+    # robot.
     displays[:] = [d for d in displays
                    if not str(d.get("Marker Topic", "")).endswith("/state_marker")
-                   and d.get("Class") != "rviz/RobotModel"]
+                   and d.get("Class") not in ("rviz/RobotModel", "rviz/LaserScan")]
     if nav_robot != "-":
         def point(value):
             if isinstance(value, str):
@@ -44,6 +46,11 @@ def main():
             model["Name"] = "%s (RobotModel)" % robot
             model["TF Prefix"] = robot
             displays.append(model)
+        if template_scan is not None:
+            scan = dict(template_scan)
+            scan["Name"] = "%s scan" % robot
+            scan["Topic"] = "/%s/scan" % robot
+            displays.append(scan)
     with open(out, "w", encoding="utf-8") as f:
         yaml.safe_dump(config, f, default_flow_style=False, sort_keys=False)
 

@@ -5,9 +5,11 @@
 // odom→base_link (+ static map→odom, the identity: odometry is perfect and in room coordinates).
 // Named robots (`robots:` in the world file): the same per robot under its name — /<name>/cmd_vel,
 // /<name>/odom, /<name>/bumper, tf <name>/odom→<name>/base_link, static map→<name>/odom,
-// ~<name>/coverage — each with its own command timeout. Always one /clock (when /use_sim_time is
-// true), ~markers (every robot, with its name), ~coverage and ~coverage_map (the union); service
-// ~reset. Parameters: doc/nodes.md, "roomba_sim".
+// ~<name>/coverage — each with its own command timeout. Every range sensor of the world file
+// (the LDS preset when it names none): sensor_msgs/LaserScan on /[<name>/]<sensor name> at its
+// rate in simulated time, static tf [<name>/]base_link→[<name>/]<frame>. Always one /clock (when
+// /use_sim_time is true), ~markers (every robot, with its name), ~coverage and ~coverage_map (the
+// union); service ~reset. Parameters: doc/nodes.md, "roomba_sim".
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -17,6 +19,7 @@
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Float32.h>
 #include <std_srvs/Empty.h>
 #include <tf2_ros/static_transform_broadcaster.h>
@@ -40,6 +43,7 @@
 #include "../ros/reconfigure.h"
 #include "../ros/shutdown_grace.h"
 #include "../ros/sim_ros.h"
+#include "roomba_rrt/sensors/scanner.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world.h"
@@ -127,6 +131,7 @@ class RoombaSimNode {
   RoombaSimNode(const World& world, const world::SimulatorSettings& settings, bool use_sim_time)
       : pnh_("~"),
         sim_(world),
+        scanner_(world),
         use_sim_time_(use_sim_time),
         settings_(settings),
         robots_(sim_.size()) {
@@ -143,6 +148,9 @@ class RoombaSimNode {
       // that is descheduled for a moment must not lose any.
       io.odom_pub = nh_.advertise<nav_msgs::Odometry>(prefix + "odom", kStateQueue);
       io.bumper_pub = nh_.advertise<roomba_rrt::Bumper>(prefix + "bumper", kStateQueue);
+      for (const sensors::RangeSensorSpec& sensor : sim_.spec(i).sensors) {
+        io.scan_pubs.push_back(nh_.advertise<sensor_msgs::LaserScan>(prefix + sensor.name, 10));
+      }
       if (!name.empty()) {
         io.coverage_pub = pnh_.advertise<std_msgs::Float32>(prefix + "coverage", 1, true);
       }
@@ -184,6 +192,7 @@ class RoombaSimNode {
       const ros::Time now = currentTime();
       sim_.senseContact();
       publishState(now);
+      publishScans(now);
       for (std::size_t i = 0; i < robots_.size(); ++i) commands_[i] = activeCommand(i, now);
       sim_.move(commands_);
       ++steps_;
@@ -274,11 +283,16 @@ class RoombaSimNode {
         });
   }
 
-  /// map → odom (or map → <name>/odom for every named robot): the identity.
+  /// map → odom (or map → <name>/odom for every named robot): the identity; base_link → each
+  /// sensor's frame at its mounting pose.
   void publishStaticTransforms() {
     std::vector<geometry_msgs::TransformStamped> transforms;
-    for (const RobotIo& io : robots_) {
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      const RobotIo& io = robots_[i];
       transforms.push_back(sim_node::toMapTransform(io.frames, ros::Time::now()));
+      for (const sensors::RangeSensorSpec& sensor : sim_.spec(i).sensors) {
+        transforms.push_back(sim_node::toSensorTransform(sensor, io.frames, ros::Time::now()));
+      }
     }
     static_tf_.sendTransform(transforms);
   }
@@ -299,6 +313,20 @@ class RoombaSimNode {
       transforms_[i] = sim_node::toOdomTransform(pose, io.frames, stamp);
     }
     tf_.sendTransform(transforms_);
+  }
+
+  /// The scans due at this step (each sensor at its rate in simulated time), taken at the poses
+  /// just published on /odom and stamped with them.
+  void publishScans(const ros::Time& stamp) {
+    if (scanner_.empty()) return;
+    poses_.resize(robots_.size());
+    for (std::size_t i = 0; i < robots_.size(); ++i) poses_[i] = sim_.pose(i);
+    // Simulated time since start (steps_: never reset, as the scanner wants it).
+    for (const sensors::Scan& scan : scanner_.scan(steps_ * sim_.world().step, poses_)) {
+      const RobotIo& io = robots_[scan.robot];
+      io.scan_pubs[scan.sensor].publish(sim_node::toLaserScan(
+          sim_.spec(scan.robot).sensors[scan.sensor], scan, io.frames, stamp));
+    }
   }
 
   /// Markers, coverage and the coverage map, a few times per wall-clock second.
@@ -332,6 +360,8 @@ class RoombaSimNode {
   ros::NodeHandle nh_;
   ros::NodeHandle pnh_;
   sim::MultiRobotSimulator sim_;
+  sensors::Scanner scanner_;          ///< every robot's range sensors
+  std::vector<robot::Pose2D> poses_;  ///< the robots' poses for the scanner
   const bool use_sim_time_;
   world::SimulatorSettings settings_;  ///< dynamic_reconfigure may change them while running
   std::unique_ptr<nodes::Reconfigure<RoombaSimConfig>> reconfigure_;
@@ -341,6 +371,7 @@ class RoombaSimNode {
   struct RobotIo {
     sim_node::RobotFrames frames;  ///< topic prefix and tf frames, built once
     ros::Publisher odom_pub, bumper_pub, coverage_pub;
+    std::vector<ros::Publisher> scan_pubs;  ///< one per sensor, in the RobotSpec's order
     ros::Subscriber cmd_sub;
     robot::Velocity command;
     std::optional<ros::Time> command_time;

@@ -112,16 +112,47 @@ Bumper toBumper(const robot::BumperState& bumper, const RobotFrames& frames,
   return msg;
 }
 
-geometry_msgs::TransformStamped toOdomTransform(const robot::Pose2D& pose,
-                                                const RobotFrames& frames, const ros::Time& stamp) {
+namespace {
+/// parent → child at the planar `pose` of child in parent.
+geometry_msgs::TransformStamped planarTransform(const std::string& parent, const std::string& child,
+                                                const robot::Pose2D& pose, const ros::Time& stamp) {
   geometry_msgs::TransformStamped tf;
   tf.header.stamp = stamp;
-  tf.header.frame_id = frames.odom;
-  tf.child_frame_id = frames.base_link;
+  tf.header.frame_id = parent;
+  tf.child_frame_id = child;
   tf.transform.translation.x = pose.x;
   tf.transform.translation.y = pose.y;
   tf.transform.rotation = yawToQuaternion(pose.theta);
   return tf;
+}
+}  // namespace
+
+geometry_msgs::TransformStamped toOdomTransform(const robot::Pose2D& pose,
+                                                const RobotFrames& frames, const ros::Time& stamp) {
+  return planarTransform(frames.odom, frames.base_link, pose, stamp);
+}
+
+geometry_msgs::TransformStamped toSensorTransform(const sensors::RangeSensorSpec& sensor,
+                                                  const RobotFrames& frames,
+                                                  const ros::Time& stamp) {
+  return planarTransform(frames.base_link, frames.prefix + sensor.frame, sensor.mount, stamp);
+}
+
+sensor_msgs::LaserScan toLaserScan(const sensors::RangeSensorSpec& sensor,
+                                   const sensors::Scan& scan, const RobotFrames& frames,
+                                   const ros::Time& stamp) {
+  sensor_msgs::LaserScan msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frames.prefix + sensor.frame;
+  msg.angle_min = static_cast<float>(sensor.angle_min);
+  msg.angle_max = static_cast<float>(sensor.angle_max);
+  msg.angle_increment = static_cast<float>(sensor.angleIncrement());
+  msg.time_increment = 0;  // every ray at the same simulated instant
+  msg.scan_time = static_cast<float>(1 / sensor.rate);
+  msg.range_min = static_cast<float>(sensor.range_min);
+  msg.range_max = static_cast<float>(sensor.range_max);
+  msg.ranges = scan.ranges;
+  return msg;
 }
 
 geometry_msgs::TransformStamped toMapTransform(const RobotFrames& frames, const ros::Time& stamp) {

@@ -1,7 +1,8 @@
 // Conversions between the ROS interface of the roomba_sim node and the ROS-free simulator: each
-// robot's odometry, bumper and tf, the static map → odom transforms, the coverage topics and
-// map, and the rviz markers (walls, furniture, every robot with its heading, trail and name).
-// Pure functions, unit-tested without a master (test/sim/sim_ros_test).
+// robot's odometry, bumper, tf and scans, the static map → odom and base_link → sensor
+// transforms, the coverage topics and map, and the rviz markers (walls, furniture, every robot with
+// its heading, trail and name). Pure functions, unit-tested without a master
+// (test/sim/sim_ros_test).
 #pragma once
 
 #include <cstddef>
@@ -13,12 +14,14 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/time.h>
+#include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Float32.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <roomba_rrt/Bumper.h>
 
 #include "roomba_rrt/robot/robot_state.h"
+#include "roomba_rrt/sensors/scanner.h"
 #include "roomba_rrt/sim/coverage_grid.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/world/world.h"
@@ -47,6 +50,18 @@ Bumper toBumper(const robot::BumperState& bumper, const RobotFrames& frames,
 /// odom → base_link at the robot's pose.
 geometry_msgs::TransformStamped toOdomTransform(const robot::Pose2D& pose,
                                                 const RobotFrames& frames, const ros::Time& stamp);
+
+/// base_link → the sensor's frame (prefixed as the robot's frames) at its mounting pose: static.
+geometry_msgs::TransformStamped toSensorTransform(const sensors::RangeSensorSpec& sensor,
+                                                  const RobotFrames& frames,
+                                                  const ros::Time& stamp);
+
+/// A scan as sensor_msgs/LaserScan in the sensor's frame: its angles, range limits, scan_time
+/// 1 / rate, time_increment 0 (every ray at the simulated instant `stamp`), the ranges with
+/// REP 117's ±inf, no intensities.
+sensor_msgs::LaserScan toLaserScan(const sensors::RangeSensorSpec& sensor,
+                                   const sensors::Scan& scan, const RobotFrames& frames,
+                                   const ros::Time& stamp);
 
 /// map → odom, the identity (published once, latched, by the static broadcaster).
 geometry_msgs::TransformStamped toMapTransform(const RobotFrames& frames, const ros::Time& stamp);

@@ -203,9 +203,10 @@ std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n) {
         const double x = world.room.origin.x + (column + 0.5) * w;
         const double y = world.room.origin.y + (row + 0.5) * h;
         if (penetrates(world, r, x, y)) continue;
-        robots.push_back(
-            world::RobotSpec{"robot" + std::to_string(robots.size() + 1), robot::Pose2D{x, y, 0.0},
-                             r, world.robot().max_linear_speed, world.robot().max_angular_speed});
+        robots.push_back(world::RobotSpec{"robot" + std::to_string(robots.size() + 1),
+                                          robot::Pose2D{x, y, 0.0}, r,
+                                          world.robot().max_linear_speed,
+                                          world.robot().max_angular_speed, world.robot().sensors});
       }
     }
     if (static_cast<int>(robots.size()) == n) return robots;

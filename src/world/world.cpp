@@ -66,6 +66,7 @@ void validateRobots(const World& world) {
     }
     if (!names.insert(r.name).second) fail(member(prefix, "name"), "repeats '" + r.name + "'");
     requireRobotLimits(prefix, r);
+    sensors::validate(r.sensors, member(prefix, "sensors"), r.radius, world.step);
     if (r.max_linear_speed * world.step >= r.radius) {
       fail("step", "is too long: " + r.name + " would move more than its radius in one step");
     }
@@ -146,6 +147,19 @@ void requireFurniture(const Room& room) {
   }
 }
 
+/// The rays of one scan of every robot's sensors together, within SensorLimits.
+void requireSensorRays(const World& world) {
+  std::size_t rays = 0;
+  for (const RobotSpec& r : world.robots) {
+    for (const sensors::RangeSensorSpec& s : r.sensors) rays += std::max(s.samples, 0);
+  }
+  if (rays > sensors::SensorLimits::kMaxWorldSamples) {
+    fail(world.namedRobots() ? "robots" : "sensors",
+         "have " + std::to_string(rays) + " samples per scan over all robots; at most " +
+             std::to_string(sensors::SensorLimits::kMaxWorldSamples) + " are supported");
+  }
+}
+
 /// The largest robot's radius: the room must hold each of them.
 double largestRadius(const World& world) {
   double radius = 0;
@@ -179,6 +193,8 @@ void validate(const World& world, PoseSource pose) {
   requireRoomSize(world.room);
   if (!named) requireRobotLimits("robot", world.robot());
   util::requireInRange("step", world.step, L::kMinStep, L::kMaxStep);
+  if (!named) sensors::validate(world.robot().sensors, "sensors", world.robot().radius, world.step);
+  requireSensorRays(world);
   util::requireInRange("coverage_cell_size", world.coverage_cell_size, L::kMinCellSize, 1.0);
   requireRoomFits(world, largestRadius(world));
   const RobotSpec& robot = world.robot();

@@ -4,6 +4,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <utility>
@@ -118,6 +120,64 @@ void readRobotLimits(Section& section, RobotSpec& robot) {
   section.read("max_angular_speed", robot.max_angular_speed);
 }
 
+/// A whole number under `key` (read as a number, then required whole and within [lo, hi]).
+template <typename Int>
+void readWhole(Section& section, const std::string& key, Int& value, double lo, double hi) {
+  double number = static_cast<double>(value);
+  section.read(key, number);
+  if (!(number >= lo && number <= hi) || number != std::floor(number)) {
+    fail(section.name(key), "must be a whole number in [" + util::show(lo) + ", " + util::show(hi) +
+                                "], got " + util::show(number));
+  }
+  value = static_cast<Int>(number);
+}
+
+/// A string under `key`; false (and `value` kept) when it is missing.
+bool readText(Section& section, const std::string& key, std::string& value) {
+  const YAML::Node item = section.child(key);
+  if (!item || item.IsNull()) return false;
+  if (!item.IsScalar()) fail(section.name(key), "must be a string");
+  value = item.Scalar();
+  return true;
+}
+
+/// The `sensors:` list under `section` (a robot of `radius`): each entry starts from its
+/// `preset:` (lds unless it names ir_bumper), then takes the keys it sets; a `name:` without a
+/// `frame:` gets the frame base_<name>. Missing, `sensors` is kept; null or [] means none.
+void readSensors(Section& section, double radius, std::vector<sensors::RangeSensorSpec>& out) {
+  const YAML::Node list = section.child("sensors");
+  if (!list) return;
+  const std::string field = section.name("sensors");
+  out.clear();
+  if (list.IsNull()) return;
+  if (!list.IsSequence()) fail(field, "must be a list");
+  if (list.size() > sensors::SensorLimits::kMaxSensors) {
+    fail(field, "has " + std::to_string(list.size()) + " entries; at most " +
+                    std::to_string(sensors::SensorLimits::kMaxSensors) + " are supported");
+  }
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    Section s(list[k], entry(field, k));
+    std::string preset = "lds";
+    readText(s, "preset", preset);
+    sensors::RangeSensorSpec spec = sensors::preset(preset, radius, s.name("preset"));
+    if (readText(s, "name", spec.name)) spec.frame = "base_" + spec.name;
+    readText(s, "frame", spec.frame);
+    s.read("x", spec.mount.x);
+    s.read("y", spec.mount.y);
+    s.read("yaw", spec.mount.theta);
+    s.read("angle_min", spec.angle_min);
+    s.read("angle_max", spec.angle_max);
+    readWhole(s, "samples", spec.samples, 0, 1e9);
+    s.read("range_min", spec.range_min);
+    s.read("range_max", spec.range_max);
+    s.read("rate", spec.rate);
+    s.read("noise_stddev", spec.noise_stddev);
+    readWhole(s, "seed", spec.seed, 0, 4294967295.0);
+    s.finish();
+    out.push_back(spec);
+  }
+}
+
 /// An initial pose under `section` (missing keys keep `pose`'s).
 void readPose(Section& section, robot::Pose2D& pose) {
   section.read("x", pose.x);
@@ -169,6 +229,12 @@ WorldFile readWorld(const YAML::Node& root, const std::string& source) {
     readRobotLimits(robot, shared);
     robot.finish();
   }
+  // `sensors:` are the unnamed robot's, or every named robot's unless its entry has its own.
+  // None named: the LDS preset, at most as fast as the simulator steps.
+  top.read("step", world.step);  // first: a slow simulator (step > 0.2 s) slows the preset
+  shared.sensors = {sensors::ldsPreset()};
+  if (world.step > 0) shared.sensors[0].rate = std::min(shared.sensors[0].rate, 1 / world.step);
+  readSensors(top, shared.radius, shared.sensors);
   {
     Section pose(top.child("initial_pose"), "initial_pose");
     readPose(pose, shared.initial_pose);
@@ -186,6 +252,7 @@ WorldFile readWorld(const YAML::Node& root, const std::string& source) {
       readPose(pose, r.initial_pose);
       pose.finish();
       readRobotLimits(s, r);
+      readSensors(s, r.radius, r.sensors);
     });
     if (shared_pose && !named.empty()) {
       fail("initial_pose", "cannot be used with robots: give each robot its own initial_pose");

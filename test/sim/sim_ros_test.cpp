@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -90,6 +91,32 @@ TEST(SimRos, tf_is_odom_to_base_link_at_the_pose_and_map_to_odom_the_identity) {
   EXPECT_EQ(map.transform.translation.x, 0.0);
   EXPECT_EQ(map.transform.rotation.w, 1.0);
   EXPECT_EQ(map.transform.rotation.z, 0.0);
+}
+
+TEST(SimRos, a_scan_is_a_laser_scan_in_the_sensors_prefixed_frame_with_rep_117_ranges) {
+  sensors::RangeSensorSpec ir = sensors::irBumperPreset(0.17);
+  sensors::Scan scan;
+  const float inf = std::numeric_limits<float>::infinity();
+  scan.ranges = {0.1f, inf, -inf, 0.05f, inf, inf};
+  const sensor_msgs::LaserScan msg = toLaserScan(ir, scan, robotFrames("robot2"), kStamp);
+  EXPECT_EQ(msg.header.frame_id, "robot2/base_ir_bumper");
+  EXPECT_EQ(msg.header.stamp, kStamp);
+  EXPECT_FLOAT_EQ(msg.angle_min, static_cast<float>(-70 * M_PI / 180));
+  EXPECT_FLOAT_EQ(msg.angle_max, static_cast<float>(70 * M_PI / 180));
+  EXPECT_FLOAT_EQ(msg.angle_increment, static_cast<float>(28 * M_PI / 180));
+  EXPECT_FLOAT_EQ(msg.scan_time, 0.05f);
+  EXPECT_EQ(msg.time_increment, 0.0f);
+  EXPECT_FLOAT_EQ(msg.range_max, 0.15f);
+  EXPECT_EQ(msg.ranges, scan.ranges);
+  EXPECT_TRUE(msg.intensities.empty());
+
+  const geometry_msgs::TransformStamped mount =
+      toSensorTransform(ir, robotFrames("robot2"), kStamp);
+  EXPECT_EQ(mount.header.frame_id, "robot2/base_link");
+  EXPECT_EQ(mount.child_frame_id, "robot2/base_ir_bumper");
+  EXPECT_DOUBLE_EQ(mount.transform.translation.x, 0.17);
+  EXPECT_EQ(toSensorTransform(sensors::ldsPreset(), robotFrames(""), kStamp).child_frame_id,
+            "base_scan");
 }
 
 TEST(SimRos, coverage_is_the_fraction_as_a_float) {

@@ -1,6 +1,6 @@
 // rviz with config/roomba_rrt.rviz really shows the simulation: starts a virtual X server (Xvfb),
 // opens rviz on it while roomba_sim runs (sim_rviz.test), grabs the screen with ImageMagick's
-// `import` and looks for the robot's disc and the coverage map in the pixels.
+// `import` and looks for the robot's disc, the coverage map and the LDS's scan in the pixels.
 #include <gtest/gtest.h>
 #include <ros/package.h>
 #include <ros/ros.h>
@@ -18,15 +18,16 @@ using roomba_rrt::test::Rgb;
 constexpr Rgb kRobotBlue{51, 153, 230};
 constexpr Rgb kFloorNotYetCleaned{100, 120, 117};
 constexpr Rgb kWallGrey{140, 140, 140};
+constexpr Rgb kScanMagenta{255, 60, 200};  // the LaserScan display's flat colour
 constexpr int kWidth = 1000, kHeight = 640;
 
-TEST(SimRviz, rviz_config_shows_the_robot_the_walls_and_the_coverage_map) {
+TEST(SimRviz, rviz_config_shows_the_robot_the_walls_the_coverage_map_and_the_scan) {
   roomba_rrt::test::VirtualScreen screen(kWidth, kHeight);
   ASSERT_FALSE(screen.display().empty()) << "Xvfb did not start (is the xvfb package installed?)";
   const std::string config = ros::package::getPath("roomba_rrt") + "/config/roomba_rrt.rviz";
   const pid_t rviz = screen.start({"rviz", "-d", config});
 
-  long robot = 0, floor = 0, walls = 0;
+  long robot = 0, floor = 0, walls = 0, scan = 0;
   roomba_rrt::test::Screenshot shot;
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(90);
   while (ros::WallTime::now() < deadline) {
@@ -35,15 +36,17 @@ TEST(SimRviz, rviz_config_shows_the_robot_the_walls_and_the_coverage_map) {
     robot = shot.countNear(kRobotBlue);
     floor = shot.countNear(kFloorNotYetCleaned);
     walls = shot.countNear(kWallGrey, 4);
-    if (robot > 300 && floor > 50000 && walls > 1000) break;
+    scan = shot.countNear(kScanMagenta);
+    if (robot > 300 && floor > 50000 && walls > 1000 && scan > 300) break;
   }
   roomba_rrt::test::stop(rviz);
-  std::printf("on screen: robot %ld px, floor not yet cleaned %ld px, walls %ld px\n", robot, floor,
-              walls);
+  std::printf("on screen: robot %ld px, floor not yet cleaned %ld px, walls %ld px, scan %ld px\n",
+              robot, floor, walls, scan);
   EXPECT_FALSE(shot.empty()) << "screen grab failed";
   EXPECT_GT(robot, 300) << "the robot's disc (/roomba_sim/markers) is not on screen";
   EXPECT_GT(floor, 50000) << "the coverage map (/roomba_sim/coverage_map) is not on screen";
   EXPECT_GT(walls, 1000) << "the walls (/roomba_sim/markers) are not on screen";
+  EXPECT_GT(scan, 300) << "the LDS's points on the walls (/scan) are not on screen";
 }
 
 }  // namespace

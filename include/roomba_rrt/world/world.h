@@ -11,6 +11,7 @@
 #include "roomba_rrt/geometry/geometry.h"
 #include "roomba_rrt/geometry/occupancy_grid.h"
 #include "roomba_rrt/robot/robot_state.h"
+#include "roomba_rrt/sensors/range_sensor.h"
 
 namespace roomba_rrt::world {
 
@@ -51,6 +52,9 @@ struct RobotSpec {
   double radius = 0.17;            ///< m
   double max_linear_speed = 1.0;   ///< |v| is clamped to this, m/s
   double max_angular_speed = 2.0;  ///< |w| is clamped to this, rad/s
+  /// Its range sensors (`sensors:`; none here, the LDS preset for a world file that names none):
+  /// they sense, and change nothing the robot does.
+  std::vector<sensors::RangeSensorSpec> sensors{};
 };
 
 /// Everything the simulator needs to know about the room and the robots, and what the planners
