@@ -13,7 +13,7 @@ target_link_libraries(roomba_sim_core PUBLIC roomba_robot roomba_world)
 target_compile_options(roomba_sim_core PRIVATE -fno-math-errno)
 
 # The node wires parameters, topics and timers; src/ros/sim_ros.cpp builds its messages.
-add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/ros/sim_ros.cpp)
+add_executable(roomba_sim src/nodes/roomba_sim_node.cpp src/ros/roomba_sim.cpp src/ros/sim_ros.cpp)
 target_link_libraries(roomba_sim roomba_sim_core roomba_sensors roomba_node_common)
 add_dependencies(roomba_sim ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
 
