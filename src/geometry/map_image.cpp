@@ -7,7 +7,6 @@
 #include <csetjmp>
 #include <cstdio>
 #include <fstream>
-#include <iterator>
 #include <memory>
 
 #include "roomba_rrt/util/invalid_input.h"
@@ -196,9 +195,14 @@ MapImage decodeMapImage(const std::string& path) {
     if (!file) throw InvalidInput("image", "cannot open '" + path + "'");
     return decodePng(path, file.get());
   }
+  // The whole file in one read (an istreambuf_iterator, byte by byte, cost 2 ns per pixel).
   in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InvalidInput("image", "cannot read '" + path + "'");
+  std::vector<char> bytes(static_cast<std::size_t>(size));
   in.seekg(0);
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.read(bytes.data(), size)) throw InvalidInput("image", "cannot read '" + path + "'");
   return PnmReader(path, std::move(bytes)).read();
 }
 
