@@ -182,9 +182,8 @@ void TreeWatch::publishMarkers(double x, double y, const std::string& frame) {
     label.scale.z = std::min(0.14, width / 4);
     // A name wider than its box is cut short, so that neighbours do not overlap.
     const auto fits = static_cast<std::size_t>(width * 0.92 / (kCharWidth * label.scale.z));
-    label.text = nodes[i].name.size() <= fits || fits < 2
-                     ? nodes[i].name
-                     : nodes[i].name.substr(0, fits - 1) + ".";
+    label.text = nodes[i].name.size() <= fits || fits < 2 ? nodes[i].name
+                                                          : nodes[i].name.substr(0, fits - 1) + ".";
     array.markers.push_back(label);
   }
   array.markers.push_back(edges);

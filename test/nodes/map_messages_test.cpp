@@ -90,8 +90,9 @@ TEST(MapMessages, a_map_that_cannot_be_one_is_refused_naming_the_field) {
               0u)
         << resolution;
   }
-  EXPECT_EQ(refusal([](auto& m) { m.info.resolution = 1e-30f; }),
-            "info.resolution: must be in [0.0001, 100] m, got 1.0000000031710769e-30");  // the float
+  EXPECT_EQ(
+      refusal([](auto& m) { m.info.resolution = 1e-30f; }),
+      "info.resolution: must be in [0.0001, 100] m, got 1.0000000031710769e-30");  // the float
   EXPECT_EQ(refusal([](auto& m) { m.info.origin.position.y = -2e6; }),
             "info.origin.position.y: must be in [-1e+06, 1e+06] m, got -2e+06");
   // Roll or pitch is a rotation too: such a map is refused, not read as an unrotated one.

@@ -5,8 +5,8 @@
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/geometry.h"
 #include "roomba_rrt/planning/lab/matlab_random.h"
-#include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
+#include "roomba_rrt/planning/planner_options.h"
 
 namespace roomba_rrt::planning {
 namespace {

@@ -16,8 +16,8 @@
 
 #include "../common/shared_maps.h"
 #include "roomba_rrt/geometry/map_file.h"
-#include "roomba_rrt/planning/planner.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
+#include "roomba_rrt/planning/planner.h"
 
 namespace roomba_rrt::planning {
 namespace {

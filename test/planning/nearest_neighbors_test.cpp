@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "roomba_rrt/planning/lab/matlab_random.h"
 #include "roomba_rrt/planning/nearest_neighbors/brute_force_nearest_neighbors.h"
 #include "roomba_rrt/planning/nearest_neighbors/grid_nearest_neighbors.h"
-#include "roomba_rrt/planning/lab/matlab_random.h"
 
 namespace roomba_rrt::planning {
 namespace {

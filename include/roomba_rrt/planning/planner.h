@@ -4,12 +4,12 @@
 #include <functional>
 
 #include "roomba_rrt/planning/geometry.h"
-#include "roomba_rrt/planning/limits.h"
 #include "roomba_rrt/planning/lab/matlab_random.h"
+#include "roomba_rrt/planning/lab/scenarios.h"
+#include "roomba_rrt/planning/limits.h"
 #include "roomba_rrt/planning/plan_result.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
-#include "roomba_rrt/planning/lab/scenarios.h"
 #include "roomba_rrt/planning/stop_condition.h"
 #include "roomba_rrt/planning/tree.h"
 #include "roomba_rrt/planning/validate.h"

@@ -93,10 +93,10 @@ class MultiRobotSimulator {
 };
 
 /// n robots named robot1 … robotn spread evenly over the room, facing +x, with the world's shared
-/// radius, limits and sensors: the room is cut into rows × columns equal cells (about square) and the robots
-/// stand at the centres of the free ones, row by row from the bottom; cells whose centre puts the
-/// disc into furniture are skipped, taking more and smaller cells. One robot stands at the room's
-/// centre, as in the lab. std::invalid_argument when n robots do not fit.
+/// radius, limits and sensors: the room is cut into rows × columns equal cells (about square) and
+/// the robots stand at the centres of the free ones, row by row from the bottom; cells whose centre
+/// puts the disc into furniture are skipped, taking more and smaller cells. One robot stands at the
+/// room's centre, as in the lab. std::invalid_argument when n robots do not fit.
 std::vector<world::RobotSpec> spreadRobots(const world::World& world, int n);
 
 }  // namespace roomba_rrt::sim
