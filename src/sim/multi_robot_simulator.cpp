@@ -23,24 +23,18 @@ const world::World& validated(const world::World& world) {
   return world;
 }
 
-double largestRadius(const std::vector<world::RobotSpec>& specs) {
-  double radius = 0;
-  for (const world::RobotSpec& s : specs) radius = std::max(radius, s.radius);
-  return radius;
-}
-
 }  // namespace
 
 MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
     : world_(validated(world)),
-      specs_(world_.robots),
-      robots_(specs_.size()),
-      coverage_(specs_.size(), CoverageGrid(world_)),
+      robots_(world_.robots.size()),
+      coverage_(world_.robots.size(), CoverageGrid(world_)),
       grid_(world_.room.width, world_.room.height,
-            2 * largestRadius(specs_) + 2 * kContactTolerance, static_cast<int>(specs_.size())),
-      max_radius_(largestRadius(specs_)) {
-  for (std::size_t i = 0; i < specs_.size(); ++i) {
-    const robot::Pose2D& p = specs_[i].initial_pose;
+            2 * world::largestRadius(world_) + 2 * kContactTolerance,
+            static_cast<int>(world_.robots.size())),
+      max_radius_(world::largestRadius(world_)) {
+  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+    const robot::Pose2D& p = world_.robots[i].initial_pose;
     robots_[i].pose = p;
     grid_.insert(static_cast<int>(i), p.x - world_.room.origin.x, p.y - world_.room.origin.y);
   }
@@ -48,12 +42,12 @@ MultiRobotSimulator::MultiRobotSimulator(const world::World& world)
 }
 
 bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& y) const {
-  const double r = specs_[robot].radius;
+  const double r = world_.robots[robot].radius;
   bool pushed = false;
   grid_.forEachNear(x - world_.room.origin.x, y - world_.room.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
     const robot::Pose2D& q = robots_[j].pose;
-    const double reach = r + specs_[j].radius;
+    const double reach = r + world_.robots[j].radius;
     const double dx = x - q.x, dy = y - q.y;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= (reach - kPenetrationTolerance) * (reach - kPenetrationTolerance)) return;
@@ -70,11 +64,11 @@ bool MultiRobotSimulator::pushOutOfRobots(std::size_t robot, double& x, double& 
 }
 
 bool MultiRobotSimulator::overlapsRobot(std::size_t robot, double x, double y) const {
-  const double r = specs_[robot].radius - kPenetrationTolerance;
+  const double r = world_.robots[robot].radius - kPenetrationTolerance;
   bool overlaps = false;
   grid_.forEachNear(x - world_.room.origin.x, y - world_.room.origin.y, [&](int j) {
     if (static_cast<std::size_t>(j) == robot) return;
-    const double reach = r + specs_[j].radius;
+    const double reach = r + world_.robots[j].radius;
     const double dx = x - robots_[j].pose.x, dy = y - robots_[j].pose.y;
     overlaps = overlaps || dx * dx + dy * dy < reach * reach;
   });
@@ -82,7 +76,7 @@ bool MultiRobotSimulator::overlapsRobot(std::size_t robot, double x, double y) c
 }
 
 bool MultiRobotSimulator::place(std::size_t robot, double& x, double& y) const {
-  const double r = specs_[robot].radius;
+  const double r = world_.robots[robot].radius;
   if (robots_.size() == 1) return resolvePenetration(world_, r, x, y);  // Simulator, exactly
   for (int pass = 0; pass < kMaxPlacePasses; ++pass) {
     const bool clear_of_walls = resolvePenetration(world_, r, x, y);
@@ -95,7 +89,7 @@ void MultiRobotSimulator::senseContact() {
   const bool others = robots_.size() > 1;
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     Robot& robot = robots_[i];
-    const double r = specs_[i].radius;
+    const double r = world_.robots[i].radius;
     resolvePenetration(world_, r, robot.pose.x, robot.pose.y);
     robot.bumper = senseBumper(world_, r, robot.pose);
     if (!others) continue;
@@ -103,7 +97,7 @@ void MultiRobotSimulator::senseContact() {
                       [&](int j) {
                         if (static_cast<std::size_t>(j) == i) return;
                         const robot::Pose2D& q = robots_[j].pose;
-                        const double reach = r + specs_[j].radius + kContactTolerance;
+                        const double reach = r + world_.robots[j].radius + kContactTolerance;
                         const double dx = q.x - robot.pose.x, dy = q.y - robot.pose.y;
                         if (dx * dx + dy * dy <= reach * reach)
                           pressBumper(robot.bumper, robot.pose, dx, dy);
@@ -118,7 +112,7 @@ void MultiRobotSimulator::move(const std::vector<robot::Velocity>& commands) {
   }
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     Robot& robot = robots_[i];
-    const world::RobotSpec& spec = specs_[i];
+    const world::RobotSpec& spec = world_.robots[i];
     robot.last_command =
         robot::clampCommand(commands[i], spec.max_linear_speed, spec.max_angular_speed);
     const robot::Pose2D previous = robot.pose;
@@ -165,8 +159,8 @@ void MultiRobotSimulator::setPose(std::size_t robot, const robot::Pose2D& pose) 
   r.pose = placed;
   grid_.move(static_cast<int>(robot), placed.x - world_.room.origin.x,
              placed.y - world_.room.origin.y);
-  r.bumper = senseBumper(world_, specs_[robot].radius, r.pose);
-  coverage_[robot].markDisc(r.pose.x, r.pose.y, specs_[robot].radius);
+  r.bumper = senseBumper(world_, world_.robots[robot].radius, r.pose);
+  coverage_[robot].markDisc(r.pose.x, r.pose.y, world_.robots[robot].radius);
 }
 
 void MultiRobotSimulator::reset() {
@@ -174,14 +168,14 @@ void MultiRobotSimulator::reset() {
   // Everyone off the floor first, so that a robot's initial pose never collides with another's
   // current one; the initial poses are clear of each other (validate()).
   for (std::size_t i = 0; i < robots_.size(); ++i) {
-    const robot::Pose2D& p = specs_[i].initial_pose;
+    const robot::Pose2D& p = world_.robots[i].initial_pose;
     robots_[i].pose = p;
     grid_.move(static_cast<int>(i), p.x - world_.room.origin.x, p.y - world_.room.origin.y);
   }
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     coverage_[i].clear();
     robots_[i].last_command = {};
-    setPose(i, specs_[i].initial_pose);
+    setPose(i, world_.robots[i].initial_pose);
   }
 }
 
@@ -222,7 +216,7 @@ void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_ang
     robot.max_angular_speed = max_angular_speed;
   }
   // The world's rule of v·step below every robot's radius, worded for the value that changed.
-  for (const world::RobotSpec& spec : specs_) {
+  for (const world::RobotSpec& spec : world_.robots) {
     const double fastest = spec.radius / world_.step;
     util::require(
         max_linear_speed < fastest, "max_linear_speed",
@@ -232,10 +226,6 @@ void MultiRobotSimulator::setSpeedLimits(double max_linear_speed, double max_ang
   }
   validate(next);  // the world's rules: ranges, and v·step below every robot's radius
   world_ = next;
-  for (world::RobotSpec& spec : specs_) {
-    spec.max_linear_speed = max_linear_speed;
-    spec.max_angular_speed = max_angular_speed;
-  }
 }
 
 }  // namespace roomba_rrt::sim

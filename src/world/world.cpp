@@ -160,14 +160,13 @@ void requireSensorRays(const World& world) {
   }
 }
 
-/// The largest robot's radius: the room must hold each of them.
+}  // namespace
+
 double largestRadius(const World& world) {
   double radius = 0;
   for (const RobotSpec& r : world.robots) radius = std::max(radius, r.radius);
   return radius;
 }
-
-}  // namespace
 
 bool coverageGridFits(const World& world, double cell_size) {
   // The coverage grid holds two bits per cell and tests every cell against every piece of

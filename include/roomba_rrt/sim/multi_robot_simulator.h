@@ -12,7 +12,7 @@
 
 namespace roomba_rrt::sim {
 
-/// The robots of robotsOf(world), stepped together. One step is the lab's, for all of them:
+/// The robots of world.robots, stepped together. One step is the lab's, for all of them:
 ///
 ///     sim.senseContact();                       // 1–2. every robot's bumper
 ///     commands[i] = behaviour[i].tick(sim.bumper(i));   // 3. each behaviour decides
@@ -33,8 +33,8 @@ class MultiRobotSimulator {
   /// at its initial pose, with its disc already counted as swept.
   explicit MultiRobotSimulator(const world::World& world);
 
-  std::size_t size() const { return specs_.size(); }
-  const world::RobotSpec& spec(std::size_t robot) const { return specs_[robot]; }
+  std::size_t size() const { return world_.robots.size(); }
+  const world::RobotSpec& spec(std::size_t robot) const { return world_.robots[robot]; }
 
   /// Steps 1–2 for every robot: pushes its disc out of the walls and furniture it penetrates
   /// (nothing to do after move()) and recomputes its bumper from walls, furniture and robots.
@@ -84,7 +84,6 @@ class MultiRobotSimulator {
   bool overlapsRobot(std::size_t robot, double x, double y) const;
 
   world::World world_;
-  std::vector<world::RobotSpec> specs_;
   std::vector<Robot> robots_;
   std::vector<CoverageGrid> coverage_;
   RobotGrid grid_;

@@ -131,6 +131,10 @@ inline bool penetrates(const World& world, double x, double y) {
   return penetrates(world, world.robot().radius, x, y);
 }
 
+/// The largest radius of the world's robots: the room must hold each of them, and the simulator's
+/// robot–robot contact looks that far.
+double largestRadius(const World& world);
+
 /// Where a node takes the robot's pose from: the world file (roomba_sim, the tools), or elsewhere
 /// (tf and requests: roomba_bt and rrt_planner, which must not refuse a map whose (0, 0) is a wall
 /// when the simulator was given another pose).
