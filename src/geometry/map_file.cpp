@@ -2,10 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -33,52 +31,6 @@ double number(const YAML::Node& root, const char* key) {
   } catch (const YAML::Exception&) {
     throw InvalidInput(key, "must be a number, got '" + node.Scalar() + "'");
   }
-}
-
-/// Width and height from the image's header, before the decoder allocates anything: a PNG's
-/// IHDR chunk, or a PNM's first three tokens (magic, width, height; comments skipped).
-/// Throws InvalidInput (field "image") for anything else.
-void imageSize(const std::string& path, long long& width, long long& height) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("image", "cannot open '" + path + "'");
-  unsigned char head[24] = {};
-  in.read(reinterpret_cast<char*>(head), sizeof head);
-  const std::streamsize got = in.gcount();
-  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (got >= 24 && std::equal(kPng, kPng + 8, head)) {
-    const auto be32 = [&](int at) {
-      return (static_cast<long long>(head[at]) << 24) | (head[at + 1] << 16) | (head[at + 2] << 8) |
-             head[at + 3];
-    };
-    width = be32(16);
-    height = be32(20);
-    return;
-  }
-  if (got >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') {
-    in.clear();
-    in.seekg(2);
-    long long values[2] = {-1, -1};
-    for (long long& value : values) {
-      int c = in.get();
-      while (c != EOF && (std::isspace(c) || c == '#')) {
-        if (c == '#') {
-          while (c != EOF && c != '\n') c = in.get();
-        }
-        c = in.get();
-      }
-      if (c == EOF || !std::isdigit(c)) break;
-      value = 0;
-      while (c != EOF && std::isdigit(c) && value < (1LL << 40)) {
-        value = value * 10 + (c - '0');
-        c = in.get();
-      }
-    }
-    width = values[0];
-    height = values[1];
-    if (width >= 0 && height >= 0) return;
-    throw InvalidInput("image", "'" + path + "': a PNM header without its width and height");
-  }
-  throw InvalidInput("image", "'" + path + "' is not a PGM or PNG image");
 }
 
 /// The grid of the decoded image, map_server's way.
@@ -116,24 +68,7 @@ void readImage(MapFile& map, long long max_cells) {
     throw InvalidInput("image", "'" + map.image + "' has more than " +
                                     std::to_string(MapLimits::kMaxImageBytes) + " bytes");
   }
-  long long width = 0, height = 0;
-  imageSize(map.image, width, height);
-  if (width < 1 || height < 1) {
-    throw InvalidInput("image", "'" + map.image + "' has no pixels (" + std::to_string(width) +
-                                    " x " + std::to_string(height) + ")");
-  }
-  if (width > max_cells || height > max_cells || width * height > max_cells) {
-    throw InvalidInput("image", "'" + map.image + "' has " + std::to_string(width) + " x " +
-                                    std::to_string(height) + " pixels; at most " +
-                                    std::to_string(max_cells) + " cells are supported");
-  }
-  const MapImage image = decodeMapImage(map.image);
-  if (image.width != width || image.height != height) {
-    throw InvalidInput("image", "'" + map.image + "': its header says " + std::to_string(width) +
-                                    " x " + std::to_string(height) + ", its pixels are " +
-                                    std::to_string(image.width) + " x " +
-                                    std::to_string(image.height));
-  }
+  const MapImage image = decodeMapImage(map.image, max_cells);  // size checked first
   readPixels(image, map, map.grid);
 }
 

@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -20,27 +23,47 @@ using util::InvalidInput;
   throw InvalidInput("image", "cannot decode '" + path + "': " + why);
 }
 
-/// A netpbm file: the header's numbers (whitespace and '#' comments skipped), then its pixels.
+/// Refuses an image of `width` × `height` pixels without pixels or with more than `max_pixels`,
+/// from its header, before any pixel is allocated.
+void checkSize(const std::string& path, long long width, long long height, long long max_pixels) {
+  if (width < 1 || height < 1) {
+    throw InvalidInput("image", "'" + path + "' has no pixels (" + std::to_string(width) + " x " +
+                                    std::to_string(height) + ")");
+  }
+  if (width > max_pixels || height > max_pixels || width * height > max_pixels) {
+    throw InvalidInput("image", "'" + path + "' has " + std::to_string(width) + " x " +
+                                    std::to_string(height) + " pixels; at most " +
+                                    std::to_string(max_pixels) + " cells are supported");
+  }
+}
+
+/// A netpbm file: the header's numbers (whitespace and '#' comments skipped) read from the file,
+/// then, once its size is known to be supported, the rest of it in one read and its pixels.
 class PnmReader {
  public:
-  PnmReader(const std::string& path, std::vector<char> bytes)
-      : path_(path), bytes_(std::move(bytes)) {}
+  PnmReader(const std::string& path, std::ifstream& in) : path_(path), in_(in) {}
 
-  MapImage read() {
-    if (bytes_.size() < 2 || bytes_[0] != 'P' || bytes_[1] < '1' || bytes_[1] > '6') {
-      refuse(path_, "not a netpbm image");
+  MapImage read(long long max_pixels) {
+    const int p = get(), digit = get() - '0';
+    if (p != 'P' || digit < 1 || digit > 6) {
+      throw InvalidInput("image", "'" + path_ + "' is not a PGM or PNG image");
     }
-    at_ = 2;
-    const int digit = bytes_[1] - '0';
     const bool ascii = digit <= 3;
     const int kind = (digit - 1) % 3;  // 0 PBM, 1 PGM, 2 PPM
+    const std::optional<long long> width = number(), height = number();
+    if (!width || !height) {
+      throw InvalidInput("image", "'" + path_ + "': a PNM header without its width and height");
+    }
+    checkSize(path_, *width, *height, max_pixels);
+    const std::optional<long long> maxval = kind == 0 ? 1 : number();
+    if (!maxval) refuse(path_, "a header without its maxval");
+    if (*maxval <= 0 || *maxval > 255) refuse(path_, "only 8-bit netpbm images are read");
+    readRest();
     MapImage image;
-    image.width = number();
-    image.height = number();
-    if (image.width <= 0 || image.height <= 0) refuse(path_, "no width and height");
-    const int maxval = kind == 0 ? 1 : number();
-    if (maxval <= 0 || maxval > 255) refuse(path_, "only 8-bit netpbm images are read");
+    image.width = static_cast<int>(*width);
+    image.height = static_cast<int>(*height);
     image.channels = kind == 2 ? 3 : 1;
+    const int scale = static_cast<int>(*maxval);
     const std::size_t row_bytes = static_cast<std::size_t>(image.width) * image.channels;
     image.pixels.resize(row_bytes * image.height);
     for (int y = 0; y < image.height; ++y) {
@@ -49,28 +72,46 @@ class PnmReader {
         for (std::size_t i = 0; i < row_bytes; ++i) row[i] = kind == 0 ? bit() : value();
       } else if (kind == 0) {  // raw PBM: 8 pixels a byte, the first in the high bit
         const std::size_t packed = (static_cast<std::size_t>(image.width) + 7) / 8;
-        if (at_ + packed > bytes_.size()) refuse(path_, "truncated");
+        if (at_ + packed > rest_.size()) refuse(path_, "truncated");
         for (int i = 0; i < image.width; ++i) {
-          row[i] = (static_cast<unsigned char>(bytes_[at_ + i / 8]) >> (7 - i % 8)) & 1;
+          row[i] = (static_cast<unsigned char>(rest_[at_ + i / 8]) >> (7 - i % 8)) & 1;
         }
         at_ += packed;
       } else {
-        if (at_ + row_bytes > bytes_.size()) refuse(path_, "truncated");
-        std::copy_n(bytes_.begin() + static_cast<std::ptrdiff_t>(at_), row_bytes, row);
+        if (at_ + row_bytes > rest_.size()) refuse(path_, "truncated");
+        std::copy_n(rest_.begin() + static_cast<std::ptrdiff_t>(at_), row_bytes, row);
         at_ += row_bytes;
       }
-      if (kind != 0 && maxval < 255) {  // to the full range, as SDL2_image does
-        for (std::size_t i = 0; i < row_bytes; ++i) row[i] = row[i] * 255 / maxval;
+      if (kind != 0 && scale < 255) {  // to the full range, as SDL2_image does
+        for (std::size_t i = 0; i < row_bytes; ++i) row[i] = row[i] * 255 / scale;
       }
     }
     return image;
   }
 
  private:
-  int get() { return at_ < bytes_.size() ? static_cast<unsigned char>(bytes_[at_++]) : EOF; }
+  /// The next byte: from the file while the header is read, then from the rest read at once.
+  int get() {
+    if (!loaded_) return in_.get();
+    return at_ < rest_.size() ? static_cast<unsigned char>(rest_[at_++]) : EOF;
+  }
+  /// What follows the header, in one read (byte by byte cost 2 ns per pixel).
+  void readRest() {
+    const std::streamoff from = in_.tellg();
+    in_.seekg(0, std::ios::end);
+    const std::streamoff end = in_.tellg();
+    if (from < 0 || end < from) throw InvalidInput("image", "cannot read '" + path_ + "'");
+    rest_.resize(static_cast<std::size_t>(end - from));
+    in_.seekg(from);
+    if (!in_.read(rest_.data(), end - from)) {
+      throw InvalidInput("image", "cannot read '" + path_ + "'");
+    }
+    loaded_ = true;
+  }
 
-  /// A header number: whitespace and comments before it, one character after it.
-  int number() {
+  /// A header number: whitespace and comments before it, one character after it; none when the
+  /// next thing is not a number.
+  std::optional<long long> number() {
     int c = get();
     while (c != EOF && (std::isspace(c) || c == '#')) {
       if (c == '#') {
@@ -78,19 +119,19 @@ class PnmReader {
       }
       c = get();
     }
-    if (c == EOF || !std::isdigit(c)) refuse(path_, "a header without its numbers");
+    if (c == EOF || !std::isdigit(c)) return std::nullopt;
     long long value = 0;
-    while (c != EOF && std::isdigit(c)) {
+    while (c != EOF && std::isdigit(c) && value < (1LL << 40)) {
       value = value * 10 + (c - '0');
-      if (value > (1LL << 31)) refuse(path_, "a header number out of range");
       c = get();
     }
-    return static_cast<int>(value);
+    return value;
   }
   /// An ASCII pixel value.
   std::uint8_t value() {
-    const int v = number();
-    return static_cast<std::uint8_t>(v);
+    const std::optional<long long> v = number();
+    if (!v) refuse(path_, "truncated");
+    return static_cast<std::uint8_t>(*v);
   }
   /// An ASCII PBM pixel: the next '0' or '1', anything else skipped.
   std::uint8_t bit() {
@@ -101,7 +142,9 @@ class PnmReader {
   }
 
   std::string path_;
-  std::vector<char> bytes_;
+  std::ifstream& in_;
+  bool loaded_ = false;
+  std::vector<char> rest_;
   std::size_t at_ = 0;
 };
 
@@ -129,7 +172,7 @@ struct PngRead {
   ~PngRead() { png_destroy_read_struct(&png, &info, nullptr); }
 };
 
-MapImage decodePng(const std::string& path, std::FILE* file) {
+MapImage decodePng(const std::string& path, std::FILE* file, long long max_pixels) {
   const auto read = std::make_unique<PngRead>();
   read->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &read->error, onPngError, onPngWarning);
   if (read->png) read->info = png_create_info_struct(read->png);
@@ -138,7 +181,9 @@ MapImage decodePng(const std::string& path, std::FILE* file) {
   png_structp png = read->png;
   png_infop info = read->info;
   png_init_io(png, file);
+  png_set_user_limits(png, 0x7fffffff, 0x7fffffff);  // our limit, checkSize(), says what is wrong
   png_read_info(png, info);
+  checkSize(path, png_get_image_width(png, info), png_get_image_height(png, info), max_pixels);
   // The transformations SDL2_image asks of libpng, so that the bytes are its surface's.
   const int color_type = png_get_color_type(png, info);
   png_set_strip_16(png);
@@ -182,7 +227,7 @@ MapImage decodePng(const std::string& path, std::FILE* file) {
 
 }  // namespace
 
-MapImage decodeMapImage(const std::string& path) {
+MapImage decodeMapImage(const std::string& path, long long max_pixels) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidInput("image", "cannot open '" + path + "'");
   char magic[8] = {};
@@ -193,17 +238,11 @@ MapImage decodeMapImage(const std::string& path) {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                                std::fclose);
     if (!file) throw InvalidInput("image", "cannot open '" + path + "'");
-    return decodePng(path, file.get());
+    return decodePng(path, file.get(), max_pixels);
   }
-  // The whole file in one read (an istreambuf_iterator, byte by byte, cost 2 ns per pixel).
   in.clear();
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InvalidInput("image", "cannot read '" + path + "'");
-  std::vector<char> bytes(static_cast<std::size_t>(size));
   in.seekg(0);
-  if (!in.read(bytes.data(), size)) throw InvalidInput("image", "cannot read '" + path + "'");
-  return PnmReader(path, std::move(bytes)).read();
+  return PnmReader(path, in).read(max_pixels);
 }
 
 }  // namespace roomba_rrt::geometry

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,10 @@ struct MapImage {
 };
 
 /// Decodes the PNM or PNG image at `path`. Throws util::InvalidInput (field "image") naming the
-/// file for anything it cannot decode: another format, a truncated file, a PNM whose maxval is
-/// above 255 (SDL2_image reads 8-bit PNMs only).
-MapImage decodeMapImage(const std::string& path);
+/// file for anything it cannot decode: another format, a header without a width and height, no
+/// pixels or more than `max_pixels` (from the header, before any pixel is allocated), a
+/// truncated file, a PNM whose maxval is above 255 (SDL2_image reads 8-bit PNMs only).
+MapImage decodeMapImage(const std::string& path,
+                        long long max_pixels = std::numeric_limits<long long>::max());
 
 }  // namespace roomba_rrt::geometry
