@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -158,12 +157,9 @@ Checked planAndReport(const char* name, const World& world, const Point2& start)
   return out;
 }
 
-/// A map of ../shared/maps as a world (ROOMBA_RRT_REQUIRE_SHARED_MAP first), or nullopt when it
-/// is not there.
-std::optional<World> sharedMap(const std::string& name) {
-  const std::string path = ::roomba_rrt::test::sharedMapPath(name);
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  return roomba_rrt::world::readWorldFile(path).world;
+/// A map of ../shared/maps as a world (ROOMBA_RRT_REQUIRE_SHARED_MAP first: it must be there).
+World sharedMap(const std::string& name) {
+  return roomba_rrt::world::readWorldFile(::roomba_rrt::test::sharedMapPath(name)).world;
 }
 
 /// The furnished room's plan from its initial pose, for the resume tests.
@@ -533,15 +529,14 @@ TEST(CoveragePlanner, apartment_map_is_covered_safely) {
 
 TEST(CoveragePlanner, shared_turtlebot3_map_is_covered_safely) {
   ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
-  const std::optional<World> world = sharedMap("turtlebot3_world");
-  ASSERT_TRUE(world);
+  const World world = sharedMap("turtlebot3_world");
   const Point2 start{-2.0, -0.5};  // where TurtleBot3's simulation puts the robot
-  ASSERT_FALSE(roomba_rrt::world::penetrates(*world, start.x, start.y));
-  const Checked checked = planAndReport("turtlebot3_world", *world, start);
+  ASSERT_FALSE(roomba_rrt::world::penetrates(world, start.x, start.y));
+  const Checked checked = planAndReport("turtlebot3_world", world, start);
   EXPECT_GE(checked.coverage, 0.85);
   // The ways round its nine pillars (transits between the pieces of a row) sweep most of the
   // rest; what is left lies in the notches of its jagged walls.
-  EXPECT_GE(sweptByRows(*world, checked.plan, true) / checked.plan.reachable_area, 0.93);
+  EXPECT_GE(sweptByRows(world, checked.plan, true) / checked.plan.reachable_area, 0.93);
 }
 
 /// The rows at the end of `plan` that each start where the one before ended and that end where
@@ -565,15 +560,14 @@ std::vector<Leg> loopAtTheEnd(const CoveragePlan& plan) {
 
 TEST(CoveragePlanner, walls_at_a_slant_to_the_rows_are_followed_once_round_after_the_rows) {
   ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
-  const std::optional<World> world = sharedMap("turtlebot3_world");
-  ASSERT_TRUE(world);
-  const CoveragePlan plan = planChecked(*world, {0.5, 0.0});
+  const World world = sharedMap("turtlebot3_world");
+  const CoveragePlan plan = planChecked(world, {0.5, 0.0});
   const std::vector<Leg> loop = loopAtTheEnd(plan);
   ASSERT_GE(loop.size(), 20u);  // round the hexagon's walls and their steps
   // The wedges the rows leave against the slanted walls: more than half a square metre.
   CoveragePlan rows = plan;
   rows.legs.resize(plan.legs.size() - loop.size());
-  EXPECT_GT(sweptByRows(*world, plan) - sweptByRows(*world, rows), 0.5);
+  EXPECT_GT(sweptByRows(world, plan) - sweptByRows(world, rows), 0.5);
 }
 
 TEST(CoveragePlanner, walls_square_to_the_rows_are_not_followed_round) {
@@ -584,11 +578,10 @@ TEST(CoveragePlanner, walls_square_to_the_rows_are_not_followed_round) {
 
 TEST(CoveragePlanner, shared_depot_map_is_covered_safely) {
   ROOMBA_RRT_REQUIRE_SHARED_MAP("depot");
-  const std::optional<World> world = sharedMap("depot");
-  ASSERT_TRUE(world);
+  const World world = sharedMap("depot");
   const Point2 start{15.1, 7.7};  // the middle of the hall
-  ASSERT_FALSE(roomba_rrt::world::penetrates(*world, start.x, start.y));
-  EXPECT_GE(planAndReport("depot", *world, start).coverage, 0.90);
+  ASSERT_FALSE(roomba_rrt::world::penetrates(world, start.x, start.y));
+  EXPECT_GE(planAndReport("depot", world, start).coverage, 0.90);
 }
 
 /// How far (m) the rows of `plan` run side by side closer than `gap`: the length along which each
@@ -617,9 +610,8 @@ TEST(CoveragePlanner, rows_of_cells_that_meet_in_a_cluttered_office_do_not_run_s
   // own (beyond the other's ends) and is shortened to the bunches of floor worth a row, or
   // dropped. Kept whole, 7.3 m of rows ran within 5 cm of another here.
   ROOMBA_RRT_REQUIRE_SHARED_MAP("willow_full");
-  const std::optional<World> map = sharedMap("willow_full");
-  ASSERT_TRUE(map);
-  const World office = roomba_rrt::world::cropped(*map, {-4.41, -11.77, 4.35, -5.01}, "crop");
+  const World map = sharedMap("willow_full");
+  const World office = roomba_rrt::world::cropped(map, {-4.41, -11.77, 4.35, -5.01}, "crop");
   const CoveragePlan plan = planChecked(office, {-3.38, -9.79}, cleaningOptions(office));
   EXPECT_GT(plan.cells, 40);
   EXPECT_LT(rowsSideBySide(plan, 0.05), 1.0);
