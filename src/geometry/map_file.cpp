@@ -3,10 +3,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "roomba_rrt/geometry/map_image.h"
 #include "roomba_rrt/util/invalid_input.h"
@@ -33,23 +35,33 @@ double number(const YAML::Node& root, const char* key) {
   }
 }
 
-/// The grid of the decoded image, map_server's way.
+/// The grid of the decoded image, map_server's way. A pixel's cell depends only on the sum of its
+/// channels, so each possible sum is read once (trinaryValue) and the pixels look theirs up.
 void readPixels(const MapImage& image, const MapFile& map, OccupancyGrid& grid) {
   const int channels = image.channels;
+  std::vector<std::int8_t> cell_of_sum(static_cast<std::size_t>(255 * channels + 1));
+  for (std::size_t sum = 0; sum < cell_of_sum.size(); ++sum) {
+    cell_of_sum[sum] = trinaryValue(static_cast<double>(sum) / channels, map.negate,
+                                    map.occupied_thresh, map.free_thresh);
+  }
   grid.width = image.width;
   grid.height = image.height;
-  grid.cells.assign(static_cast<std::size_t>(image.width) * image.height, OccupancyGrid::kUnknown);
+  grid.cells.resize(static_cast<std::size_t>(image.width) * image.height);
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * channels;
   for (int j = 0; j < image.height; ++j) {
     const unsigned char* row = image.pixels.data() + static_cast<std::size_t>(j) * row_bytes;
+    // Image row 0 is the top: the grid's last row.
+    std::int8_t* out =
+        grid.cells.data() + static_cast<std::size_t>(image.height - 1 - j) * image.width;
+    if (channels == 1) {
+      for (int i = 0; i < image.width; ++i) out[i] = cell_of_sum[row[i]];
+      continue;
+    }
     for (int i = 0; i < image.width; ++i) {
       const unsigned char* p = row + static_cast<std::size_t>(i) * channels;
       int sum = 0;
       for (int k = 0; k < channels; ++k) sum += p[k];
-      const double average = static_cast<double>(sum) / channels;
-      // Image row 0 is the top: the grid's last row.
-      grid.cells[static_cast<std::size_t>(image.height - 1 - j) * image.width + i] =
-          trinaryValue(average, map.negate, map.occupied_thresh, map.free_thresh);
+      out[i] = cell_of_sum[static_cast<std::size_t>(sum)];
     }
   }
 }
