@@ -1,5 +1,7 @@
-// Loading and inflating a large map (issue 17, item 6): a shared map upsampled k× (each cell
-// becomes k × k cells, resolution / k), written as PGM + YAML to a temporary folder, then
+// Loading, inflating and planning across a large map (issues 17 and 47): a shared map upsampled
+// k× (`--factor`: each cell becomes k × k cells, resolution / k) or tiled t × t (`--tile`: t
+// copies side by side and t rows of them, resolution kept), written as PGM + YAML to a
+// temporary folder, then
 //   load     geometry::loadMap(): the YAML, the PGM decoded by SDL2_image, map_server's trinary
 //            reading of every pixel into the grid;
 //   inflate  geometry::ClearanceMap's constructor: the exact distance transform of the blocked
@@ -11,14 +13,22 @@
 // The FNV-1a checksum of every cell's distance value is printed too (not timed): an optimised
 // transform must give the same number.
 //
-//   map_load_bench [--map FILE.yaml] [--factor 8] [--reps 3] [--json]
+// `--plans N`: then N RRT-Connect solves across the whole map (a start in the first tile or
+// corner, a goal in the last, at least half the map's diagonal apart; radius 0.17 m, range 20
+// cells, one seed each), each timed in CPU time: solved, p50 and p95, mean path length. The
+// peak RSS then includes the planner's tree.
 //
-// Default: ../shared/maps/willow_full.yaml × 8 = 4320 × 4696 cells (20.3 M).
+//   map_load_bench [--map FILE.yaml] [--factor 8 | --tile T] [--reps 3] [--plans N] [--json]
+//
+// Default: ../shared/maps/willow_full.yaml × 8 = 4320 × 4696 cells (20.3 M). The 10^8-cell map
+// of scripts/bench: --map nav2_bench_100by100_15.yaml --tile 5 (10 000 × 10 000 cells; that
+// map's border is free floor, so the tiles join into one floor).
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +36,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -34,6 +45,7 @@
 #include "arguments.h"
 #include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/planning/planner.h"
 
 namespace {
 
@@ -88,17 +100,24 @@ Pgm readPgm(const std::string& path) {
   return pgm;
 }
 
-/// Writes `map` upsampled `factor`× into `folder` (map.pgm, map.yaml); returns the YAML's path.
-std::string writeUpsampled(const geometry::MapFile& map, int factor, const fs::path& folder) {
+/// Writes `map` upsampled `factor`× and tiled `tiles` × `tiles` into `folder` (map.pgm,
+/// map.yaml); returns the YAML's path.
+std::string writeScaled(const geometry::MapFile& map, int factor, int tiles,
+                        const fs::path& folder) {
   const Pgm pgm = readPgm(map.image);
-  const std::size_t w = static_cast<std::size_t>(pgm.width) * factor;
+  const std::size_t tile_w = static_cast<std::size_t>(pgm.width) * factor;
+  const std::size_t w = tile_w * tiles;
   {
     std::ofstream out(folder / "map.pgm", std::ios::binary);
-    out << "P5\n" << w << " " << pgm.height * factor << "\n255\n";
+    out << "P5\n" << w << " " << static_cast<std::size_t>(pgm.height) * factor * tiles << "\n255\n";
     std::vector<char> row(w);
-    for (int j = 0; j < pgm.height; ++j) {
-      for (std::size_t i = 0; i < w; ++i) row[i] = pgm.pixels[j * pgm.width + i / factor];
-      for (int k = 0; k < factor; ++k) out.write(row.data(), static_cast<std::streamsize>(w));
+    for (int copy = 0; copy < tiles; ++copy) {
+      for (int j = 0; j < pgm.height; ++j) {
+        for (std::size_t i = 0; i < w; ++i) {
+          row[i] = static_cast<char>(pgm.pixels[j * pgm.width + (i % tile_w) / factor]);
+        }
+        for (int k = 0; k < factor; ++k) out.write(row.data(), static_cast<std::streamsize>(w));
+      }
     }
     if (!out) throw std::runtime_error("cannot write " + (folder / "map.pgm").string());
   }
@@ -121,15 +140,18 @@ double median(std::vector<double> v) {
 struct Config {
   std::string map = ROOMBA_RRT_SHARED_MAPS "/willow_full.yaml";
   int factor = 8;
+  int tiles = 1;
   int reps = 3;
+  int plans = 0;
   bool json = false;
 };
 
 Config parseArgs(int argc, char** argv) {
   Config cfg;
-  roomba_rrt::bench::Arguments args(
-      argc, argv, "map_load_bench",
-      "usage: map_load_bench [--map FILE.yaml] [--factor K] [--reps N] [--json]\n");
+  roomba_rrt::bench::Arguments args(argc, argv, "map_load_bench",
+                                    "usage: map_load_bench [--map FILE.yaml] [--factor K | --tile "
+                                    "T] [--reps N] [--plans N] [--json]\n");
+  bool tiled = false;
   while (args.next()) {
     if (args.is("--json")) {
       cfg.json = true;
@@ -137,63 +159,149 @@ Config parseArgs(int argc, char** argv) {
       cfg.map = args.value();
     } else if (args.is("--factor")) {
       cfg.factor = args.count(1);
+    } else if (args.is("--tile")) {
+      cfg.tiles = args.count(1);
+      tiled = true;
     } else if (args.is("--reps")) {
       cfg.reps = args.count(1);
+    } else if (args.is("--plans")) {
+      cfg.plans = args.count(0);
     } else {
       args.unknown();
     }
   }
+  if (tiled) cfg.factor = 1;  // a tiled map keeps the map's resolution
   return cfg;
 }
 
+/// RRT-Connect across the map: `plans` solves between free points at least half the map's
+/// diagonal apart.
+struct PlanStats {
+  int runs = 0, solved = 0;
+  double p50_ms = 0, p95_ms = 0, max_ms = 0, mean_length = 0, mean_distance = 0;
+};
+
+namespace planning = roomba_rrt::planning;
+
+PlanStats planAcross(const std::shared_ptr<const geometry::ClearanceMap>& map, int plans) {
+  constexpr double kRadius = 0.17, kStepCells = 20;
+  planning::Problem base;
+  const geometry::Rectangle e = map->grid().extent();
+  base.bounds = {e.min_x, e.max_x, e.min_y, e.max_y};
+  base.map = map;
+  base.robot_radius = kRadius;
+  planning::PlannerOptions options;
+  options.algorithm = planning::Algorithm::kRrtConnect;
+  options.collision = planning::CollisionCheck::kSegments;
+  options.step = kStepCells * map->grid().resolution;
+  options.goal_bias = 0.05;
+  options.max_iterations = 2000000;
+  const geometry::ClearanceMap::Disc disc = map->disc(kRadius);
+  std::mt19937 random(2024);
+  std::uniform_real_distribution<double> x(e.min_x, e.max_x), y(e.min_y, e.max_y);
+  auto freePoint = [&] {
+    for (;;) {
+      const geometry::Point2 p{x(random), y(random)};
+      if (map->discFree(p, disc)) return p;
+    }
+  };
+  const double far_apart = 0.5 * std::hypot(e.max_x - e.min_x, e.max_y - e.min_y);
+  PlanStats stats;
+  std::vector<double> ms;
+  for (int i = 0; i < plans; ++i) {
+    planning::Problem p = base;
+    do {
+      p.start = freePoint();
+      p.goal = freePoint();
+    } while (geometry::distance(p.start, p.goal) < far_apart);
+    options.seed = 42u + static_cast<std::uint32_t>(i);
+    const double t0 = threadCpuSeconds();
+    const planning::PlanResult result = planning::plan(p, options);
+    ms.push_back((threadCpuSeconds() - t0) * 1e3);
+    ++stats.runs;
+    stats.mean_distance += geometry::distance(p.start, p.goal) / plans;
+    if (result.success) {
+      ++stats.solved;
+      stats.mean_length += result.length;
+    }
+  }
+  if (stats.solved > 0) stats.mean_length /= stats.solved;
+  std::sort(ms.begin(), ms.end());
+  if (!ms.empty()) {
+    stats.p50_ms = ms[ms.size() / 2];
+    stats.p95_ms = ms[std::min(ms.size() - 1, static_cast<std::size_t>(0.95 * ms.size()))];
+    stats.max_ms = ms.back();
+  }
+  return stats;
+}
+
 int run(const Config& cfg, const fs::path& folder) {
-  const std::string yaml = writeUpsampled(geometry::loadMap(cfg.map), cfg.factor, folder);
+  const std::string yaml = writeScaled(geometry::loadMap(cfg.map), cfg.factor, cfg.tiles, folder);
   const double rss_before = peakRssBytes();  // the small original and the writer's buffers
   std::vector<double> load_s, inflate_s;
   int width = 0, height = 0;
   double peak = 0;
   std::uint64_t checksum = 1469598103934665603u;  // FNV-1a of every cell's distance (untimed)
+  std::shared_ptr<const geometry::ClearanceMap> kept_map;
   for (int rep = 0; rep < cfg.reps; ++rep) {
+    kept_map.reset();  // one map at a time, as a planner holds it
     double t0 = threadCpuSeconds();
     auto grid = std::make_shared<const geometry::OccupancyGrid>(geometry::loadMap(yaml).grid);
     load_s.push_back(threadCpuSeconds() - t0);
     t0 = threadCpuSeconds();
-    const geometry::ClearanceMap map(grid);
+    auto map = std::make_shared<const geometry::ClearanceMap>(grid);
     inflate_s.push_back(threadCpuSeconds() - t0);
     width = grid->width, height = grid->height;
     if (rep == 0) {
       peak = peakRssBytes();  // one map, loaded and inflated: what a planner holds at most
       for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
-          checksum = (checksum ^ static_cast<std::uint32_t>(map.squaredCellDistance(i, j))) *
+          checksum = (checksum ^ static_cast<std::uint32_t>(map->squaredCellDistance(i, j))) *
                      1099511628211u;
         }
       }
     }
+    kept_map = std::move(map);
   }
+  const PlanStats plans = planAcross(kept_map, cfg.plans);
+  const double peak_planning = peakRssBytes();
   const double cells = static_cast<double>(width) * height;
   const double load_ns = median(load_s) * 1e9 / cells, inflate_ns = median(inflate_s) * 1e9 / cells;
+  const double first_ns = (load_s[0] + inflate_s[0]) * 1e9 / cells;  // memory fresh from the OS
   const double kept = 1 + geometry::ClearanceMap::kBytesPerCell;
   const double peak_per_cell = (peak - rss_before) / cells;
+  const std::string name = fs::path(cfg.map).stem().string();
   if (cfg.json) {
-    std::cout << "{\"map\": \"" << fs::path(cfg.map).stem().string()
-              << "\", \"factor\": " << cfg.factor << ", \"width\": " << width
+    std::cout << "{\"map\": \"" << name << "\", \"factor\": " << cfg.factor
+              << ", \"tiles\": " << cfg.tiles << ", \"width\": " << width
               << ", \"height\": " << height << ", \"reps\": " << cfg.reps
               << ", \"load_ns_per_cell\": " << load_ns
               << ", \"inflate_ns_per_cell\": " << inflate_ns
               << ", \"total_ns_per_cell\": " << load_ns + inflate_ns
+              << ", \"first_total_ns_per_cell\": " << first_ns
               << ", \"total_ms\": " << (load_ns + inflate_ns) * cells * 1e-6
               << ", \"kept_bytes_per_cell\": " << kept << ", \"peak_rss_mb\": " << peak / (1 << 20)
               << ", \"peak_bytes_per_cell\": " << peak_per_cell << ", \"distance_checksum\": \""
-              << std::hex << checksum << std::dec << "\"}\n";
+              << std::hex << checksum << std::dec << "\", \"plans\": {\"runs\": " << plans.runs
+              << ", \"solved\": " << plans.solved << ", \"p50_ms\": " << plans.p50_ms
+              << ", \"p95_ms\": " << plans.p95_ms << ", \"max_ms\": " << plans.max_ms
+              << ", \"mean_length\": " << plans.mean_length
+              << ", \"mean_distance\": " << plans.mean_distance
+              << ", \"peak_rss_mb\": " << peak_planning / (1 << 20) << "}}\n";
   } else {
-    std::cout << fs::path(cfg.map).stem().string() << " x" << cfg.factor << ": " << width << " x "
-              << height << " cells; load " << load_ns << " ns/cell, inflate " << inflate_ns
-              << " ns/cell, total " << load_ns + inflate_ns << " ns/cell ("
-              << (load_ns + inflate_ns) * cells * 1e-6 << " ms); kept " << kept
-              << " B/cell; peak RSS " << peak / (1 << 20) << " MB (" << peak_per_cell
-              << " B/cell above the start); distance checksum " << std::hex << checksum << std::dec
-              << "\n";
+    std::cout << name << " x" << cfg.factor << " tiled " << cfg.tiles << "x" << cfg.tiles << ": "
+              << width << " x " << height << " cells; load " << load_ns << " ns/cell, inflate "
+              << inflate_ns << " ns/cell, total " << load_ns + inflate_ns << " ns/cell ("
+              << (load_ns + inflate_ns) * cells * 1e-6 << " ms; the first of " << cfg.reps << " "
+              << first_ns << " ns/cell); kept " << kept << " B/cell; peak RSS " << peak / (1 << 20)
+              << " MB (" << peak_per_cell << " B/cell above the start); distance checksum "
+              << std::hex << checksum << std::dec << "\n";
+    if (plans.runs > 0) {
+      std::cout << "RRT-Connect across the map: " << plans.solved << "/" << plans.runs
+                << " solved, CPU p50 " << plans.p50_ms << " ms, p95 " << plans.p95_ms << " ms, max "
+                << plans.max_ms << " ms; mean length " << plans.mean_length << " m (straight "
+                << plans.mean_distance << " m); peak RSS " << peak_planning / (1 << 20) << " MB\n";
+    }
   }
   return 0;
 }

@@ -14,6 +14,8 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     ompl.json      bench/ompl_comparison --json
     maps.json      map_comparison --json (the shared maps: RRT family vs OMPL, RRT* vs shortest)
     map_load.json  map_load_bench --json (willow_full × 8: load + inflate per cell, memory)
+    map_huge.json  map_load_bench --json --tile 5 --plans 20 (10^8 cells; RRT-Connect across)
+    big_map.json   big_map_probe --json (the same map over ROS: rrt_planner on a latched /map)
     behavior.json  behavior_bench --benchmark_out (Google Benchmark JSON)
     groot2.json    groot2_bench --json (Groot2 monitoring: the monitor per tick, the server thread)
     sim.json       sim_bench --benchmark_out (Google Benchmark JSON; one robot and 1/10/100 robots)
@@ -267,6 +269,54 @@ def map_load_rows(t, results):
                     f"inflate {fmt(d['inflate_ns_per_cell'])}; {fmt(d['total_ms'])} ms); "
                     f"{d['kept_bytes_per_cell']:g} B/cell kept, peak RSS "
                     f"{d['peak_rss_mb']:.0f} MB ({d['peak_bytes_per_cell']:.1f} B/cell)")
+
+
+def huge_map_rows(t, results):
+    """10^8 cells (issue 47, item 3): nav2_bench_100by100_15 tiled 5 × 5, in process
+    (map_load_bench --tile 5 --plans 20) and served over ROS from a latched /map (big_map_probe)."""
+    what = "10^8-cell map: load + inflate, CPU ns per cell; memory per cell"
+    try:
+        d = load(results, "map_huge")
+    except Missing as e:
+        t.missing("map_huge_load", what, str(e), "≤ 15 ns/cell, ≤ 6 B/cell")
+    else:
+        cells = d["width"] * d["height"]
+        where = (f"{d['map']} tiled {d['tiles']} × {d['tiles']} ({d['width']} × {d['height']} = "
+                 f"{cells / 1e6:.0f} M cells)")
+        met = d["total_ns_per_cell"] <= 15 and d["peak_bytes_per_cell"] <= 6
+        t.add("map_huge_load",
+              f"{where}: geometry::loadMap + ClearanceMap, CPU ns per cell (median of "
+              f"{d['reps']}); peak memory per cell", d["total_ns_per_cell"],
+              target="≤ 15 ns/cell, ≤ 6 B/cell", met=met,
+              ours_text=f"{fmt(d['total_ns_per_cell'])} ns (load {fmt(d['load_ns_per_cell'])} + "
+                        f"inflate {fmt(d['inflate_ns_per_cell'])}; {fmt(d['total_ms'])} ms); "
+                        f"peak RSS {d['peak_rss_mb']:.0f} MB ({d['peak_bytes_per_cell']:.1f} "
+                        "B/cell)")
+        p = d["plans"]
+        t.add("map_huge_plan",
+              f"{where}: RRT-Connect first path across the map (start and goal at least half "
+              f"the diagonal apart, {p['runs']} solves), CPU time per solve",
+              p["p95_ms"], target="p95 ≤ 200 ms",
+              met=p["solved"] == p["runs"] and p["p95_ms"] <= 200,
+              ours_text=f"p95 {fmt(p['p95_ms'])} ms (p50 {fmt(p['p50_ms'])} ms, max "
+                        f"{fmt(p['max_ms'])} ms; {p['solved']}/{p['runs']} solved, "
+                        f"{p['mean_length']:.0f} m on average)")
+    what = "10^8-cell map over ROS: rrt_planner on a latched /map"
+    try:
+        d = load(results, "big_map")
+    except Missing as e:
+        t.missing("big_map", what, str(e))
+        return
+    t.add("big_map",
+          f"{d['map'].replace('.yaml', '')} tiled {d['tiles']} × {d['tiles']} ({d['message_mb']:.0f} MB "
+          "of /map) over ROS: rrt_planner with no world file; publish, then the first make_plan "
+          f"that succeeds (wall time); make_plan across the map ({d['plans']} requests), round "
+          "trip; the planner's peak RSS", d["ready_ms"],
+          ours_text=f"ready {fmt(d['ready_ms'])} ms after publishing (publish "
+                    f"{fmt(d['publish_ms'])} ms); make_plan p50 {fmt(d['p50_ms'])} ms, p95 "
+                    f"{fmt(d['p95_ms'])} ms, {d['solved']}/{d['plans']} solved, "
+                    f"{d['mean_poses']:.0f} poses; peak RSS {d['planner_peak_rss_mb']:.0f} MB "
+                    f"({d['planner_peak_bytes_per_cell']:.1f} B/cell)")
 
 
 def planning_rows(t, results):
@@ -553,7 +603,7 @@ def main(argv):
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, room_rows, map_rows, map_load_rows, planning_rows, behavior_rows,
+    for rows in (rrt_rows, room_rows, map_rows, map_load_rows, huge_map_rows, planning_rows, behavior_rows,
                  groot2_rows, sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
         try:
             rows(t, results)

@@ -56,7 +56,7 @@ endif()
 if(TARGET roomba_geometry)
   add_executable(map_load_bench EXCLUDE_FROM_ALL bench/map_load_bench.cpp)
   target_include_directories(map_load_bench PRIVATE include)
-  target_link_libraries(map_load_bench PRIVATE roomba_geometry)
+  target_link_libraries(map_load_bench PRIVATE rrt_planning)
   target_compile_definitions(map_load_bench PRIVATE
     ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
   add_dependencies(benchmarks map_load_bench)
@@ -74,7 +74,7 @@ endif()
 foreach(target IN ITEMS planning_bench behavior_bench sim_bench sensor_bench sim_rtf_probe
                         plan_path_bench
                         rrt_monte_carlo roomba_sim roomba_fsm rrt_planner roomba_bt
-                        nav_latency_probe fairness_probe coverage_bench)
+                        nav_latency_probe fairness_probe big_map_probe coverage_bench)
   if(TARGET ${target})
     add_dependencies(benchmarks ${target})
   endif()

@@ -80,6 +80,14 @@ target_include_directories(fairness_probe PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(fairness_probe ${catkin_LIBRARIES})
 add_dependencies(fairness_probe ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
+# A 10^8-cell map over ROS: rrt_planner serving make_plan on a 100 MB /map.
+add_executable(big_map_probe bench/big_map_probe.cpp)
+target_include_directories(big_map_probe PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+target_link_libraries(big_map_probe roomba_node_common ${catkin_LIBRARIES})
+target_compile_definitions(big_map_probe PRIVATE
+  ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+add_dependencies(big_map_probe ${${PROJECT_NAME}_EXPORTED_TARGETS})
+
 if(CATKIN_ENABLE_TESTING)
   # rostests through a real master; each .test starts the node and one gtest client node.
   foreach(planner_node_test
