@@ -12,3 +12,28 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(mapping_test test/mapping/occupancy_mapper_test.cpp
     test/mapping/map_saver_test.cpp LINK roomba_mapping roomba_sensors)
 endif()
+
+# The node: scans, bumper and tf in, the map out (gmapping's interface).
+add_executable(roomba_mapper src/nodes/roomba_mapper_node.cpp src/ros/roomba_mapper.cpp)
+target_link_libraries(roomba_mapper roomba_mapping roomba_node_common)
+add_dependencies(roomba_mapper ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})
+# map_server's map_saver (Debian ships no map_server).
+add_executable(roomba_map_saver src/nodes/roomba_map_saver_node.cpp)
+target_link_libraries(roomba_map_saver roomba_mapping roomba_node_common)
+
+if(CATKIN_ENABLE_TESTING)
+  # The node's conversions (scan, tf pose, parameters' names), without a master.
+  roomba_rrt_gtest(mapper_ros_test test/mapping/mapper_ros_test.cpp src/ros/roomba_mapper.cpp
+    LINK roomba_mapping roomba_node_common ROS)
+  # roomba_sim + roomba_mapper: /map gets published with the walls where the world has them,
+  # ~dynamic_map answers the same, and roomba_map_saver writes it so that the world reads back.
+  add_rostest_gtest(mapper_rostest test/mapping/mapper.test test/mapping/mapper_rostest.cpp)
+  if(TARGET mapper_rostest)
+    target_include_directories(mapper_rostest PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(mapper_rostest roomba_mapping roomba_node_common ${catkin_LIBRARIES})
+    target_compile_definitions(mapper_rostest PRIVATE
+      ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
+    add_dependencies(mapper_rostest roomba_sim roomba_mapper roomba_map_saver
+      ${${PROJECT_NAME}_EXPORTED_TARGETS})
+  endif()
+endif()

@@ -8,7 +8,7 @@ bin=${RR_DEVEL:?RR_DEVEL is the devel space}/lib/roomba_rrt
 export ROS_MASTER_URI=http://127.0.0.1:9  # nothing listens: a node that waited would time out
 failures=0 checked=0
 say() { echo "[help_test] $*"; }
-for node in rrt_planner roomba_sim coverage_planner roomba_fsm roomba_bt roomba_teleop rrt_plot \
+for node in rrt_planner roomba_sim roomba_mapper roomba_map_saver coverage_planner roomba_fsm roomba_bt roomba_teleop rrt_plot \
   rrt_monte_carlo roomba_coverage roomba_nav_eval; do
   [ -x "$bin/$node" ] || { say "FAIL: $node is not built"; failures=$((failures + 1)); }
 done
