@@ -74,7 +74,8 @@ endif()
 foreach(target IN ITEMS planning_bench behavior_bench sim_bench sensor_bench sim_rtf_probe
                         plan_path_bench
                         rrt_monte_carlo roomba_sim roomba_fsm rrt_planner roomba_bt
-                        nav_latency_probe fairness_probe big_map_probe coverage_bench)
+                        nav_latency_probe fairness_probe big_map_probe coverage_bench
+                        mapping_bench)
   if(TARGET ${target})
     add_dependencies(benchmarks ${target})
   endif()

@@ -37,3 +37,20 @@ if(CATKIN_ENABLE_TESTING)
       ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()
 endif()
+
+# The accuracy and update benchmark (scripts/bench): the simulator, its LDS and the cleaning tree
+# in process (as roomba_coverage), feeding the mapper. With MRPT's occupancy grid
+# (libmrpt-maps-dev, optional: not a dependency of the package) it also times MRPT's update.
+find_package(mrpt-maps QUIET)
+add_executable(mapping_bench EXCLUDE_FROM_ALL bench/mapping_bench.cpp src/tools/coverage_run.cpp
+  src/tools/coverage_arguments.cpp)
+target_include_directories(mapping_bench PRIVATE ${PROJECT_SOURCE_DIR}/bench)
+target_link_libraries(mapping_bench roomba_mapping roomba_sensors roomba_tools roomba_behavior_core
+  roomba_coverage_core)
+target_compile_definitions(mapping_bench PRIVATE
+  ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
+if(mrpt-maps_FOUND)
+  target_link_libraries(mapping_bench mrpt::maps)
+  target_compile_definitions(mapping_bench PRIVATE ROOMBA_RRT_WITH_MRPT)
+  message(STATUS "roomba_rrt benchmarks: MRPT ${mrpt-maps_VERSION} found; mapping_bench compares")
+endif()

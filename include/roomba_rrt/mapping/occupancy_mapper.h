@@ -98,10 +98,12 @@ class OccupancyMapper {
   /// The same into `out`, reusing its memory.
   void grid(geometry::OccupancyGrid& out) const;
 
-  /// The log-odds of cell (i, j) of grid() (0 for an unobserved cell), and whether it was
-  /// observed.
-  float logOdds(int i, int j) const { return log_odds_[index(i, j)]; }
-  bool observed(int i, int j) const { return observed_[index(i, j)] != 0; }
+  /// The log-odds of cell (i, j) of grid() (0 for an unobserved cell; kept in steps of
+  /// 1/256), and whether it was observed.
+  double logOdds(int i, int j) const {
+    return observed(i, j) ? log_odds_[index(i, j)] / kLogOddsScale : 0.0;
+  }
+  bool observed(int i, int j) const { return log_odds_[index(i, j)] != kUnobserved; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -120,13 +122,18 @@ class OccupancyMapper {
   /// Adds the free evidence along the segment from (x0, y0) to (x1, y1) (in cells), and the hit
   /// evidence at its end when `hit`.
   void traceRay(double x0, double y0, double x1, double y1, bool hit);
-  void add(std::size_t k, float delta);
+  void add(std::size_t k, int delta);
 
   MapperOptions options_;
   int width_ = 0, height_ = 0;
   geometry::Point2 origin_;
-  std::vector<float> log_odds_;
-  std::vector<std::uint8_t> observed_;
+  /// Each cell's log-odds in steps of 1 / kLogOddsScale (two bytes a cell: a 10^6-cell map
+  /// is 2 MB, which stays in the caches), or kUnobserved (above every log-odds the limit
+  /// allows).
+  static constexpr double kLogOddsScale = 256;
+  static constexpr std::int16_t kUnobserved = INT16_MAX;
+  std::vector<std::int16_t> log_odds_;
+  int occupied_ = 0, free_ = 0, limit_ = 0;  ///< the options' log-odds in those steps
   std::size_t scans_ = 0;
 };
 
