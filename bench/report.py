@@ -373,6 +373,36 @@ def groot2_rows(t, results):
                     f"{fmt(d['bare_ns'])} ns tick; server {fmt(d['server_us_per_tick'])} µs)")
 
 
+def mapping_rows(t, results):
+    target = "≥ 99 % agree, 0 walls > 1 cell off"
+    try:
+        d = load(results, "mapping")
+    except Missing as e:
+        t.missing("mapping_accuracy", "Mapper: map after one cleaning run vs the true world",
+                  str(e), target)
+        t.missing("mapping_update", "Mapper: one 360-ray scan on a 10^6-cell grid", str(e),
+                  "≤ 1 ms")
+        return
+    for k, row in enumerate(d["accuracy"]):
+        share = 100 * row["agreement"]
+        t.add(f"mapping_accuracy_{k}", f"Mapper after one cleaning run ({row['world']}; LDS + "
+              "bumper, coverage tree, 2.5× ideal time): seen cells that agree with the true world; "
+              "occupied cells with no obstacle within one cell",
+              share, target=target, met=share >= 99 and row["walls_off"] == 0,
+              ours_text=f"{share:.2f} % of {row['known']:,} cells; {row['walls_off']} of "
+                        f"{row['occupied']:,} occupied off ({100 * row['coverage']:.1f} % "
+                        f"cleaned, {row['bumps']} bumps)")
+    u = d["update"]
+    mrpt = u.get("mrpt_us")
+    what = (f"Mapper: one {u['rays']}-ray LDS scan added to a {u['cells']:,}-cell grid "
+            f"(willow_full, random poses), CPU µs; peer: MRPT 2.5 COccupancyGridMap2D, same scans")
+    t.add("mapping_update", what, u["ours_us"], mrpt, u["ours_us"] / mrpt if mrpt else None,
+          "≤ 1 ms", u["ours_us"] <= 1000,
+          f"{fmt(u['ours_us'])} µs ({u['cells_per_scan']:,.0f} cells crossed)",
+          f"{fmt(mrpt)} µs ({u['line_cells_per_scan']:,.0f} cells on its lines)" if mrpt
+          else "n/a (libmrpt-maps-dev not installed)")
+
+
 def sim_rows(t, results):
     try:
         data = load(results, "sim")
@@ -604,7 +634,7 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, map_rows, map_load_rows, huge_map_rows, planning_rows, behavior_rows,
-                 groot2_rows, sim_rows, sim_robot_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
+                 groot2_rows, sim_rows, sim_robot_rows, mapping_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format
