@@ -1,6 +1,7 @@
 #include "roomba_rrt/mapping/map_saver.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,24 @@ void write(const std::string& path, const std::string& bytes) {
   out << bytes;
   out.close();
   if (!out) throw util::InvalidInput(path, "cannot be written");
+}
+
+/// `v` as the shortest text that reads back as it, or, when `v` is a float (a resolution from
+/// nav_msgs/MapMetaData, whose field is float32), as the same float: 0.05, not
+/// 0.05000000074505806.
+std::string number(double v) {
+  const bool is_float = static_cast<double>(static_cast<float>(v)) == v;
+  const auto same = [&](const std::string& text) {
+    const double back = std::strtod(text.c_str(), nullptr);
+    return back == v || (is_float && static_cast<float>(back) == static_cast<float>(v));
+  };
+  std::string text = util::show(v);  // 6 digits, as a person writes it ("-10", "0.05")
+  for (int digits = 7; digits <= 17 && !same(text); ++digits) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    text = buffer;
+  }
+  return text;
 }
 
 }  // namespace
@@ -44,8 +63,8 @@ std::string pgmImage(const geometry::OccupancyGrid& grid, const SaveThresholds& 
 
 std::string mapYaml(const geometry::OccupancyGrid& grid, const std::string& image) {
   std::ostringstream yaml;
-  yaml << "image: " << image << "\nresolution: " << util::showExact(grid.resolution)
-       << "\norigin: [" << util::showExact(grid.origin.x) << ", " << util::showExact(grid.origin.y)
+  yaml << "image: " << image << "\nresolution: " << number(grid.resolution) << "\norigin: ["
+       << number(grid.origin.x) << ", " << number(grid.origin.y)
        << ", 0]\nnegate: 0\noccupied_thresh: 0.65\n"
        << "free_thresh: 0.196\n";
   return yaml.str();

@@ -63,6 +63,17 @@ TEST(MapSaver, SavedMapReadsBackAsTheSameGrid) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(MapSaver, ResolutionOfAMessageIsWrittenAsTheShortestTextOfItsFloat) {
+  OccupancyGrid grid;
+  grid.width = grid.height = 1;
+  grid.resolution = static_cast<float>(0.05);  // what nav_msgs/MapMetaData carries
+  grid.origin = {-10, 0.1};
+  grid.cells = {0};
+  const std::string yaml = mapYaml(grid, "m.pgm");
+  EXPECT_NE(yaml.find("resolution: 0.05\n"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("origin: [-10, 0.1, 0]\n"), std::string::npos) << yaml;
+}
+
 TEST(MapSaver, UnwritableFolderIsNamed) {
   OccupancyGrid grid;
   grid.width = grid.height = 1;

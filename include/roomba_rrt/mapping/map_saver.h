@@ -33,7 +33,8 @@ std::uint8_t pgmValue(std::int8_t v, const SaveThresholds& thresholds = {});
 /// The PGM image of `grid` (binary P5, with map_saver's comment line).
 std::string pgmImage(const geometry::OccupancyGrid& grid, const SaveThresholds& thresholds = {});
 
-/// The YAML naming `image` for `grid`. The numbers are written so that they read back exactly.
+/// The YAML naming `image` for `grid`. The numbers are written so that they read back exactly
+/// (a resolution that is a float, as a message's, as the shortest text of that float).
 std::string mapYaml(const geometry::OccupancyGrid& grid, const std::string& image);
 
 /// Writes `name`.pgm and `name`.yaml (`name` may have a folder; the YAML names the image by its
