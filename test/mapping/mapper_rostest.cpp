@@ -1,13 +1,16 @@
 // roomba_sim + roomba_mapper through a real master (mapper.test): what a gmapping user checks.
 // The map arrives latched on /map in frame map and again at ~map_update_interval, agrees with the
 // furnished room where the LDS saw it (walls where the world has them), /map_metadata and
-// ~dynamic_map give the same; roomba_map_saver writes it so that a world file reads it back; a
-// bad parameter stops the node naming it.
+// ~dynamic_map give the same; roomba_map_saver writes it so that a world file reads it back;
+// scans without a pose or whose angles do not add up are warned about; a bad parameter stops the
+// node naming it.
 #include <gtest/gtest.h>
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/MapMetaData.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Log.h>
+#include <sensor_msgs/LaserScan.h>
 
 #include <filesystem>
 #include <string>
@@ -79,6 +82,49 @@ TEST(Mapper, map_is_published_latched_with_the_walls_where_the_world_has_them) {
   for (std::size_t k = 0; k < back.cells.size(); ++k) occupied += back.cells[k] == 100;
   EXPECT_GE(occupied, a.occupied);  // the map may have grown between the two
   std::filesystem::remove_all(dir);
+}
+
+TEST(Mapper, scans_it_cannot_use_are_skipped_with_a_warning_saying_why) {
+  ros::NodeHandle nh;
+  std::vector<std::string> warnings;
+  ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>(
+      "/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& log) {
+        if (log->name == "/roomba_mapper" && log->level == rosgraph_msgs::Log::WARN) {
+          warnings.push_back(log->msg);
+        }
+      });
+  ros::Publisher scans = nh.advertise<sensor_msgs::LaserScan>("/scan", 10);
+  ASSERT_TRUE(waitUntil([&] { return scans.getNumSubscribers() > 0; }, 10.0));
+  sensor_msgs::LaserScan scan;
+  scan.header.frame_id = "nowhere";  // no tf: its pose cannot be known
+  scan.angle_increment = 0.1f;
+  scan.angle_max = 0.9f;
+  scan.range_min = 0.1f;
+  scan.range_max = 3.5f;
+  scan.ranges.assign(10, 1.0f);
+  const auto warned = [&](const std::string& text) {
+    for (const std::string& w : warnings) {
+      if (w.find(text) != std::string::npos) return true;
+    }
+    return false;
+  };
+  // Each warning is throttled (one per 5 s of ROS time), so each kind is sent until it is heard.
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        scan.header.stamp = ros::Time::now();
+        scans.publish(scan);
+        return warned("no pose of nowhere in odom");
+      },
+      20.0));
+  scan.header.frame_id = "base_scan";
+  scan.angle_max = 2.0f;  // 10 rays of 0.1 rad cannot end at 2 rad
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        scan.header.stamp = ros::Time::now();
+        scans.publish(scan);
+        return warned("scan skipped: angle_max: 2 is not angle_min + (10 - 1)");
+      },
+      20.0));
 }
 
 TEST(Mapper, bad_parameter_stops_the_node_naming_it) {
