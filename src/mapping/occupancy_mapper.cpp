@@ -117,11 +117,16 @@ OccupancyMapper::OccupancyMapper(const MapperOptions& options) : options_(option
 void OccupancyMapper::cover(double x0, double y0, double x1, double y1) {
   const double r = options_.resolution;
   // Cells to add on each side (whole cells: the lattice stays the same).
-  const auto need = [r](double d) { return d > 0 ? static_cast<long long>(std::ceil(d / r)) : 0; };
-  long long left = need(origin_.x - x0), bottom = need(origin_.y - y0);
-  long long right = need(x1 - (origin_.x + width_ * r));
-  long long top = need(y1 - (origin_.y + height_ * r));
-  if (left + bottom + right + top == 0) return;
+  const auto need = [r](double d) { return d > 0 ? std::ceil(d / r) : 0.0; };
+  const double cells[4] = {need(origin_.x - x0), need(origin_.y - y0),
+                           need(x1 - (origin_.x + width_ * r)),
+                           need(y1 - (origin_.y + height_ * r))};
+  if (cells[0] + cells[1] + cells[2] + cells[3] == 0) return;
+  for (const double n : cells) {
+    if (!(n <= MapperLimits::kMaxCells)) return;  // far beyond any map (NaN too): not grown
+  }
+  long long left = static_cast<long long>(cells[0]), bottom = static_cast<long long>(cells[1]);
+  long long right = static_cast<long long>(cells[2]), top = static_cast<long long>(cells[3]);
   // Grow by a quarter of the map at least on a side that grows: a robot driving out of the map
   // copies it a few times, not at every scan.
   const auto grow = [](long long n, int size) { return n ? std::max<long long>(n, size / 4) : 0; };
@@ -198,6 +203,11 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
     return "pose: not finite";
   }
+  if (std::abs(pose.x) > MapperLimits::kMaxCoordinate ||
+      std::abs(pose.y) > MapperLimits::kMaxCoordinate) {
+    return "pose: (" + util::show(pose.x) + ", " + util::show(pose.y) + ") is more than " +
+           util::show(MapperLimits::kMaxCoordinate) + " m from the origin";
+  }
   const double reach = std::min<double>(scan.range_max, options_.max_range);
   // The cells the scan can touch: the map grows to hold them first.
   double x0 = pose.x, y0 = pose.y, x1 = pose.x, y1 = pose.y;
@@ -249,10 +259,10 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
 void OccupancyMapper::markOccupied(const geometry::Point2& p) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
   cover(p.x, p.y, p.x, p.y);
-  const int i = static_cast<int>(std::floor((p.x - origin_.x) / options_.resolution));
-  const int j = static_cast<int>(std::floor((p.y - origin_.y) / options_.resolution));
-  if (i < 0 || j < 0 || i >= width_ || j >= height_) return;  // beyond max_cells
-  add(index(i, j), occupied_);
+  const double u = std::floor((p.x - origin_.x) / options_.resolution);
+  const double v = std::floor((p.y - origin_.y) / options_.resolution);
+  if (!(u >= 0 && v >= 0 && u < width_ && v < height_)) return;  // beyond max_cells
+  add(index(static_cast<int>(u), static_cast<int>(v)), occupied_);
 }
 
 void OccupancyMapper::addBump(const robot::Pose2D& pose, double radius,

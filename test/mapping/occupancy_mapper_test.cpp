@@ -242,6 +242,42 @@ TEST(OccupancyMapper, ScansThatDoNotAddUpAreRefusedNamingTheFieldAndChangeNothin
   EXPECT_EQ(mapper.addScan({0, 0, 0}, good), "");
 }
 
+TEST(OccupancyMapper, HostileScansNeverCrashNorLeaveAnythingButTrinaryCells) {
+  // Extreme but finite fields, rays of every kind, poses far away: each scan is used or refused,
+  // and the map stays a map.
+  std::mt19937 rng(11);
+  const double angles[] = {0, -1e300, 1e300, 3.14159, 1e-300, -7};
+  const double increments[] = {0, 1e-300, 0.0174533, -0.01, 1e-7};
+  const float ranges[] = {
+      0.0f,  1e-40f, 1.0f, 3.4e38f, kInf, -kInf, std::numeric_limits<float>::quiet_NaN(),
+      -1.0f, 50.0f};
+  const double limits[] = {0, 1e-30, 3.5, 1e30, 3.4e38};
+  const double coordinates[] = {0, 1e4, -1e5, 1e15, -1e300, 0.025};
+  MapperOptions o;
+  o.max_cells = 4'000'000;
+  OccupancyMapper mapper(o);
+  const auto pick = [&rng](const auto& values) {
+    return values[std::uniform_int_distribution<std::size_t>(0, std::size(values) - 1)(rng)];
+  };
+  int used = 0;
+  for (int n = 0; n < 3000; ++n) {
+    std::vector<float> r(1 + rng() % 50);
+    for (float& v : r) v = pick(ranges);
+    ScanView scan{pick(angles), 0,        pick(increments), pick(limits),
+                  pick(limits), r.data(), r.size()};
+    scan.angle_max =
+        rng() % 2 ? scan.angle_min + (r.size() - 1) * scan.angle_increment : pick(angles);
+    used += mapper.addScan({pick(coordinates), pick(coordinates), pick(angles)}, scan).empty();
+    mapper.addBump({pick(coordinates), pick(coordinates), pick(angles)}, 0.17, {true, true, false});
+  }
+  EXPECT_GT(used, 50);
+  EXPECT_LE(static_cast<long long>(mapper.width()) * mapper.height(), o.max_cells);
+  for (std::int8_t v : mapper.grid().cells) {
+    ASSERT_TRUE(v == OccupancyGrid::kUnknown || v == OccupancyGrid::kFree ||
+                v == OccupancyGrid::kOccupied);
+  }
+}
+
 TEST(OccupancyMapper, TheCellsTheBumperPressedBecomeOccupied) {
   const world::World world = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");
   OccupancyMapper mapper(optionsFor(world));

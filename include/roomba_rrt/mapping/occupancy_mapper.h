@@ -78,7 +78,8 @@ class OccupancyMapper {
   explicit OccupancyMapper(const MapperOptions& options);
 
   /// Adds one scan taken by a sensor at `sensor_pose` (in the map's frame). Returns "" when it
-  /// was used, or why not (checkScan(), a pose that is not finite): the map is then unchanged.
+  /// was used, or why not (checkScan(), a pose that is not finite or beyond
+  /// MapperLimits::kMaxCoordinate): the map is then unchanged.
   /// Rays reading NaN, −inf or a finite range outside [range_min, range_max] are skipped; a
   /// finite range beyond max_range, or +inf, clears the cells up to min(range_max, max_range).
   std::string addScan(const robot::Pose2D& sensor_pose, const ScanView& scan);
