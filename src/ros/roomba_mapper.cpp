@@ -11,6 +11,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -22,8 +23,9 @@
 namespace roomba_rrt::mapper_node {
 namespace {
 
-constexpr double kWarningPeriod = 5.0;  // s between two warnings of one kind
-constexpr double kMaxTilt = 0.05;       // rad: a scan frame tilted more is not planar
+constexpr double kWarningPeriod = 5.0;    // s between two warnings of one kind
+constexpr double kMaxTilt = 0.05;         // rad: a scan frame tilted more is not planar
+constexpr std::size_t kMaxPending = 200;  // messages waiting for tf (3 s of bumper at 60 Hz)
 
 /// The parameter each option is read from (gmapping's name where it has one).
 const std::vector<std::pair<const char*, const char*>> kOptionParameters = {
@@ -135,48 +137,71 @@ class RoombaMapperNode {
   }
 
  private:
-  /// The pose of `frame` in ~odom_frame at `stamp`, or why tf cannot give it (warned, throttled).
-  bool poseOf(const std::string& frame, const ros::Time& stamp, robot::Pose2D* pose) {
-    std::string why;
-    try {
-      const geometry_msgs::TransformStamped t = tf_.lookupTransform(
-          settings_.odom_frame, frame, stamp, ros::Duration(settings_.transform_timeout));
-      why = planarPose(t.transform, pose);
-    } catch (const tf2::TransformException& e) {
-      why = e.what();
+  /// A scan or a pressed bumper waiting for tf to know where it was taken.
+  struct Pending {
+    sensor_msgs::LaserScan::ConstPtr scan;  ///< or
+    roomba_rrt::Bumper::ConstPtr bumper;
+    const std::string& frame(const MapperSettings& s) const {
+      return scan ? scan->header.frame_id : s.base_frame;
     }
-    if (why.empty()) return true;
-    ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: no pose of %s in %s at %.3f s: %s",
-                      frame.c_str(), settings_.odom_frame.c_str(), stamp.toSec(), why.c_str());
-    return false;
-  }
+    ros::Time stamp() const { return scan ? scan->header.stamp : bumper->header.stamp; }
+  };
 
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
     if (scans_seen_++ % settings_.throttle_scans != 0) return;
-    const mapping::ScanView view = scanView(*scan);
-    const std::string bad = mapping::checkScan(view);
+    const std::string bad = mapping::checkScan(scanView(*scan));
     if (!bad.empty()) {
       ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: scan skipped: %s", bad.c_str());
       return;
     }
-    robot::Pose2D pose;
-    if (!poseOf(scan->header.frame_id, scan->header.stamp, &pose)) return;
-    const std::string why = mapper_.addScan(pose, view);
-    if (!why.empty()) {
-      ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: scan skipped: %s", why.c_str());
-      return;
-    }
-    changed_ = true;
-    if (!published_) publishIfChanged();  // the first map at once, then at the interval
+    pending_.push_back({scan, nullptr});
+    drain(scan->header.stamp);
   }
 
   void onBumper(const roomba_rrt::Bumper::ConstPtr& bumper) {
     if (!bumper->pressed) return;
+    pending_.push_back({nullptr, bumper});
+    drain(bumper->header.stamp);
+  }
+
+  /// Uses the waiting messages in order, each as soon as tf has its pose in ~odom_frame at its
+  /// stamp; one that tf cannot place once messages ~transform_timeout newer have come (or when
+  /// too many wait) is skipped with a throttled warning. Never waits: a message whose frame tf
+  /// never knows, or a clock that stops, does not hold up the timer or ~dynamic_map.
+  void drain(const ros::Time& newest) {
+    while (!pending_.empty()) {
+      const Pending& p = pending_.front();
+      const std::string& frame = p.frame(settings_);
+      std::string why;
+      if (tf_.canTransform(settings_.odom_frame, frame, p.stamp(), &why)) {
+        use(p, tf_.lookupTransform(settings_.odom_frame, frame, p.stamp()).transform);
+      } else if (newest - p.stamp() <= ros::Duration(settings_.transform_timeout) &&
+                 pending_.size() <= kMaxPending) {
+        return;  // tf may still come
+      } else {
+        ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: no pose of %s in %s at %.3f s: %s",
+                          frame.c_str(), settings_.odom_frame.c_str(), p.stamp().toSec(),
+                          why.c_str());
+      }
+      pending_.pop_front();
+    }
+  }
+
+  void use(const Pending& p, const geometry_msgs::Transform& transform) {
     robot::Pose2D pose;
-    if (!poseOf(settings_.base_frame, bumper->header.stamp, &pose)) return;
-    const robot::BumperState state{bumper->pressed != 0, bumper->left != 0, bumper->right != 0};
-    mapper_.addBump(pose, settings_.robot_radius, state);
+    std::string why = planarPose(transform, &pose);
+    if (why.empty() && p.scan) why = mapper_.addScan(pose, scanView(*p.scan));
+    if (!why.empty()) {
+      ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: %s skipped: %s", p.scan ? "scan" : "bump",
+                        why.c_str());
+      return;
+    }
+    if (p.bumper) {
+      const roomba_rrt::Bumper& b = *p.bumper;
+      mapper_.addBump(pose, settings_.robot_radius, {b.pressed != 0, b.left != 0, b.right != 0});
+    }
     changed_ = true;
+    if (!published_) publishIfChanged();  // the first map at once, then at the interval
   }
 
   void publishIfChanged() {
@@ -208,6 +233,7 @@ class RoombaMapperNode {
   ros::Timer timer_;
   geometry::OccupancyGrid grid_;
   nav_msgs::OccupancyGrid message_;
+  std::deque<Pending> pending_;
   std::size_t scans_seen_ = 0;
   bool changed_ = false, published_ = false;
 };

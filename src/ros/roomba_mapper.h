@@ -25,9 +25,10 @@ struct MapperSettings {
   std::string odom_frame = "odom";       ///< the frame the map is drawn in (= map: no SLAM)
   std::string base_frame = "base_link";  ///< the robot's frame (the bumper's pose)
   double map_update_interval = 5.0;      ///< s (simulated) between two publications of `map`
-  double transform_timeout = 0.2;        ///< s to wait for tf to give a scan's pose
-  int throttle_scans = 1;                ///< use one scan in this many
-  double robot_radius = 0.17;            ///< m, where the bumper's switches are
+  /// s (by the stamps of newer messages) a scan or bump waits for tf to give its pose
+  double transform_timeout = 0.2;
+  int throttle_scans = 1;      ///< use one scan in this many
+  double robot_radius = 0.17;  ///< m, where the bumper's switches are
 };
 
 /// Reads the private parameters (gmapping's names: ~delta, ~xmin, ..., ~maxUrange, ~occ_thresh,
