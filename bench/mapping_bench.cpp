@@ -63,7 +63,63 @@ struct AccuracyRow {
   double coverage = 0;  ///< of the reachable floor
   int bumps = 0;
   std::size_t scans = 0;
+  bool with_mrpt = false;
+  mapping::MapAccuracy mrpt;  ///< MRPT's grid fed the same scans, when built with it
 };
+
+#ifdef ROOMBA_RRT_WITH_MRPT
+/// A scan of `spec` as MRPT's CObservation2DRangeScan: MRPT's ray k is at −a/2 + k a / (n − 1)
+/// from the sensor's heading (a = angle_max − angle_min), so the sensor is turned by angle_min +
+/// a/2; no return (+inf) is an invalid ray, which MRPT clears up to maxRange as REP 117 says.
+mrpt::obs::CObservation2DRangeScan mrptScan(const sensors::RangeSensorSpec& spec,
+                                            const std::vector<float>& ranges) {
+  mrpt::obs::CObservation2DRangeScan o;
+  const double aperture = spec.angle_max - spec.angle_min;
+  o.aperture = static_cast<float>(aperture);
+  o.rightToLeft = true;
+  o.maxRange = static_cast<float>(spec.range_max);
+  o.sensorPose = mrpt::poses::CPose3D(0, 0, 0, spec.angle_min + aperture / 2, 0, 0);
+  o.resizeScan(ranges.size());
+  for (std::size_t r = 0; r < ranges.size(); ++r) {
+    const bool valid = std::isfinite(ranges[r]);
+    o.setScanRange(r, valid ? ranges[r] : o.maxRange);
+    o.setScanRangeValidity(r, valid);
+  }
+  return o;
+}
+
+/// MRPT's grid over `region` at its resolution, inserting up to `range_max`.
+mrpt::maps::COccupancyGridMap2D mrptGrid(const mapping::MapperOptions& region, double range_max) {
+  mrpt::maps::COccupancyGridMap2D map(region.xmin, region.xmax, region.ymin, region.ymax,
+                                      static_cast<float>(region.resolution));
+  map.insertionOptions.maxDistanceInsertion = static_cast<float>(range_max);
+  map.insertionOptions.considerInvalidRangesAsFreeSpace = true;
+  return map;
+}
+
+mrpt::poses::CPose3D mrptPose(const robot::Pose2D& p) {
+  return mrpt::poses::CPose3D(p.x, p.y, 0, p.theta, 0, 0);
+}
+
+/// MRPT's cells as nav_msgs' trinary ones. MRPT keeps the log-odds of being free: 0 unknown,
+/// above free, below occupied.
+geometry::OccupancyGrid trinary(const mrpt::maps::COccupancyGridMap2D& map) {
+  geometry::OccupancyGrid grid;
+  grid.width = static_cast<int>(map.getSizeX());
+  grid.height = static_cast<int>(map.getSizeY());
+  grid.resolution = map.getResolution();
+  grid.origin = {map.getXMin(), map.getYMin()};
+  for (int j = 0; j < grid.height; ++j) {
+    const auto* row = map.getRow(j);
+    for (int i = 0; i < grid.width; ++i) {
+      grid.cells.push_back(row[i] == 0  ? geometry::OccupancyGrid::kUnknown
+                           : row[i] > 0 ? geometry::OccupancyGrid::kFree
+                                        : geometry::OccupancyGrid::kOccupied);
+    }
+  }
+  return grid;
+}
+#endif
 
 /// One cleaning run of `world` with its first robot's sensors (the LDS when it has none) and
 /// its bumper feeding a mapper of 0.05 m cells over the room.
@@ -83,6 +139,14 @@ AccuracyRow cleaningRun(const std::string& label, world::World world) {
   options.ymax = options.ymin + world.room.height;
   mapping::OccupancyMapper mapper(options);
   const world::RobotSpec& robot = world.robot();
+#ifdef ROOMBA_RRT_WITH_MRPT
+  mapping::MapperOptions region = options;  // MRPT's grid does not grow: the walls' cells too
+  region.xmin -= 0.5;
+  region.ymin -= 0.5;
+  region.xmax += 0.5;
+  region.ymax += 0.5;
+  mrpt::maps::COccupancyGridMap2D mrpt_map = mrptGrid(region, robot.sensors.front().range_max);
+#endif
   AccuracyRow row;
   row.world = label;
   const long steps = std::lround(2.5 * cleaning.ideal_time / world.step);
@@ -96,8 +160,11 @@ AccuracyRow cleaningRun(const std::string& label, world::World world) {
     poses[0] = simulator.pose();
     for (const sensors::Scan& scan : scanner.scan(simulator.time(), poses)) {
       const sensors::RangeSensorSpec& spec = robot.sensors[scan.sensor];
-      mapper.addScan(mapping::mountedPose(poses[0], spec.mount),
-                     mapping::scanView(spec, scan.ranges));
+      const robot::Pose2D at = mapping::mountedPose(poses[0], spec.mount);
+      mapper.addScan(at, mapping::scanView(spec, scan.ranges));
+#ifdef ROOMBA_RRT_WITH_MRPT
+      mrpt_map.insertObservation(mrptScan(spec, scan.ranges), mrptPose(at));
+#endif
     }
     mapper.addBump(poses[0], robot.radius, bumper);
     simulator.move(tree.tick(bumper, poses[0]));
@@ -108,6 +175,10 @@ AccuracyRow cleaningRun(const std::string& label, world::World world) {
                                    grid.cellSize() / cleaning.reachable_area);
   row.scans = mapper.scans();
   row.accuracy = mapping::compare(mapper.grid(), world);
+#ifdef ROOMBA_RRT_WITH_MRPT
+  row.with_mrpt = true;
+  row.mrpt = mapping::compare(trinary(mrpt_map), world);
+#endif
   return row;
 }
 
@@ -184,35 +255,16 @@ double oursMicroseconds(const Scans& s, long count) {
 /// CPU µs per scan inserted into MRPT's COccupancyGridMap2D (the same grid, rays and poses;
 /// no return = free up to range_max, as REP 117 and ours).
 double mrptMicroseconds(const Scans& s, long count) {
-  const sensors::RangeSensorSpec& lds = s.lds;
-  mrpt::maps::COccupancyGridMap2D map(s.options.xmin, s.options.xmax, s.options.ymin,
-                                      s.options.ymax, static_cast<float>(s.options.resolution));
-  map.insertionOptions.maxDistanceInsertion = static_cast<float>(lds.range_max);
-  map.insertionOptions.considerInvalidRangesAsFreeSpace = true;
-  std::vector<mrpt::obs::CObservation2DRangeScan> observations(s.poses.size());
-  const double aperture = lds.angle_max - lds.angle_min;  // MRPT: ray k at −a/2 + k a / (n − 1)
+  mrpt::maps::COccupancyGridMap2D map = mrptGrid(s.options, s.lds.range_max);
+  std::vector<mrpt::obs::CObservation2DRangeScan> observations;
+  for (const std::vector<float>& ranges : s.ranges) observations.push_back(mrptScan(s.lds, ranges));
   for (std::size_t k = 0; k < s.poses.size(); ++k) {
-    mrpt::obs::CObservation2DRangeScan& o = observations[k];
-    o.aperture = static_cast<float>(aperture);
-    o.rightToLeft = true;
-    o.maxRange = static_cast<float>(lds.range_max);
-    o.sensorPose = mrpt::poses::CPose3D(0, 0, 0, lds.angle_min + aperture / 2, 0, 0);
-    o.resizeScan(s.ranges[k].size());
-    for (std::size_t r = 0; r < s.ranges[k].size(); ++r) {
-      const float range = s.ranges[k][r];
-      const bool valid = std::isfinite(range);
-      o.setScanRange(r, valid ? range : o.maxRange);
-      o.setScanRangeValidity(r, valid);
-    }
+    map.insertObservation(observations[k], mrptPose(s.poses[k]));
   }
-  const auto pose = [&s](std::size_t i) {
-    return mrpt::poses::CPose3D(s.poses[i].x, s.poses[i].y, 0, s.poses[i].theta, 0, 0);
-  };
-  for (std::size_t k = 0; k < s.poses.size(); ++k) map.insertObservation(observations[k], pose(k));
   const double start = threadCpuSeconds();
   for (long k = 0; k < count; ++k) {
     const std::size_t i = static_cast<std::size_t>(k) & 1023;
-    map.insertObservation(observations[i], pose(i));
+    map.insertObservation(observations[i], mrptPose(s.poses[i]));
   }
   return 1e6 * (threadCpuSeconds() - start) / static_cast<double>(count);
 }
@@ -263,9 +315,14 @@ int main(int argc, char** argv) {
       std::printf(
           "%s{\"world\": \"%s\", \"agreement\": %.6f, \"known\": %zu, \"occupied\": %zu, "
           "\"walls_off\": %zu, \"seconds\": %.1f, \"coverage\": %.4f, \"bumps\": %d, "
-          "\"scans\": %zu}",
+          "\"scans\": %zu",
           k ? ", " : "", r.world.c_str(), r.accuracy.agreement(), r.accuracy.known,
           r.accuracy.occupied, r.accuracy.walls_off, r.seconds, r.coverage, r.bumps, r.scans);
+      if (r.with_mrpt) {
+        std::printf(", \"mrpt\": {\"agreement\": %.6f, \"known\": %zu, \"walls_off\": %zu}",
+                    r.mrpt.agreement(), r.mrpt.known, r.mrpt.walls_off);
+      }
+      std::printf("}");
     }
     std::printf(
         "], \"update\": {\"cells\": %ld, \"rays\": %d, \"scans\": %ld, \"ours_us\": %.3f, "
@@ -281,6 +338,12 @@ int main(int argc, char** argv) {
         "cell; %.0f s, %.1f %% cleaned, %d bumps, %zu scans\n",
         r.world.c_str(), 100 * r.accuracy.agreement(), r.accuracy.known, r.accuracy.occupied,
         r.accuracy.walls_off, r.seconds, 100 * r.coverage, r.bumps, r.scans);
+    if (r.with_mrpt) {
+      std::printf(
+          "%-34s %6.2f %% of %zu seen cells agree in MRPT's grid fed the same scans, %zu "
+          "occupied cells off by more than a cell\n",
+          "", 100 * r.mrpt.agreement(), r.mrpt.known, r.mrpt.walls_off);
+    }
   }
   std::printf("one %d-ray scan on %ld cells: ours %.1f µs (%.0f cells crossed)", s.lds.samples,
               cells, ours, exact_cells);
