@@ -83,8 +83,18 @@ target_link_libraries(roomba_fsm roomba_behavior_node)
 # Headless coverage experiments: the simulation core and a behaviour in one process (its
 # arguments, runs, statistics and pictures in src/tools/coverage_*).
 add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_arguments.cpp
-  src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp)
-target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core roomba_coverage_core)
+  src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp
+  src/tools/explore_clean.cpp)
+target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core roomba_coverage_core
+  roomba_exploration roomba_mapping roomba_sensors)
+
+if(CATKIN_ENABLE_TESTING)
+  # roomba_coverage --unknown in process: exploring and cleaning a world the robot does not know.
+  roomba_rrt_gtest(explore_clean_test test/tools/explore_clean_test.cpp src/tools/explore_clean.cpp
+    src/tools/coverage_run.cpp src/tools/coverage_arguments.cpp
+    LINK roomba_tools roomba_behavior_core roomba_coverage_core roomba_exploration roomba_mapping
+    roomba_sensors)
+endif()
 
 if(CATKIN_ENABLE_TESTING)
   # The engines: the finite state machine, and the behavior tree's nodes, factory and files.

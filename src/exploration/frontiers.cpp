@@ -30,19 +30,20 @@ geometry::Point2 centre(const OccupancyGrid& map, int i, int j) {
   return {map.origin.x + (i + 0.5) * map.resolution, map.origin.y + (j + 0.5) * map.resolution};
 }
 
-/// Dijkstra over the cells' centres, 8-connected, distances in cells: from `sources` (at 0)
+/// Dijkstra over the cells' centres, 8-connected, distances in cells: from `sources` (cells and
+/// their distances to start with)
 /// through the cells `enter(i, j)` lets in, no farther than `reach`. `reached(from, to)` is told
 /// each time a cell gets a shorter way (from the cell it is reached from); `settled(cell, d)` is
 /// called for each cell in the order of its distance and ends the search by returning true.
 template <class Enter, class Reached, class Settled>
-void dijkstra(const OccupancyGrid& map, const std::vector<int>& sources, double reach, Enter enter,
-              Reached reached, Settled settled) {
+void dijkstra(const OccupancyGrid& map, const std::vector<std::pair<int, double>>& sources,
+              double reach, Enter enter, Reached reached, Settled settled) {
   std::vector<double> distance(map.cells.size(), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  for (const int cell : sources) {
-    distance[cell] = 0;
-    open.push({0.0, cell});
+  for (const auto& [cell, d] : sources) {
+    distance[cell] = std::min(distance[cell], d);
+    open.push({d, cell});
   }
   while (!open.empty()) {
     const auto [d, cell] = open.top();
@@ -70,11 +71,11 @@ void dijkstra(const OccupancyGrid& map, const std::vector<int>& sources, double 
 std::vector<int> frontierInView(const OccupancyGrid& map, const std::vector<Frontier>& frontiers,
                                 double reach) {
   std::vector<int> in_view(map.cells.size(), -1);
-  std::vector<int> sources;
+  std::vector<std::pair<int, double>> sources;
   for (int f = 0; f < static_cast<int>(frontiers.size()); ++f) {
     for (const int cell : frontiers[f].cells) {
       in_view[cell] = f;
-      sources.push_back(cell);
+      sources.push_back({cell, 0.0});
     }
   }
   dijkstra(
@@ -82,6 +83,34 @@ std::vector<int> frontierInView(const OccupancyGrid& map, const std::vector<Fron
       [&in_view](int from, int to) { in_view[to] = in_view[from]; },
       [](int, double) { return false; });
   return in_view;
+}
+
+/// Whether the straight line from the centre of cell (i0, j0) to that of (i1, j1) crosses only
+/// free cells of `map` before it enters (i1, j1) (sampled every fifth of a cell): a ray from the
+/// first would reach the second.
+bool clearLine(const OccupancyGrid& map, int i0, int j0, int i1, int j1) {
+  const int samples = static_cast<int>(std::ceil(5 * std::hypot(i1 - i0, j1 - j0)));
+  for (int s = 1; s < samples; ++s) {
+    const double t = static_cast<double>(s) / samples;
+    const int i = static_cast<int>(std::floor(i0 + 0.5 + t * (i1 - i0)));
+    const int j = static_cast<int>(std::floor(j0 + 0.5 + t * (j1 - j0)));
+    if (i == i1 && j == j1) return true;
+    if (map.at(i, j) != OccupancyGrid::kFree) return false;
+  }
+  return true;
+}
+
+/// Whether a ray from cell (i, j) reaches an unknown cell beside frontier cell (fi, fj): the
+/// robot standing there sees what lies beyond the frontier.
+bool seesBeyond(const OccupancyGrid& map, int i, int j, int fi, int fj) {
+  for (int k = 0; k < 4; ++k) {
+    const int ui = fi + kDx[k], uj = fj + kDy[k];
+    if (map.inside(ui, uj) && map.at(ui, uj) == OccupancyGrid::kUnknown &&
+        clearLine(map, i, j, ui, uj)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -128,11 +157,39 @@ std::optional<FrontierGoal> nearestFrontier(const geometry::ClearanceMap& known,
                                             const geometry::Point2& from,
                                             const std::vector<Frontier>& frontiers,
                                             const FrontierOptions& options) {
+  return nearestFrontier(known, known.grid(), from, frontiers, options);
+}
+
+std::optional<FrontierGoal> nearestFrontier(const geometry::ClearanceMap& known,
+                                            const OccupancyGrid& sight,
+                                            const geometry::Point2& from,
+                                            const std::vector<Frontier>& frontiers,
+                                            const FrontierOptions& options) {
   const OccupancyGrid& map = known.grid();
   const int fi = map.column(from.x), fj = map.row(from.y);
-  if (frontiers.empty() || !map.inside(fi, fj)) return std::nullopt;
-  const std::vector<int> in_view =
-      frontierInView(map, frontiers, options.view_distance / map.resolution);
+  if (frontiers.empty() || !map.inside(fi, fj) || sight.width != map.width ||
+      sight.height != map.height) {
+    return std::nullopt;
+  }
+  const double reach = options.view_distance / map.resolution;
+  const std::vector<int> in_view = frontierInView(sight, frontiers, reach);
+  // Whether a cell of frontier f within reach is in plain sight from cell (i, j).
+  std::vector<int> frontier_of(map.cells.size(), -1);
+  for (int f = 0; f < static_cast<int>(frontiers.size()); ++f) {
+    for (const int cell : frontiers[f].cells) frontier_of[cell] = f;
+  }
+  const int r = static_cast<int>(std::floor(reach));
+  auto seesFrontier = [&](int i, int j, int f) {
+    for (int cj = std::max(0, j - r); cj <= std::min(map.height - 1, j + r); ++cj) {
+      for (int ci = std::max(0, i - r); ci <= std::min(map.width - 1, i + r); ++ci) {
+        if (frontier_of[cj * map.width + ci] == f && std::hypot(ci - i, cj - j) <= reach &&
+            seesBeyond(sight, i, j, ci, cj)) {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
   const geometry::ClearanceMap::Disc disc = known.disc(options.robot_radius);
   // 0 not looked at, 1 drivable, 2 not drivable: each cell's disc test runs once.
   std::vector<std::uint8_t> drivable(map.cells.size(), 0);
@@ -141,14 +198,29 @@ std::optional<FrontierGoal> nearestFrontier(const geometry::ClearanceMap& known,
     if (d == 0) d = known.discFree(centre(map, i, j), disc) ? 1 : 2;
     return d == 1;
   };
-  // The robot's own cell is where it stands even when its disc touches something there.
+  // From the robot's own cell; when its disc (with the margin) touches something there, from
+  // the drivable cells within a radius of it, as far as they are: it gets there first.
   const int start = fj * map.width + fi;
+  std::vector<std::pair<int, double>> sources = {{start, 0.0}};
+  const int around = static_cast<int>(std::ceil(options.robot_radius / map.resolution));
+  if (!isDrivable(fi, fj)) {
+    for (int j = fj - around; j <= fj + around; ++j) {
+      for (int i = fi - around; i <= fi + around; ++i) {
+        if (map.inside(i, j) && std::hypot(i - fi, j - fj) <= around && isDrivable(i, j)) {
+          sources.push_back({j * map.width + i, std::hypot(i - fi, j - fj)});
+        }
+      }
+    }
+  }
   std::optional<FrontierGoal> goal;
   dijkstra(
-      map, {start}, std::numeric_limits<double>::infinity(), isDrivable, [](int, int) {},
+      map, sources, std::numeric_limits<double>::infinity(), isDrivable, [](int, int) {},
       [&](int cell, double d) {
         const int ci = cell % map.width, cj = cell / map.width;
-        if (in_view[cell] < 0 || (cell != start && !isDrivable(ci, cj))) return false;
+        if (in_view[cell] < 0 || (cell != start && !isDrivable(ci, cj)) ||
+            !seesFrontier(ci, cj, in_view[cell])) {
+          return false;
+        }
         goal = FrontierGoal{centre(map, ci, cj), d * map.resolution, in_view[cell]};
         return true;
       });

@@ -13,14 +13,17 @@ const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
     "                       [--world FILE] [--pose X,Y[,THETA]] [--crop X0,Y0,X1,Y1]\n"
     "                       [--config FILE] [--tree FILE] [--lag N] [--predict N]\n"
-    "                       [--csv traj.csv] [--png map.png]\n"
+    "                       [--csv traj.csv] [--png map.png] [--unknown]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
-    "                       [--crop ...] [--plot coverage.png]\n"
+    "                       [--crop ...] [--plot coverage.png] [--unknown]\n"
     "  --behavior  fsm (state machine), bt (behavior tree) or coverage (the cleaning tree,\n"
     "              config/roomba_coverage_tree.xml: planned rows; reports the coverage of the\n"
     "              reachable floor, the time to 90 / 95 / 99 % of it and the bumps)\n"
     "  --compare   fsm, bt and coverage side by side, on the reachable floor; --plot draws them\n"
+    "  --unknown   with coverage: the robot does not know the world; it maps it with its lidar\n"
+    "              (the world's sensors), explores to the nearest frontier until none is left,\n"
+    "              then cleans the map it built; with --compare a fourth column, unknown\n"
     "  --duration  simulated seconds per run (default 600)\n"
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
@@ -83,8 +86,8 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
       o.help = true;
       return o;
     }
-    if (flag == "--compare") {
-      o.compare = true;
+    if (flag == "--compare" || flag == "--unknown") {
+      (flag == "--compare" ? o.compare : o.unknown) = true;
       continue;
     }
     if (i + 1 >= argc) throw std::invalid_argument(flag + " needs a value");
@@ -144,6 +147,14 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
     throw std::invalid_argument("--behavior must be fsm, bt or coverage, got '" + o.behavior + "'");
   }
   if (!(o.duration > 0)) throw std::invalid_argument("--duration must be > 0");
+  if (o.unknown && !o.compare && o.behavior != "coverage") {
+    throw std::invalid_argument(
+        "--unknown is the cleaning tree's: --behavior coverage or --compare");
+  }
+  if (o.unknown && !o.tree.empty()) {
+    throw std::invalid_argument(
+        "--unknown explores and cleans with the package's trees: no --tree");
+  }
   if (!o.tree.empty() && o.behavior != "bt" && o.behavior != "coverage") {
     throw std::invalid_argument("--tree needs --behavior bt or coverage");
   }

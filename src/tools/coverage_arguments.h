@@ -27,7 +27,10 @@ struct CoverageArguments {
   int predict = -1;  ///< --predict: ticks the cleaning tree drives the pose forward; -1: lag
   int predictTicks() const { return predict < 0 ? lag : predict; }
   bool compare = false;  ///< --compare: fsm, bt and coverage side by side
-  bool help = false;     ///< -h or --help: print coverageUsage() and nothing else
+  /// --unknown: the cleaning tree starts with an empty map and its lidar (behaviour "unknown",
+  /// explore_clean.h); with --compare a fourth column.
+  bool unknown = false;
+  bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
 };
 
 /// The usage message, one line per flag.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "explore_clean.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
@@ -16,12 +17,17 @@
 namespace roomba_rrt::tools {
 namespace {
 
-/// What drives the robot: the lab's FSM or BT (bumper in), or the cleaning tree (bumper and pose
-/// in).
+/// What drives the robot: the lab's FSM or BT (bumper in), the cleaning tree (bumper and pose
+/// in), or the cleaning of an unknown world (bumper, pose and the lidar's scans in).
 class Driver {
  public:
   Driver(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
-         const Cleaning* cleaning) {
+         const world::World& world, const Cleaning* cleaning) {
+    if (o.behavior == "unknown") {
+      explore_ =
+          std::make_unique<ExploreClean>(world, params, seed, o.predictTicks() / params.rate);
+      return;
+    }
     if (o.behavior != "coverage") {
       lab_ = makeBehavior(o, params, seed);
       return;
@@ -33,15 +39,24 @@ class Driver {
         config, seed,
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
-  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
+  bool sees() const { return explore_ != nullptr; }
+  robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
+                       const std::vector<sensors::Scan>& scans, const robot::Pose2D& scan_pose) {
+    if (explore_) return explore_->tick(time, bumper, pose, scans, scan_pose);
     return lab_ ? lab_->tick(bumper) : tree_->tick(bumper, pose);
   }
-  const std::string& stateName() const { return lab_ ? lab_->stateName() : tree_->stateName(); }
-  behavior::RoombaState state() const { return lab_ ? lab_->state() : tree_->state(); }
+  const std::string& stateName() const {
+    return explore_ ? explore_->stateName() : lab_ ? lab_->stateName() : tree_->stateName();
+  }
+  behavior::RoombaState state() const {
+    return explore_ ? explore_->state() : lab_ ? lab_->state() : tree_->state();
+  }
+  double exploredAt() const { return explore_ ? explore_->exploredAt() : -1; }
 
  private:
   std::unique_ptr<behavior::RoombaBehavior> lab_;
   std::unique_ptr<navigation::NavBt> tree_;
+  std::unique_ptr<ExploreClean> explore_;
 };
 
 /// Fraction of the reachable floor the robot has swept.
@@ -88,7 +103,12 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
              const Cleaning* cleaning) {
   simulator.reset();
   const double step = simulator.world().step;
-  Driver behavior(o, params, seed, cleaning);
+  Driver behavior(o, params, seed, simulator.world(), cleaning);
+  // The lidar's scans, for a driver that maps (none is taken for the others: same runs as
+  // before sensors existed).
+  std::unique_ptr<sensors::Scanner> scanner;
+  if (behavior.sees()) scanner = std::make_unique<sensors::Scanner>(simulator.world());
+  const std::vector<sensors::Scan> no_scans;
   const long steps = std::lround(o.duration / step);
   Run run;
   std::size_t next_checkpoint = 0, next_ideal = 0;
@@ -108,7 +128,9 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
     const robot::Pose2D pose = simulator.pose();  // written and drawn: where the robot is
     seen.emplace_back(bumper, pose);
     if (seen.size() > static_cast<std::size_t>(o.lag) + 1) seen.pop_front();
-    const robot::Velocity cmd = behavior.tick(seen.front().first, seen.front().second);
+    const std::vector<sensors::Scan>& scans = scanner ? scanner->scan(k * step, {pose}) : no_scans;
+    const robot::Velocity cmd =
+        behavior.tick(k * step, seen.front().first, seen.front().second, scans, pose);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;
@@ -139,6 +161,7 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
   }
   run.final_coverage = simulator.coverage();
   if (cleaning) run.reachable_final = reachableCoverage(simulator, *cleaning);
+  run.explored_at = behavior.exploredAt() >= 0 ? behavior.exploredAt() : std::nan("");
   return run;
 }
 

@@ -75,6 +75,8 @@ struct Run {
   std::vector<double> curve;         ///< at 0, kCurveInterval, 2 kCurveInterval, … ≤ duration
   double reachable_final = 0;
   int bumps = 0;  ///< times the bumper was pressed (a press lasting several steps counts once)
+  /// --unknown: simulated s when exploring ended and cleaning began (NaN: never, or not asked).
+  double explored_at = 0;
 };
 
 /// One run of one robot from the simulator's reset state; writes the CSV when `csv` is given and

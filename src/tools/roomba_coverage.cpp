@@ -231,6 +231,7 @@ struct ReachableStatistics {
   std::string behavior;
   std::vector<std::vector<double>> at, at_ideal, time_to;
   std::vector<double> finals, bumps;
+  std::vector<double> explored;  ///< unknown: when exploring ended (s)
   std::vector<std::vector<double>> curves;
 };
 
@@ -275,6 +276,7 @@ int runReachable(const CoverageArguments& options, const world::World& world,
       }
       column.finals.push_back(result.reachable_final);
       column.bumps.push_back(result.bumps);
+      if (behavior == "unknown") column.explored.push_back(result.explored_at);
       column.curves.push_back(result.curve);
       progress.update(static_cast<int>(columns.size()) * o.seeds + i + 1);
     }
@@ -301,9 +303,16 @@ int runReachable(const CoverageArguments& options, const world::World& world,
   const std::string seeds =
       n > 1 ? "seeds " + std::to_string(options.seed) + "–" + std::to_string(options.seed + n - 1)
             : "seed " + std::to_string(options.seed);
-  std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n",
-              options.compare ? "fsm, bt and coverage" : behaviors.front().c_str(), seeds.c_str(),
-              options.duration, worldLabel(options, world).c_str());
+  std::string names;
+  for (std::size_t b = 0; b < behaviors.size(); ++b) {
+    names += (b == 0 ? "" : b + 1 == behaviors.size() ? " and " : ", ") + behaviors[b];
+  }
+  std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n", names.c_str(),
+              seeds.c_str(), options.duration, worldLabel(options, world).c_str());
+  if (options.unknown) {
+    std::printf(
+        "  unknown: the robot starts with an empty map and its lidar, explores, then cleans\n");
+  }
   std::printf(
       "  reachable floor %.2f m² of %.2f m² of floor (the coverage planner's, from the "
       "start); ideal time %.1f s\n",
@@ -351,6 +360,11 @@ int runReachable(const CoverageArguments& options, const world::World& world,
     row(label, [t](const ReachableStatistics& s) { return secondsMeanStd(s.time_to[t]); });
   }
   row("bumps per run", [](const ReachableStatistics& s) { return countMeanStd(s.bumps); });
+  if (options.unknown) {
+    row("explored by [s]", [](const ReachableStatistics& s) {
+      return s.explored.empty() ? std::string("—") : secondsMeanStd(s.explored);
+    });
+  }
   std::printf("  simulated %zu × %d × %.0f s in %.3f s of wall time\n", behaviors.size(), n,
               options.duration, seconds);
   if (!options.csv.empty()) std::printf("  trajectory: %s\n", options.csv.c_str());
@@ -384,8 +398,13 @@ int run(int argc, char** argv) {
   const world::World world = loadToolWorld(o.world, o.pose, o.crop);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
+  if (o.compare && o.unknown) {
+    return runReachable(o, world, params, {"fsm", "bt", "coverage", "unknown"});
+  }
   if (o.compare) return runReachable(o, world, params, {"fsm", "bt", "coverage"});
-  if (o.behavior == "coverage") return runReachable(o, world, params, {"coverage"});
+  if (o.behavior == "coverage") {
+    return runReachable(o, world, params, {o.unknown ? "unknown" : "coverage"});
+  }
   if (!o.robots.empty() || world.namedRobots()) return runFleets(o, world, params);
   if (!o.plot.empty()) throw std::invalid_argument("--plot needs --robots");
   return runOne(o, world, params);

@@ -10,9 +10,11 @@
 //   - a frontier is an 8-connected piece of frontier cells; pieces smaller than
 //     FrontierOptions::min_cells are the gaps between a lidar's rays, not floor to explore;
 //   - the robot reaches a frontier when its centre is within `view_distance` of one of its cells,
-//     measured over free floor (not through a wall: over a few cells that stands for the line of
-//     sight), on a cell where its disc keeps clear of every cell that is not known free (unknown
-//     counts as a wall until seen: the robot never plans through what it has not seen);
+//     measured over free floor (not through a wall), with a straight line of free cells through
+//     one of them to an unknown cell beside it (it sees past the frontier, not only its way
+//     round a corner or a corner's edge), on a cell where its disc
+//     keeps clear of every cell that is not known free (unknown counts as a wall until seen: the
+//     robot never plans through what it has not seen);
 //   - the nearest frontier is the nearest by the length of such a path over the cells' centres
 //     (8-connected, Dijkstra), not by a straight line through walls.
 // The path is only the measure of "nearest": the robot gets there with the planner, whose checks
@@ -55,6 +57,15 @@ std::vector<Frontier> findFrontiers(const geometry::OccupancyGrid& map, int min_
 /// none is reachable: the exploration is done. `known` is the robot's map inflated with unknown
 /// cells as walls (ClearanceMap(grid, /*unknown_is_free=*/false)).
 std::optional<FrontierGoal> nearestFrontier(const geometry::ClearanceMap& known,
+                                            const geometry::Point2& from,
+                                            const std::vector<Frontier>& frontiers,
+                                            const FrontierOptions& options);
+/// The same with "in view" (the way over free floor, and a straight line of free cells to one
+/// of the frontier's cells) judged on `sight`, the map the frontiers were found on (the same
+/// cells as known's grid), while the way there is judged on `known`: a robot that plans on a
+/// stricter map than it sees.
+std::optional<FrontierGoal> nearestFrontier(const geometry::ClearanceMap& known,
+                                            const geometry::OccupancyGrid& sight,
                                             const geometry::Point2& from,
                                             const std::vector<Frontier>& frontiers,
                                             const FrontierOptions& options);

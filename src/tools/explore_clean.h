@@ -1,0 +1,124 @@
+// roomba_coverage --unknown: cleaning a home the robot has never seen, in one process. ROS-free.
+//
+// The robot starts with an empty map and its lidar:
+//   1. mapping: every scan of its range sensors and every bump goes into a log-odds map
+//      (mapping::OccupancyMapper), as roomba_mapper builds /map over ROS;
+//   2. exploring: it drives to the nearest frontier it can reach (exploration::nearestFrontier:
+//      unknown cells are walls until seen) with the navigation tree (config/roomba_nav_tree.xml)
+//      planning on the map as built so far; it looks again every kReplanPeriod and turns to a
+//      nearer frontier when one appears; a frontier it arrived at but still sees, or could not
+//      reach, is given up (with every frontier cell it could see from there);
+//   3. cleaning: once no frontier it can reach is left, the cleaning tree (config/roomba_coverage_
+//      tree.xml) plans its rows on the map it built (unknown and occupied cells as walls) and
+//      drives them, as on a known map.
+// Exploring first and cleaning after keeps the cleaning's plan whole (rows across each room, no
+// row cut where the map ended when it was planned); the lidar sees a room from its doorway, so
+// exploring is short beside cleaning (the benchmark rows measure both).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "coverage_run.h"
+#include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/exploration/frontiers.h"
+#include "roomba_rrt/mapping/occupancy_mapper.h"
+#include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/sensors/scanner.h"
+#include "roomba_rrt/world/world.h"
+
+namespace roomba_rrt::tools {
+
+class ExploreClean {
+ public:
+  /// For the first robot of `world`, whose sensors it reads (util::InvalidInput when it has no
+  /// range sensor); `world`'s walls, furniture and map are never looked at.
+  ExploreClean(const world::World& world, const behavior::RoombaParams& params, std::uint32_t seed,
+               double pose_latency);
+  ~ExploreClean();
+
+  /// One tick at simulated `time`: the scans taken at this step (from the robot at
+  /// `scan_pose`) and the bumper go into the map, then the phase's tree decides the command from
+  /// `bumper` and `pose`.
+  robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
+                       const std::vector<sensors::Scan>& scans, const robot::Pose2D& scan_pose);
+
+  const std::string& stateName() const;
+  behavior::RoombaState state() const;
+  bool cleaning() const { return clean_ != nullptr; }
+  /// Simulated s when exploring ended (the cleaning began); negative while exploring.
+  double exploredAt() const { return explored_at_; }
+  const mapping::OccupancyMapper& mapper() const { return mapper_; }
+
+  static constexpr double kReplanPeriod = 1.0;  ///< s between two looks for a nearer frontier
+  /// m: a frontier is in view this far over free floor (FrontierOptions::view_distance).
+  static constexpr double kViewDistance = 1.0;
+  /// m beyond the robot's radius its goals keep from what is not clearly free (the planner's
+  /// margin and then some: a goal it cannot plan to is a goal given up).
+  static constexpr double kGoalMargin = 0.03;
+  /// m beyond the view distance round a given-up goal where frontier cells are given up with it
+  /// (every cell it could see from there: each give-up takes at least one cell away).
+  static constexpr double kGiveUpMargin = 0.05;
+  static constexpr double kGoalTimeout = 60.0;  ///< s to reach a frontier before giving it up
+  static constexpr double kSameGoal = 0.3;      ///< m: a goal this close to the current is kept
+  /// s the robot stands and looks with no frontier in reach before it starts cleaning.
+  static constexpr double kConfirmDone = 1.0;
+  /// A cell the robot plans over as floor has log-odds below this (p < 0.27: more rays passed
+  /// it than ended in it, by three free observations).
+  static constexpr double kClearlyFree = -1.0;
+  /// m: two neighbouring returns this close are taken as one obstacle's (hits_).
+  static constexpr double kChord = 0.1;
+  /// m beyond a return where it counts as hitting (inside the obstacle, not on its edge).
+  static constexpr double kInside = 1e-3;
+
+ private:
+  /// Looks for the nearest frontier from `pose` and drives there (`arrived`: the previous goal
+  /// was reached); starts cleaning when none is left.
+  void nextGoal(double time, const robot::Pose2D& pose, bool arrived);
+  /// The mapper's grid with the cells returns ended in (hits_) occupied; `strict`: also free only
+  /// where clearly free (kClearlyFree), and free where the robot stood (footprints_): the map
+  /// the robot plans on. Not strict: the map its frontiers are found on.
+  geometry::OccupancyGrid builtGrid(bool strict) const;
+  /// The frontiers of the map without those round given-up goals.
+  std::vector<exploration::Frontier> openFrontiers(const geometry::OccupancyGrid& grid) const;
+  /// `grid` as a world (unknown and occupied cells as walls) with the robot at `pose`.
+  world::World builtWorld(std::shared_ptr<const geometry::OccupancyGrid> grid,
+                          const robot::Pose2D& pose) const;
+  void startCleaning(double time, const robot::Pose2D& pose);
+  /// Remembers the cells the scan's returns end in (hits_).
+  void markHits(const robot::Pose2D& sensor, const sensors::RangeSensorSpec& spec,
+                const std::vector<float>& ranges);
+  static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
+    return (i << 32) ^ (j & 0xffffffff);
+  }
+
+  world::RobotSpec robot_;
+  double coverage_cell_size_;
+  behavior::RoombaParams params_;
+  std::uint32_t seed_;
+  double pose_latency_;
+  mapping::OccupancyMapper mapper_;
+  /// The mapper's first origin: its lattice's cells stay where they are as the map grows.
+  geometry::Point2 lattice_;
+  /// Every cell a return ended in (cellKey of its column and row from lattice_): the planning
+  /// map holds them occupied (builtGrid()).
+  std::unordered_set<std::int64_t> hits_;
+  exploration::FrontierOptions frontier_options_;
+
+  std::unique_ptr<navigation::NavBt> explore_;  ///< driving to the current frontier goal
+  geometry::Point2 goal_;
+  double goal_since_ = 0, last_look_ = -1e9;
+  double none_since_ = -1;  ///< s since no frontier was in reach; negative: one is
+  std::vector<geometry::Point2> given_up_;
+  std::vector<geometry::Point2> footprints_;  ///< where the robot stood when it looked
+
+  std::unique_ptr<Cleaning> cleaning_;
+  std::unique_ptr<navigation::NavBt> clean_;
+  double explored_at_ = -1;
+  robot::Velocity stop_;
+};
+
+}  // namespace roomba_rrt::tools

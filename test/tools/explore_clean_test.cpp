@@ -1,0 +1,64 @@
+// Cleaning a world the robot does not know (roomba_coverage --unknown), in process: the simulator,
+// the lidar, the mapper, exploring and cleaning, as a user runs it.
+#include "explore_clean.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "coverage_run.h"
+#include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/world/world_file.h"
+
+namespace roomba_rrt::tools {
+namespace {
+
+struct Outcome {
+  Run run;
+  double ideal_time = 0;
+};
+
+Outcome cleanUnknown(const std::string& world_file, double duration) {
+  const world::World world = world::loadWorld(world_file);
+  behavior::RoombaParams params =
+      behavior::loadRoombaParams(ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml");
+  params.rate = 1.0 / world.step;
+  CoverageArguments o;
+  o.behavior = "unknown";
+  o.duration = duration;
+  const Cleaning cleaning(world, params);  // the true reachable floor, to measure against
+  sim::Simulator simulator(world);
+  return {simulate(o, params, 1, nullptr, false, simulator, &cleaning), cleaning.ideal_time};
+}
+
+TEST(ExploreClean, cleans_a_furnished_room_it_has_never_seen_without_bumping) {
+  const Outcome out = cleanUnknown(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml", 500);
+  EXPECT_TRUE(std::isfinite(out.run.explored_at)) << "it never finished exploring";
+  EXPECT_LT(out.run.explored_at, out.ideal_time) << "exploring took longer than cleaning should";
+  EXPECT_GE(out.run.reachable_final, 0.98);
+  EXPECT_LE(out.run.bumps, 2);
+}
+
+TEST(ExploreClean, finds_the_narrow_door_and_cleans_the_room_behind_it) {
+  const Outcome out = cleanUnknown(ROOMBA_RRT_TEST_DIR "/tools/worlds/two_rooms.yaml", 700);
+  EXPECT_TRUE(std::isfinite(out.run.explored_at)) << "it never finished exploring";
+  // Half the floor lies behind the door: without it no more than about 50 %.
+  EXPECT_GE(out.run.reachable_final, 0.95);
+  EXPECT_LE(out.run.bumps, 2);
+}
+
+TEST(ExploreClean, a_robot_without_a_range_sensor_is_refused_naming_the_field) {
+  world::World world = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  world.robots.front().sensors.clear();
+  try {
+    ExploreClean explore(world, behavior::RoombaParams{}, 1, 0);
+    FAIL() << "accepted a robot without sensors";
+  } catch (const util::InvalidInput& e) {
+    EXPECT_EQ(e.field(), "sensors");
+  }
+}
+
+}  // namespace
+}  // namespace roomba_rrt::tools
