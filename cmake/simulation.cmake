@@ -89,8 +89,10 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(sim_map_test roomba_geometry)
     target_compile_definitions(sim_map_test PRIVATE
       ROOMBA_RRT_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
-    add_dependencies(sim_map_test roomba_fsm)
+    add_dependencies(sim_map_test roomba_fsm roomba_mapper)
   endif()
+  # ~publish_map false: the true map stays the simulator's; /map is roomba_mapper's.
+  add_rostest(test/sim/sim_map_hidden.test DEPENDENCIES sim_map_test)
   # Range sensors: the LDS's LaserScan and tf, one robot at 10x and two named robots at 3x.
   roomba_sim_rostest(sim_scan_test test/sim/sim_scan.test test/sim/sim_scan_test.cpp)
   add_rostest(test/sim/sim_scan_two_robots.test DEPENDENCIES sim_scan_test)

@@ -47,7 +47,12 @@ int main(int argc, char** argv) {
              file.simulator.real_time_factor);
   }
   roomba_rrt::nodes::MasterWatch master_watch;
-  roomba_rrt::sim_node::RoombaSim node(world, file.simulator, use_sim_time);
+  // ~publish_map false: the robot does not get the true map (it maps the world: roomba_mapper).
+  const bool publish_map = params.get<bool>("publish_map", true);
+  if (!publish_map && world.room.map) {
+    ROS_INFO("roomba_sim: ~publish_map false: the world's map is not published on /map");
+  }
+  roomba_rrt::sim_node::RoombaSim node(world, file.simulator, use_sim_time, publish_map);
   for (const std::string& name : roomba_rrt::nodes::parameterNames<roomba_rrt::RoombaSimConfig>()) {
     params.expect(name);  // dynamic_reconfigure's (cfg/RoombaSim.cfg)
   }

@@ -121,7 +121,8 @@ world::WorldFile loadWorldParameters(nodes::NodeParams& params) {
 
 class RoombaSimNode {
  public:
-  RoombaSimNode(const World& world, const world::SimulatorSettings& settings, bool use_sim_time)
+  RoombaSimNode(const World& world, const world::SimulatorSettings& settings, bool use_sim_time,
+                bool publish_map)
       : pnh_("~"),
         sim_(world),
         scanner_(world),
@@ -154,7 +155,7 @@ class RoombaSimNode {
       trails_.push_back(sim_node::makeTrail(i));
     }
     reset_srv_ = pnh_.advertiseService("reset", &RoombaSimNode::onReset, this);
-    if (sim_.world().room.map) publishMap(*sim_.world().room.map);
+    if (sim_.world().room.map && publish_map) publishMap(*sim_.world().room.map);
     publishStaticTransforms();
     world_markers_ = sim_node::worldMarkers(sim_.world());
     startReconfigure();
@@ -385,8 +386,8 @@ class RoombaSimNode {
 };
 
 RoombaSim::RoombaSim(const World& world, const world::SimulatorSettings& settings,
-                     bool use_sim_time)
-    : node_(std::make_unique<RoombaSimNode>(world, settings, use_sim_time)) {}
+                     bool use_sim_time, bool publish_map)
+    : node_(std::make_unique<RoombaSimNode>(world, settings, use_sim_time, publish_map)) {}
 RoombaSim::~RoombaSim() = default;
 void RoombaSim::run() { node_->run(); }
 

@@ -23,7 +23,10 @@ class RoombaSimNode;
 /// run() steps the simulation until ROS shuts down.
 class RoombaSim {
  public:
-  RoombaSim(const world::World& world, const world::SimulatorSettings& settings, bool use_sim_time);
+  /// `publish_map` false: the world's map stays the simulator's (~publish_map: the robot maps
+  /// the world itself, roomba_mapper publishes /map).
+  RoombaSim(const world::World& world, const world::SimulatorSettings& settings, bool use_sim_time,
+            bool publish_map = true);
   ~RoombaSim();
   void run();
 

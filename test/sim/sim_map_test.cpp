@@ -67,6 +67,37 @@ TEST(SimMap, map_is_the_file_cell_by_cell_and_the_robot_never_ends_on_a_wall) {
   EXPECT_EQ(on_walls, 0) << "of " << odoms << " /odom";
 }
 
+/// sim_map_hidden.test: roomba_sim with ~publish_map false beside roomba_mapper. The map on /map
+/// is the mapper's alone: roomba_sim does not publish it, and what arrives is not the file.
+TEST(SimMapHidden, the_true_map_stays_the_simulators_and_map_is_the_mappers) {
+  const roomba_rrt::geometry::MapFile file =
+      roomba_rrt::geometry::loadMap(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml");
+  ros::NodeHandle nh;
+  nav_msgs::OccupancyGrid map;
+  bool have_map = false;
+  auto map_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "/map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) {
+        map = *m;
+        have_map = true;
+      });
+  ASSERT_TRUE(waitUntil([&] { return have_map; }, 30)) << "the mapper published no /map";
+  // Who publishes /map, from the master.
+  XmlRpc::XmlRpcValue request, response, payload;
+  request[0] = ros::this_node::getName();
+  ASSERT_TRUE(ros::master::execute("getSystemState", request, response, payload, true));
+  std::vector<std::string> publishers;
+  for (int t = 0; t < payload[0].size(); ++t) {
+    if (static_cast<std::string>(payload[0][t][0]) != "/map") continue;
+    for (int n = 0; n < payload[0][t][1].size(); ++n) publishers.push_back(payload[0][t][1][n]);
+  }
+  EXPECT_EQ(publishers, std::vector<std::string>{"/roomba_mapper"});
+  long unknown = 0;
+  for (const std::int8_t cell : map.data) unknown += cell == OccupancyGrid::kUnknown;
+  EXPECT_GT(unknown, 0) << "a map with nothing unknown: the file's, not one the robot builds";
+  EXPECT_NE(map.info.width * map.info.height,
+            static_cast<unsigned>(file.grid.width * file.grid.height));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
