@@ -173,6 +173,8 @@ robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2
                                                           : "the navigation tree failed";
     }
   }
+  idle_ = context_.outcome != GoalOutcome::kActive && status != bt::Status::kRunning &&
+          context_.cmd.v == 0 && context_.cmd.w == 0;
   context_.previous_cmd = context_.cmd;
   predictor_.sent(context_.cmd);
   return context_.cmd;

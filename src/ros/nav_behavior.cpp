@@ -123,11 +123,10 @@ class NavBehavior final : public behavior::RoombaBehavior {
       return {};
     }
     const robot::Velocity cmd = nav_.tick(bumper_, pose);
-    // ~state names the active leaf; "Idle" when no goal runs and the robot stands (the tree
-    // keeps the last leaf's name, e.g. FollowPath at the goal; cleaning leaves still show).
-    const bool idle =
-        nav_.outcome() != navigation::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
-    context_.state_name = idle ? &kIdle : &nav_.stateName();
+    // ~state names the active leaf; "Idle" once the tree is done and the robot stands (the tree
+    // keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and the
+    // resume (NavBt::idle).
+    context_.state_name = nav_.idle() ? &kIdle : &nav_.stateName();
     publishPlan();
     publishCoveragePath();
     report(pose);

@@ -549,6 +549,10 @@ struct CleaningLoop {
       pressed = bumper.pressed;
       const robot::Velocity cmd = nav.tick(bumper, sim.pose());
       moving = cmd.v != 0 || cmd.w != 0;
+      if (nav.idle()) {
+        const CoverageProgress* progress = findProgress(nav.tree().blackboard());
+        idle_before_done += progress == nullptr || !progress->done();
+      }
       sim.move(cmd);
     }
   }
@@ -564,6 +568,7 @@ struct CleaningLoop {
   sim::Simulator sim;
   NavBt nav;
   int bumps = 0;
+  int idle_before_done = 0;  ///< ticks NavBt::idle() (roomba_bt's ~state "Idle") said done early
   bool pressed = false, moving = false;
 };
 
@@ -595,6 +600,23 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   EXPECT_LE(progress->bumps, 3 * (progress->skipped_rows + 1));
   EXPECT_EQ(loop.bumps, progress->bumps);  // every bump seen by FollowCoverage, none elsewhere
   EXPECT_GT(loop.sim.coverage(), 0.8);
+}
+
+TEST(CoverageTree, state_reads_idle_only_once_the_floor_is_done_not_after_each_back_up) {
+  // A client watching ~state stops the robot at "Idle". Each back-up ends with a tick that
+  // returns RUNNING and commands nothing (the resume is planned, the row starts at the next
+  // tick): that tick must not read as idle.
+  CleaningLoop loop("roomba_world.yaml");
+  world::World with_chair = loop.world;
+  with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
+  loop.sim = sim::Simulator(with_chair);
+  loop.run(600);
+  const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  ASSERT_GE(progress->bumps, 1);  // backed up at least once
+  EXPECT_TRUE(progress->done());
+  EXPECT_EQ(loop.idle_before_done, 0);
+  EXPECT_TRUE(loop.nav.idle());
 }
 
 TEST(CoverageTree, placed_against_a_wall_it_cleans_instead_of_backing_up_along_it) {

@@ -56,6 +56,11 @@ class NavBt {
   const Path* path() const { return board_->get<Path>("path"); }
   /// The active leaf's name (for ~state), "Idle" before any leaf ran.
   const std::string& stateName() const { return *context_.state_name; }
+  /// Whether the robot is done and stands (~state then reads "Idle"): no goal is active, the
+  /// tree's last tick did not return RUNNING and its command was zero. A tick that returns
+  /// RUNNING with a zero command (a recovery just ended, the next try starts at the next tick;
+  /// a follower holding still) is not idle: the tree has more to do.
+  bool idle() const { return idle_; }
   /// The lab's motion the last command stands for (the cleaning and recovery leaves set it).
   behavior::RoombaState state() const { return context_.state; }
   bt::Tree& tree() { return tree_; }
@@ -71,6 +76,7 @@ class NavBt {
   bt::Blackboard::Entry<robot::Pose2D>* pose_;
   PosePredictor predictor_;
   bt::Tree tree_;
+  bool idle_ = true;
 };
 
 /// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.
