@@ -117,6 +117,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
       p.position.y = t.transform.translation.y;
       p.orientation = t.transform.rotation;
       pose = toPose2D(p);
+      // How late the commands land (the cleaning slows down when they do): the tick's time and
+      // the stamp of the pose it acts on, both the simulator's clock.
+      nav_.observeTiming(ros::Time::now().toSec(), t.header.stamp.toSec());
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5.0, "no robot pose (%s -> %s): %s; standing still",
                         settings_.global_frame.c_str(), settings_.robot_frame.c_str(), e.what());

@@ -33,8 +33,12 @@ class Driver {
         config, seed,
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
-  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
-    return lab_ ? lab_->tick(bumper) : tree_->tick(bumper, pose);
+  /// The cleaning tree is told the times as roomba_bt tells it: the tick's and the pose's.
+  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose, double now,
+                       double pose_stamp) {
+    if (lab_) return lab_->tick(bumper);
+    tree_->observeTiming(now, pose_stamp);
+    return tree_->tick(bumper, pose);
   }
   const std::string& stateName() const { return lab_ ? lab_->stateName() : tree_->stateName(); }
   behavior::RoombaState state() const { return lab_ ? lab_->state() : tree_->state(); }
@@ -108,7 +112,8 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
     const robot::Pose2D pose = simulator.pose();  // written and drawn: where the robot is
     seen.emplace_back(bumper, pose);
     if (seen.size() > static_cast<std::size_t>(o.lag) + 1) seen.pop_front();
-    const robot::Velocity cmd = behavior.tick(seen.front().first, seen.front().second);
+    const robot::Velocity cmd = behavior.tick(seen.front().first, seen.front().second, k * step,
+                                              (k - static_cast<long>(seen.size()) + 1) * step);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;
