@@ -249,6 +249,7 @@ class FollowCoverage final : public bt::LeafNode {
           return Status::kFailure;
       }
     }
+    progress.swept_fraction = planner.sweptFraction(progress.swept);
     return Status::kSuccess;
   }
 
@@ -397,6 +398,9 @@ class ResumeCoverage final : public bt::LeafNode {
     if (++progress.tries >= skip_after_) {
       // Give up on the row being driven, or the one the transit led to: resume after it.
       while (from < legs.size() && legs[from].kind != Leg::Kind::kRow) ++from;
+      if (from < legs.size() && !legs[from].points.empty()) {
+        progress.skipped.emplace_back(legs[from].points.front(), legs[from].points.back());
+      }
       from = std::min(from + 1, legs.size());
       ++progress.skipped_rows;
       progress.tries = 0;

@@ -601,6 +601,18 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   EXPECT_LE(progress->bumps, 3 * (progress->skipped_rows + 1));
   EXPECT_EQ(loop.bumps, progress->bumps);  // every bump seen by FollowCoverage, none elsewhere
   EXPECT_GT(loop.sim.coverage(), 0.8);
+  // What was given up is reported (roomba_bt's ~coverage_report): each row's ends (rows run
+  // along x), one of them through the chair, and the coverage the robot knows it reached, near
+  // the simulator's.
+  ASSERT_EQ(progress->skipped.size(), static_cast<std::size_t>(progress->skipped_rows));
+  bool through_chair = false;
+  for (const auto& [from, to] : progress->skipped) {
+    EXPECT_NEAR(to.y, from.y, 1e-9);
+    through_chair = through_chair || (std::abs(from.y - 3.0) < 0.2 + loop.world.robot().radius &&
+                                      std::min(from.x, to.x) < 1.5 && std::max(from.x, to.x) > 1.5);
+  }
+  EXPECT_TRUE(through_chair);
+  EXPECT_NEAR(progress->swept_fraction, loop.sim.coverage(), 0.05);
 }
 
 /// The cleaning tree seeing pose and bumper `lag` steps late, as roomba_bt does when its ticks
