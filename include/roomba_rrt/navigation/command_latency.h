@@ -15,8 +15,12 @@ namespace roomba_rrt::navigation {
 /// late now and then counts as late until it has been on time for a while.
 class CommandLatency {
  public:
-  static constexpr double kReleaseTime = 5.0;  ///< s of robot time for the estimate to fall by 1/e
-  static constexpr double kMaxSample = 5.0;    ///< s: longer gaps (a pause) count as this
+  /// s of robot time for the estimate to fall by 1/e: from kMaxSample to on time in 4 s.
+  static constexpr double kReleaseTime = 2.0;
+  /// s: longer samples count as this. A pause (roomba_bt stands still while the bumper is
+  /// silent) is no longer a command held: at 0.5 s (30 ticks at 60 Hz) the speeds are at their
+  /// least already (LatencySpeedPolicy::kMinScale).
+  static constexpr double kMaxSample = 0.5;
 
   /// util::InvalidInput naming "rate" unless > 0.
   explicit CommandLatency(double rate);
