@@ -8,6 +8,7 @@ add_library(roomba_nav_core
   src/navigation/guarded_follower.cpp
   src/navigation/motion_guard.cpp
   src/navigation/pose_predictor.cpp
+  src/navigation/command_latency.cpp
   src/navigation/path_checker.cpp
   src/navigation/path_planner.cpp
   src/navigation/nav_leaves.cpp
@@ -42,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(nav_core_test test/navigation/path_follower_test.cpp
     test/navigation/nav_bt_test.cpp test/navigation/nav_leaves_test.cpp
     test/navigation/pose_predictor_test.cpp test/navigation/guarded_follower_test.cpp
+    test/navigation/command_latency_test.cpp
     LINK roomba_nav_core roomba_sim_core)
   # roomba_nav_eval's run loop: goals drawn, outcomes counted, reproducible.
   roomba_rrt_gtest(nav_eval_run_test test/tools/nav_eval_run_test.cpp LINK roomba_nav_eval_run)

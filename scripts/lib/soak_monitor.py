@@ -281,20 +281,106 @@ def planner(args, procs):
     return ok
 
 
+def clean(args, procs):
+    """One cleaning run (roomba_bt with the cleaning tree): waits until ~coverage_path is empty
+    after the plan was published (the floor done), ~state reads Idle and ~coverage_report came,
+    then reads the simulator's ~coverage. Passes when it reaches --min-coverage and ~state never
+    read Idle before the end (an Idle followed by another state once the plan was out)."""
+    from nav_msgs.msg import Path
+    from roomba_rrt.msg import Bumper, CoverageReport
+    from std_msgs.msg import Float32, String
+    s = {"planned": False, "done": None, "coverage": None, "presses": 0, "pressed": False,
+         "early_idle": 0, "state": "", "active": False, "report": None}
+    lock = threading.Lock()
+
+    def on_path(msg):
+        with lock:
+            if msg.poses:
+                s["planned"] = True
+            elif s["planned"] and s["done"] is None:
+                s["done"] = rospy.get_time()
+
+    def on_state(msg):
+        # An Idle the robot drives on from was early (the topics ~state and ~coverage_path are
+        # separate connections: the last Idle may come in before the empty path).
+        with lock:
+            if s["state"] == "Idle" and msg.data != "Idle" and s["active"]:
+                s["early_idle"] += 1
+            s["active"] = s["active"] or msg.data != "Idle"
+            s["state"] = msg.data
+
+    def on_coverage(msg):
+        with lock:
+            s["coverage"] = msg.data
+
+    def on_bumper(msg):
+        with lock:
+            if msg.pressed and not s["pressed"]:
+                s["presses"] += 1
+            s["pressed"] = msg.pressed
+
+    def on_report(msg):
+        where = ", ".join("(%.2f, %.2f)-(%.2f, %.2f)" % (a.x, a.y, b.x, b.y)
+                          for a, b in zip(msg.skipped_from, msg.skipped_to))
+        with lock:
+            s["report"] = ("swept %.1f %%, %d bumps, %d rows given up%s, latency up to %.3f s, "
+                           "speeds down to %.0f %%"
+                           % (100.0 * msg.coverage, msg.bumps, msg.skipped_rows,
+                              (" " + where) if where else "", msg.latency,
+                              100.0 * msg.slowest_speed_scale))
+
+    rospy.Subscriber("/roomba_bt/coverage_path", Path, on_path, queue_size=100)
+    rospy.Subscriber("/roomba_bt/state", String, on_state, queue_size=1000)
+    rospy.Subscriber("/roomba_sim/coverage", Float32, on_coverage, queue_size=1)
+    rospy.Subscriber("/bumper", Bumper, on_bumper, queue_size=1000, tcp_nodelay=True)
+    rospy.Subscriber("/roomba_bt/coverage_report", CoverageReport, on_report, queue_size=1)
+    wall0 = time.time()
+    finished = False
+    while time.time() - wall0 < args.wall_limit and not procs.dead():
+        with lock:
+            if s["done"] is not None and s["state"] == "Idle" and s["report"] is not None:
+                finished = True
+                break
+        time.sleep(0.2)
+    if finished:  # the simulator's next ~coverage (2 Hz of wall time) counts the last rows
+        with lock:
+            s["coverage"] = None
+        deadline = time.time() + 5.0
+        while time.time() < deadline:
+            with lock:
+                if s["coverage"] is not None:
+                    break
+            time.sleep(0.1)
+    wall = time.time() - wall0
+    with lock:
+        coverage = s["coverage"] if s["coverage"] is not None else 0.0
+        done, presses, early, report = s["done"], s["presses"], s["early_idle"], s["report"]
+    dead = procs.dead()
+    ok = finished and coverage >= args.min_coverage and early == 0 and not dead
+    print("soak %s: coverage %.1f %% at %s s robot time, %.0f s wall, bumps %d, Idle before the "
+          "end %d, crashes %d%s: %s"
+          % (args.name, 100.0 * coverage, "%.0f" % done if done is not None else "never",
+             wall, presses, early, len(dead),
+             ("; report: " + report) if report else "",
+             "PASS" if ok else "FAIL"))
+    return ok
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["drive", "planner", "navigate"])
+    parser.add_argument("mode", choices=["drive", "planner", "navigate", "clean"])
     parser.add_argument("--name", required=True)
     parser.add_argument("--hours", type=float, default=1.0)
     parser.add_argument("--wall", type=float, default=60.0)
     parser.add_argument("--wall-limit", type=float, default=3600.0)
     parser.add_argument("--world")
     parser.add_argument("--pid", action="append", default=[])
+    parser.add_argument("--min-coverage", type=float, default=0.95)
     parser.add_argument("--goal-timeout", type=float, default=300.0)  # s of robot time
     args = parser.parse_args()
     rospy.init_node("soak_monitor", anonymous=True, disable_signals=True)
     procs = Processes(args.pid)
-    modes = {"drive": drive, "planner": planner, "navigate": navigate}
+    modes = {"drive": drive, "planner": planner, "navigate": navigate, "clean": clean}
     ok = modes[args.mode](args, procs)
     sys.exit(0 if ok else 1)
 

@@ -218,6 +218,7 @@ class FollowCoverage final : public bt::LeafNode {
     }
     while (progress.leg < progress.plan.legs.size()) {
       if (following_ != progress.leg) startLeg(progress);
+      if (context_.speed_scale != applied_scale_) applyLimits();
       robot::Velocity cmd;
       const FollowStatus status = follower_.step(*pose, cmd);
       // Past the end of a joined leg: in the next one, on the same path.
@@ -248,6 +249,7 @@ class FollowCoverage final : public bt::LeafNode {
           return Status::kFailure;
       }
     }
+    progress.swept_fraction = planner.sweptFraction(progress.swept);
     return Status::kSuccess;
   }
 
@@ -272,12 +274,25 @@ class FollowCoverage final : public bt::LeafNode {
         context_.follower_version != 0 ? context_.follower : built_with_);  // retuned: NavBt
     params.max_linear_speed = joined.cleaning ? rowSpeed() : transit_speed_;
     if (!ends_.empty()) params.lookahead = Driving::kJoinedLookahead;
-    follower_.setParams(params);
+    leg_params_ = params;
+    applyLimits();
     follower_.setGuard(leg.along_wall ? edge_guard_ : guard_);
     follower_.start(path_, goal, context_.previous_cmd);
     following_ = progress.leg;
     furthest_ = 0;
     still_ticks_ = 0;
+  }
+
+  /// The leg's limits, the speeds slowed for the latency of the loop (NavContext::speed_scale;
+  /// on time, exactly the leg's).
+  void applyLimits() {
+    applied_scale_ = context_.speed_scale;
+    navigation::FollowerParams params = leg_params_;
+    if (applied_scale_ != 1) {
+      params.max_linear_speed *= applied_scale_;
+      params.max_angular_speed *= applied_scale_;
+    }
+    follower_.setParams(params);
   }
 
   /// The current leg is done: on to the next (a finished row ends the tries at resuming).
@@ -301,8 +316,10 @@ class FollowCoverage final : public bt::LeafNode {
   std::shared_ptr<const navigation::MotionGuard> guard_;  ///< rows and transits
   std::shared_ptr<const navigation::MotionGuard> edge_guard_;  ///< rows along a wall
   navigation::GuardedFollower follower_;
-  Polyline path_;                  ///< the leg being followed (the follower points into it)
-  std::size_t following_ = kNone;  ///< the leg the follower was started on
+  navigation::FollowerParams leg_params_;  ///< the leg's limits before the latency's factor
+  double applied_scale_ = 1;               ///< the factor leg_params_ were applied with
+  Polyline path_;                          ///< the leg being followed (the follower points into it)
+  std::size_t following_ = kNone;          ///< the leg the follower was started on
   /// Arc lengths along path_ where the joined legs after the first start.
   std::vector<double> ends_;
   double furthest_ = 0;   ///< the most progress along path_ so far (m)
@@ -381,6 +398,9 @@ class ResumeCoverage final : public bt::LeafNode {
     if (++progress.tries >= skip_after_) {
       // Give up on the row being driven, or the one the transit led to: resume after it.
       while (from < legs.size() && legs[from].kind != Leg::Kind::kRow) ++from;
+      if (from < legs.size() && !legs[from].points.empty()) {
+        progress.skipped.emplace_back(legs[from].points.front(), legs[from].points.back());
+      }
       from = std::min(from + 1, legs.size());
       ++progress.skipped_rows;
       progress.tries = 0;

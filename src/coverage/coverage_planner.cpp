@@ -184,6 +184,16 @@ void CoveragePlanner::markSwept(std::vector<std::uint8_t>& swept, const Point2& 
   forPointsNear(space_, at, at, space_.robotRadius(), [&](int k) { swept[k] = 1; });
 }
 
+double CoveragePlanner::sweptFraction(const std::vector<std::uint8_t>& swept) const {
+  long floor = 0, marked = 0;
+  for (int k = 0; k < space_.size(); ++k) {
+    if (!space_.isFloor(k)) continue;
+    ++floor;
+    marked += static_cast<std::size_t>(k) < swept.size() && swept[k] != 0;
+  }
+  return floor > 0 ? static_cast<double>(marked) / static_cast<double>(floor) : 0.0;
+}
+
 std::vector<std::pair<Point2, Point2>> CoveragePlanner::freePieces(const Point2& a,
                                                                    const Point2& b) const {
   if (!open_ || space_.segmentFree(a, b)) return {{a, b}};

@@ -118,6 +118,7 @@ NavBt::NavBt(const NavLeafConfig& config, std::uint32_t seed, const std::string&
       goal_(&board_->declare<robot::Pose2D>("goal")),
       pose_(&board_->declare<robot::Pose2D>("pose")),
       predictor_(config.pose_latency, config.params.rate),
+      latency_(config.params.rate),
       tree_(buildTree(config, context_, text, source, from_file, board_)) {
   context_.state_name = &kIdle;
   context_.params = &params_;
@@ -156,6 +157,7 @@ void NavBt::cancelGoal() {
 
 robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2D& pose) {
   context_.bumper = bumper;
+  context_.speed_scale = LatencySpeedPolicy::scale(latency_.ticks());
   pose_->set(predictor_.predict(pose));
   context_.cmd = robot::Velocity{};
   const bt::Status status = tree_.tick();
@@ -173,6 +175,8 @@ robot::Velocity NavBt::tick(const robot::BumperState& bumper, const robot::Pose2
                                                           : "the navigation tree failed";
     }
   }
+  idle_ = context_.outcome != GoalOutcome::kActive && status != bt::Status::kRunning &&
+          context_.cmd.v == 0 && context_.cmd.w == 0;
   context_.previous_cmd = context_.cmd;
   predictor_.sent(context_.cmd);
   return context_.cmd;

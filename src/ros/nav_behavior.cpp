@@ -3,6 +3,7 @@
 #include <actionlib/server/simple_action_server.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/Path.h>
+#include <roomba_rrt/CoverageReport.h>
 #include <roomba_rrt/NavFollowerConfig.h>
 #include <tf2/LinearMath/Transform.h>
 #include <tf2_ros/buffer.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "behavior_node.h"
@@ -83,6 +85,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
     plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
     coverage_pub_ =
         ros::NodeHandle("~").advertise<nav_msgs::Path>("coverage_path", 1, /*latch=*/true);
+    report_pub_ = ros::NodeHandle("~").advertise<roomba_rrt::CoverageReport>("coverage_report", 1,
+                                                                             /*latch=*/true);
     // /move_base_simple/goal becomes a goal of the action, as in move_base, so that a goal from
     // rviz preempts an action client's goal and is reported on move_base/status.
     action_goal_pub_ = nh_.advertise<move_base_msgs::MoveBaseActionGoal>("move_base/goal", 1);
@@ -117,19 +121,22 @@ class NavBehavior final : public behavior::RoombaBehavior {
       p.position.y = t.transform.translation.y;
       p.orientation = t.transform.rotation;
       pose = toPose2D(p);
+      // How late the commands land (the cleaning slows down when they do): the tick's time and
+      // the stamp of the pose it acts on, both the simulator's clock.
+      nav_.observeTiming(ros::Time::now().toSec(), t.header.stamp.toSec());
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5.0, "no robot pose (%s -> %s): %s; standing still",
                         settings_.global_frame.c_str(), settings_.robot_frame.c_str(), e.what());
       return {};
     }
     const robot::Velocity cmd = nav_.tick(bumper_, pose);
-    // ~state names the active leaf; "Idle" when no goal runs and the robot stands (the tree
-    // keeps the last leaf's name, e.g. FollowPath at the goal; cleaning leaves still show).
-    const bool idle =
-        nav_.outcome() != navigation::GoalOutcome::kActive && cmd.v == 0 && cmd.w == 0;
-    context_.state_name = idle ? &kIdle : &nav_.stateName();
+    // ~state names the active leaf; "Idle" once the tree is done and the robot stands (the tree
+    // keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and the
+    // resume (NavBt::idle).
+    context_.state_name = nav_.idle() ? &kIdle : &nav_.stateName();
     publishPlan();
     publishCoveragePath();
+    reportCoverage();
     report(pose);
     return cmd;
   }
@@ -144,6 +151,52 @@ class NavBehavior final : public behavior::RoombaBehavior {
     coverage_mark_ = mark;
     coverage_pub_.publish(planner_node::toPathMessage(coverage::remainingPath(*progress),
                                                       settings_.global_frame, ros::Time::now()));
+  }
+
+  /// Once the cleaning is done: what it reached and what it gave up, on ~coverage_report and in
+  /// a line (a warning when rows were given up). Until then, the latency's worst.
+  void reportCoverage() {
+    const coverage::CoverageProgress* progress = coverage::findProgress(nav_.tree().blackboard());
+    if (progress == nullptr) return;
+    max_latency_ = std::max(max_latency_, nav_.latency());
+    slowest_ = std::min(slowest_, nav_.speedScale());
+    if (!progress->done()) {
+      reported_ = false;
+      return;
+    }
+    if (reported_) return;
+    reported_ = true;
+    roomba_rrt::CoverageReport msg;
+    msg.header.stamp = ros::Time::now();
+    msg.header.frame_id = settings_.global_frame;
+    msg.coverage = static_cast<float>(progress->swept_fraction);
+    msg.bumps = static_cast<std::uint32_t>(progress->bumps);
+    msg.skipped_rows = static_cast<std::uint32_t>(progress->skipped_rows);
+    std::ostringstream where;
+    for (const auto& [from, to] : progress->skipped) {
+      geometry_msgs::Point a, b;
+      a.x = from.x;
+      a.y = from.y;
+      b.x = to.x;
+      b.y = to.y;
+      msg.skipped_from.push_back(a);
+      msg.skipped_to.push_back(b);
+      where << (where.tellp() > 0 ? ", " : ": ") << "(" << from.x << ", " << from.y << ")-(" << to.x
+            << ", " << to.y << ")";
+    }
+    msg.latency = static_cast<float>(max_latency_);
+    msg.slowest_speed_scale = static_cast<float>(slowest_);
+    report_pub_.publish(msg);
+    const std::string line =
+        "cleaning done: " + util::show(100 * progress->swept_fraction) + " % of the floor swept, " +
+        std::to_string(progress->bumps) + " bumps, " + std::to_string(progress->skipped_rows) +
+        " rows given up" + where.str() + "; commands up to " + util::show(max_latency_) +
+        " s late, speeds down to " + util::show(100 * slowest_) + " %";
+    if (progress->skipped_rows > 0) {
+      ROS_WARN("%s", line.c_str());
+    } else {
+      ROS_INFO("%s", line.c_str());
+    }
   }
 
   /// The goal's outcome to the action client, or feedback while it runs.
@@ -292,7 +345,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
   tf2_ros::TransformListener listener_;
   MoveBaseServer server_;
   std::unique_ptr<nodes::Reconfigure<NavFollowerConfig>> follower_reconfigure_;
-  ros::Publisher plan_pub_, action_goal_pub_, coverage_pub_;
+  ros::Publisher plan_pub_, action_goal_pub_, coverage_pub_, report_pub_;
+  bool reported_ = false;                 ///< ~coverage_report went out for the cleaning done
+  double max_latency_ = 0, slowest_ = 1;  ///< the latency's worst while cleaning
   /// Which coverage plan (its legs' storage and count) and leg ~coverage_path last showed.
   struct CoverageMark {
     const void* legs = nullptr;

@@ -40,10 +40,14 @@ class Driver {
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
   bool sees() const { return explore_ != nullptr; }
-  robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
-                       const std::vector<sensors::Scan>& scans, const robot::Pose2D& scan_pose) {
-    if (explore_) return explore_->tick(time, bumper, pose, scans, scan_pose);
-    return lab_ ? lab_->tick(bumper) : tree_->tick(bumper, pose);
+  /// The trees are told the times as roomba_bt tells them: the tick's and the pose's.
+  robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose, double now,
+                       double pose_stamp, const std::vector<sensors::Scan>& scans,
+                       const robot::Pose2D& scan_pose) {
+    if (explore_) return explore_->tick(now, bumper, pose, pose_stamp, scans, scan_pose);
+    if (lab_) return lab_->tick(bumper);
+    tree_->observeTiming(now, pose_stamp);
+    return tree_->tick(bumper, pose);
   }
   const std::string& stateName() const {
     return explore_ ? explore_->stateName() : lab_ ? lab_->stateName() : tree_->stateName();
@@ -130,7 +134,8 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
     if (seen.size() > static_cast<std::size_t>(o.lag) + 1) seen.pop_front();
     const std::vector<sensors::Scan>& scans = scanner ? scanner->scan(k * step, {pose}) : no_scans;
     const robot::Velocity cmd =
-        behavior.tick(k * step, seen.front().first, seen.front().second, scans, pose);
+        behavior.tick(seen.front().first, seen.front().second, k * step,
+                      (k - static_cast<long>(seen.size()) + 1) * step, scans, pose);
     if (csv || keep_path) {
       theta += std::remainder(pose.theta - previous_wrapped, 2 * M_PI);  // unwrapped θ
       previous_wrapped = pose.theta;

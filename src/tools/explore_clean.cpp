@@ -51,7 +51,7 @@ ExploreClean::ExploreClean(const world::World& world, const behavior::RoombaPara
 ExploreClean::~ExploreClean() = default;
 
 robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper,
-                                   const robot::Pose2D& pose,
+                                   const robot::Pose2D& pose, double pose_stamp,
                                    const std::vector<sensors::Scan>& scans,
                                    const robot::Pose2D& scan_pose) {
   for (const sensors::Scan& scan : scans) {
@@ -62,14 +62,21 @@ robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper
     markHits(sensor, spec, scan.ranges);
   }
   if (bumper.pressed) mapper_.addBump(pose, robot_.radius, bumper);
-  if (clean_) return clean_->tick(bumper, pose);
+  if (clean_) {
+    clean_->observeTiming(time, pose_stamp);
+    return clean_->tick(bumper, pose);
+  }
 
   const double look_every = none_since_ >= 0 ? 0.2 : kReplanPeriod;
   if ((!explore_ && time - last_look_ >= look_every) || time - last_look_ >= kReplanPeriod) {
     nextGoal(time, pose, false);
   }
-  if (clean_) return clean_->tick(bumper, pose);
+  if (clean_) {
+    clean_->observeTiming(time, pose_stamp);
+    return clean_->tick(bumper, pose);
+  }
   if (!explore_) return stop_;
+  explore_->observeTiming(time, pose_stamp);
   const robot::Velocity cmd = explore_->tick(bumper, pose);
   const navigation::GoalOutcome outcome = explore_->outcome();
   const bool timed_out = time - goal_since_ > kGoalTimeout;

@@ -42,9 +42,10 @@ class ExploreClean {
 
   /// One tick at simulated `time`: the scans taken at this step (from the robot at
   /// `scan_pose`) and the bumper go into the map, then the phase's tree decides the command from
-  /// `bumper` and `pose`.
+  /// `bumper` and `pose` (the robot's pose at `pose_stamp`: NavBt::observeTiming).
   robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
-                       const std::vector<sensors::Scan>& scans, const robot::Pose2D& scan_pose);
+                       double pose_stamp, const std::vector<sensors::Scan>& scans,
+                       const robot::Pose2D& scan_pose);
 
   const std::string& stateName() const;
   behavior::RoombaState state() const;

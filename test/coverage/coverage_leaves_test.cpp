@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <string>
 
@@ -549,6 +550,10 @@ struct CleaningLoop {
       pressed = bumper.pressed;
       const robot::Velocity cmd = nav.tick(bumper, sim.pose());
       moving = cmd.v != 0 || cmd.w != 0;
+      if (nav.idle()) {
+        const CoverageProgress* progress = findProgress(nav.tree().blackboard());
+        idle_before_done += progress == nullptr || !progress->done();
+      }
       sim.move(cmd);
     }
   }
@@ -564,6 +569,7 @@ struct CleaningLoop {
   sim::Simulator sim;
   NavBt nav;
   int bumps = 0;
+  int idle_before_done = 0;  ///< ticks NavBt::idle() (roomba_bt's ~state "Idle") said done early
   bool pressed = false, moving = false;
 };
 
@@ -595,6 +601,102 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   EXPECT_LE(progress->bumps, 3 * (progress->skipped_rows + 1));
   EXPECT_EQ(loop.bumps, progress->bumps);  // every bump seen by FollowCoverage, none elsewhere
   EXPECT_GT(loop.sim.coverage(), 0.8);
+  // What was given up is reported (roomba_bt's ~coverage_report): each row's ends (rows run
+  // along x), one of them through the chair, and the coverage the robot knows it reached, near
+  // the simulator's.
+  ASSERT_EQ(progress->skipped.size(), static_cast<std::size_t>(progress->skipped_rows));
+  bool through_chair = false;
+  for (const auto& [from, to] : progress->skipped) {
+    EXPECT_NEAR(to.y, from.y, 1e-9);
+    through_chair = through_chair || (std::abs(from.y - 3.0) < 0.2 + loop.world.robot().radius &&
+                                      std::min(from.x, to.x) < 1.5 && std::max(from.x, to.x) > 1.5);
+  }
+  EXPECT_TRUE(through_chair);
+  EXPECT_NEAR(progress->swept_fraction, loop.sim.coverage(), 0.05);
+}
+
+/// The cleaning tree seeing pose and bumper `lag` steps late, as roomba_bt does when its ticks
+/// fall behind the simulator, with the pose driven forward one tick (roomba_bt's ~pose_latency).
+/// With `timed`, the tree is told the times (NavBt::observeTiming), as roomba_bt tells it.
+struct LateLoop {
+  LateLoop(int lag, bool timed)
+      : world(world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml")),
+        sim(world),
+        nav(lateConfig(world), 1, kCoverageTree),
+        lag(lag),
+        timed(timed) {}
+  static NavLeafConfig lateConfig(const world::World& world) {
+    NavLeafConfig config = cleaningConfig(world, std::make_shared<const CoveragePlanner>(world));
+    config.pose_latency = 1.0 / 60;
+    return config;
+  }
+  /// Runs until the cleaning is done or `seconds` have passed.
+  void run(double seconds) {
+    std::deque<std::pair<robot::BumperState, robot::Pose2D>> seen;
+    for (long k = 0; k < std::lround(seconds * 60); ++k) {
+      const robot::BumperState bumper = sim.senseContact();
+      bumps += bumper.pressed && !pressed;
+      pressed = bumper.pressed;
+      seen.emplace_back(bumper, sim.pose());
+      if (seen.size() > static_cast<std::size_t>(lag) + 1) seen.pop_front();
+      if (timed) nav.observeTiming(k / 60.0, (k + 1 - static_cast<long>(seen.size())) / 60.0);
+      sim.move(nav.tick(seen.front().first, seen.front().second));
+      slowest = std::min(slowest, nav.speedScale());
+      const CoverageProgress* progress = findProgress(nav.tree().blackboard());
+      if (progress && progress->done()) return;
+    }
+  }
+  world::World world;
+  sim::Simulator sim;
+  NavBt nav;
+  int lag;
+  bool timed;
+  int bumps = 0;
+  bool pressed = false;
+  double slowest = 1;
+};
+
+TEST(CoverageTree, with_commands_12_steps_late_it_slows_down_and_cleans_instead_of_giving_up) {
+  // At 12 steps (0.2 s) the robot overshot the rows' ends into the furniture at full speed: 19
+  // bumps, rows given up three tries at a time, and from a pose pressed against a chair nothing
+  // could be resumed: "done" at a third of the floor. Told the times, it drives slower.
+  LateLoop late(12, true);
+  late.run(1500);
+  const CoverageProgress* progress = findProgress(late.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  EXPECT_TRUE(progress->done());
+  EXPECT_LT(late.slowest, 0.5);
+  EXPECT_GT(late.sim.coverage(), 0.95);
+
+  LateLoop untold(12, false);  // the same delay, the tree not told: as before
+  untold.run(1500);
+  EXPECT_EQ(untold.slowest, 1);
+  EXPECT_LT(untold.sim.coverage(), late.sim.coverage() - 0.1);
+}
+
+TEST(CoverageTree, on_time_it_drives_at_full_speed) {
+  for (int lag : {0, 1, 3}) {
+    LateLoop loop(lag, true);
+    loop.run(20);
+    EXPECT_EQ(loop.slowest, 1) << "lag " << lag;
+  }
+}
+
+TEST(CoverageTree, state_reads_idle_only_once_the_floor_is_done_not_after_each_back_up) {
+  // A client watching ~state stops the robot at "Idle". Each back-up ends with a tick that
+  // returns RUNNING and commands nothing (the resume is planned, the row starts at the next
+  // tick): that tick must not read as idle.
+  CleaningLoop loop("roomba_world.yaml");
+  world::World with_chair = loop.world;
+  with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
+  loop.sim = sim::Simulator(with_chair);
+  loop.run(600);
+  const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
+  ASSERT_NE(progress, nullptr);
+  ASSERT_GE(progress->bumps, 1);  // backed up at least once
+  EXPECT_TRUE(progress->done());
+  EXPECT_EQ(loop.idle_before_done, 0);
+  EXPECT_TRUE(loop.nav.idle());
 }
 
 TEST(CoverageTree, placed_against_a_wall_it_cleans_instead_of_backing_up_along_it) {

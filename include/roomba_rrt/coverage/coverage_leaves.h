@@ -9,6 +9,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "roomba_rrt/coverage/coverage_planner.h"
@@ -24,6 +25,11 @@ struct CoverageProgress {
   int tries = 0;         ///< resumes since the last row was finished (skip_after counts them)
   int bumps = 0;         ///< bumps since the cleaning started
   int skipped_rows = 0;  ///< rows given up (skip_after tries)
+  /// Where: each row given up, its two ends (m), in the order they were given up.
+  std::vector<std::pair<Point2, Point2>> skipped;
+  /// The part of the floor `swept` marks, as of the last pass driven to its end (0..1;
+  /// CoveragePlanner::sweptFraction): once done(), the coverage the cleaning reached.
+  double swept_fraction = 0;
   /// The floor under the robot's disc so far, one flag per lattice point of the planner's
   /// FreeSpace (CoveragePlanner::markSwept, from the robot's poses while FollowCoverage runs).
   std::vector<std::uint8_t> swept;

@@ -121,6 +121,8 @@ class CoveragePlanner {
   /// Marks in `swept` (one flag per lattice point of freeSpace(), sized on first use) the floor
   /// under the robot's disc at `at`: what a robot knows it has cleaned, from its own poses.
   void markSwept(std::vector<std::uint8_t>& swept, const Point2& at) const;
+  /// The part of the floor's lattice points that `swept` marks (0..1).
+  double sweptFraction(const std::vector<std::uint8_t>& swept) const;
 
   /// The touch-up after the rows: a tour from `at` over the spots of reachable floor that
   /// `swept` does not mark (each spot of at least `min_spot_area`: the corners a U-turn cut, a

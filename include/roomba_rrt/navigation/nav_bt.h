@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "roomba_rrt/bt/tree.h"
+#include "roomba_rrt/navigation/command_latency.h"
 #include "roomba_rrt/navigation/nav_leaves.h"
 #include "roomba_rrt/navigation/pose_predictor.h"
 
@@ -45,6 +46,16 @@ class NavBt {
   /// that starts (as RoombaBehavior::setParams). `params.rate` is ignored.
   void setRoombaParams(const behavior::RoombaParams& params);
 
+  /// The times of the next tick, in the robot's clock (s): when it runs and the stamp of the pose
+  /// it is given. Optional: without them the loop counts as on time. From them CommandLatency
+  /// estimates how late the commands land, and the cleaning leaves slow down beyond
+  /// LatencySpeedPolicy::kOnTimeTicks (speedScale()).
+  void observeTiming(double now, double pose_stamp) { latency_.observe(now, pose_stamp); }
+  /// The estimated latency of the loop (s; one tick without observeTiming()).
+  double latency() const { return latency_.latency(); }
+  /// The factor on the cleaning's speeds in force (1: on time).
+  double speedScale() const { return context_.speed_scale; }
+
   /// One tick: the bumper and pose of this step in, the command out (zero when no leaf runs).
   /// The leaves see the pose driven forward over the config's pose_latency (PosePredictor).
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose);
@@ -56,6 +67,11 @@ class NavBt {
   const Path* path() const { return board_->get<Path>("path"); }
   /// The active leaf's name (for ~state), "Idle" before any leaf ran.
   const std::string& stateName() const { return *context_.state_name; }
+  /// Whether the robot is done and stands (~state then reads "Idle"): no goal is active, the
+  /// tree's last tick did not return RUNNING and its command was zero. A tick that returns
+  /// RUNNING with a zero command (a recovery just ended, the next try starts at the next tick;
+  /// a follower holding still) is not idle: the tree has more to do.
+  bool idle() const { return idle_; }
   /// The lab's motion the last command stands for (the cleaning and recovery leaves set it).
   behavior::RoombaState state() const { return context_.state; }
   bt::Tree& tree() { return tree_; }
@@ -70,7 +86,9 @@ class NavBt {
   bt::Blackboard::Entry<robot::Pose2D>* goal_;
   bt::Blackboard::Entry<robot::Pose2D>* pose_;
   PosePredictor predictor_;
+  CommandLatency latency_;
   bt::Tree tree_;
+  bool idle_ = true;
 };
 
 /// The default planner options of navigation: RRT-Connect, exact segment checks, smoothed.

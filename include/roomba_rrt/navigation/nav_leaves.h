@@ -52,6 +52,9 @@ struct NavContext : behavior::RoombaContext {
   /// (NavBt::setFollowerParams), and how often: FollowPath takes them up on its next tick.
   FollowerParams follower;
   std::uint64_t follower_version = 0;
+  /// The factor on the cleaning's speeds for the latency of the loop (LatencySpeedPolicy): 1 on
+  /// time. NavBt sets it each tick; FollowCoverage takes it up at once.
+  double speed_scale = 1;
 };
 
 /// Makes one planner per ComputePath leaf (each leaf has its own pending plan).
