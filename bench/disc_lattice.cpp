@@ -113,17 +113,6 @@ std::vector<Point2> DiscLattice::latticePath(int from, int to) const {
   return path;
 }
 
-std::vector<Point2> DiscLattice::pull(const std::vector<Point2>& path) const {
-  std::vector<Point2> out{path.front()};
-  for (std::size_t i = 0; i + 1 < path.size();) {
-    std::size_t j = i + 1;  // the lattice edge i → i + 1 is free
-    while (j + 1 < path.size() && sweep(path[i], path[j + 1])) ++j;
-    out.push_back(path[j]);
-    i = j;
-  }
-  return out;
-}
-
 void DiscLattice::tighten(std::vector<Point2>& path) const {
   for (int round = 0; round < kTightenRounds; ++round) {
     // Split every edge in two (its halves are free: they are parts of it), so a bend can spread

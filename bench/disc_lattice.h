@@ -30,6 +30,23 @@
 
 namespace roomba_rrt::bench {
 
+/// Greedy string pulling: from the first vertex, each kept vertex is joined to the farthest later
+/// vertex that `sweep(kept, vertex)` finds free for every vertex up to it (consecutive vertices
+/// are taken to be joined already). The endpoints stay; by the triangle inequality the path never
+/// gets longer.
+template <class Sweep>
+std::vector<geometry::Point2> pullString(const std::vector<geometry::Point2>& path, Sweep sweep) {
+  if (path.empty()) return path;
+  std::vector<geometry::Point2> out{path.front()};
+  for (std::size_t i = 0; i + 1 < path.size();) {
+    std::size_t j = i + 1;
+    while (j + 1 < path.size() && sweep(path[i], path[j + 1])) ++j;
+    out.push_back(path[j]);
+    i = j;
+  }
+  return out;
+}
+
 class DiscLattice {
  public:
   /// The lattice of `map` for a disc of `radius`: every cell centre's discFree, computed once.
@@ -51,7 +68,10 @@ class DiscLattice {
   template <class Visit>
   void forEachNeighbour(int cell, Visit visit) const;
   std::vector<geometry::Point2> latticePath(int from, int to) const;
-  std::vector<geometry::Point2> pull(const std::vector<geometry::Point2>& path) const;
+  std::vector<geometry::Point2> pull(const std::vector<geometry::Point2>& path) const {
+    return pullString(
+        path, [this](const geometry::Point2& a, const geometry::Point2& b) { return sweep(a, b); });
+  }
   void tighten(std::vector<geometry::Point2>& path) const;
   bool sweep(const geometry::Point2& a, const geometry::Point2& b) const {
     return map_.sweepFree(a, b, disc_);

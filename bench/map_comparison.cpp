@@ -17,6 +17,12 @@
 //                      the thread's CPU clock; ours: the iterations that fit in 100 ms on that
 //                      pair, measured first), each divided by the pair's shortest path
 //                      (DiscLattice).
+//   A* (issue 47)      the grid planner ROS users pick (navfn, global_planner, Smac 2D), as
+//                      8-connected A* on the same inflated map (grid_astar.h): median CPU time
+//                      per query (its inflated grid built once per map, timed apart), its length
+//                      / shortest. Against it, our first path (RRT-Connect, above) and each
+//                      route of kRoutes to a short path: how many of its paths are no longer
+//                      than A*'s on the same pair, and its median CPU time.
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -34,8 +40,10 @@
 
 #include "arguments.h"
 #include "disc_lattice.h"
+#include "grid_astar.h"
 #include "ompl_lab.h"
 #include "roomba_rrt/geometry/map_file.h"
+#include "roomba_rrt/planning/densify.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
 
 namespace {
@@ -57,6 +65,7 @@ struct Config {
   double budget_s = 0.1;
   unsigned iterations = 200000;  // both sides' cap for RRT and RRT-Connect
   bool json = false;
+  bool grid_only = false;  // --grid-only: RRT, RRT-Connect and the A* rows (no RRT*)
 };
 
 /// One side of a row: solved count, median CPU time, mean length and mean length / shortest.
@@ -71,6 +80,22 @@ struct Row {
   Side ours, ompl;
 };
 
+/// One way of ours to a short path, against the A* peer's length on each pair: how often its
+/// path was no longer than A*'s, its median CPU time, and its mean length / A*'s.
+struct ShortRoute {
+  std::string name;
+  int met = 0, runs = 0;
+  double median_us = 0, mean_over_astar = std::nan("");
+};
+
+/// The grid planner's rows (grid_astar.h): the peer itself, then our routes to a path as short.
+struct GridRows {
+  double inflate_ms = 0;  // the peer's inflated grid (its edges), built once per map
+  Side astar;             // median CPU time per query, length / shortest
+  double median_expanded = 0;
+  std::vector<ShortRoute> routes;
+};
+
 struct MapRows {
   std::string name;
   int width = 0, height = 0;
@@ -80,6 +105,7 @@ struct MapRows {
   double sweep_ns = 0;  // CPU time of one isSegmentFree of a step from a free point
   Row rrt, rrt_connect, rrt_star;
   unsigned star_iterations = 0;  // our RRT*'s iterations in the budget, median over the pairs
+  GridRows grid;
 };
 
 /// Runs solve(i) for i < warmup untimed, then `runs` times; lengths are divided by the shortest
@@ -203,6 +229,102 @@ Row starRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& sh
   return row;
 }
 
+/// A way of ours to a short path: make_plan's planner (src/ros/make_plan_ros.cpp: RRT-Connect,
+/// exact segments, 0.5 m steps, 200 000 iterations, 200 shortcut tries) or RRT* at the map rows'
+/// range for a fixed number of iterations, then, if `pull`, greedy string pulling over the path
+/// densified to 8 and then 2 cells (pullString(): each vertex joined to the farthest later one
+/// it sweeps freely to), every pulled edge checked by the exact sweep.
+struct RouteSpec {
+  const char* name;
+  rp::Algorithm algorithm;
+  int iterations;
+  bool pull;
+};
+constexpr RouteSpec kRoutes[] = {
+    {"make_plan", rp::Algorithm::kRrtConnect, 200000, false},
+    {"make_plan+pull", rp::Algorithm::kRrtConnect, 200000, true},
+    {"rrt_star_10k+pull", rp::Algorithm::kRrtStar, 10000, true},
+};
+
+/// The length of the route's path on `q` (NaN: none found).
+double routeLength(const rp::Problem& q, std::uint32_t seed, const RouteSpec& route) {
+  const double cell = q.map->grid().resolution;
+  rp::PlannerOptions o;
+  o.algorithm = route.algorithm;
+  o.collision = rp::CollisionCheck::kSegments;
+  o.max_iterations = route.iterations;
+  o.seed = seed;
+  if (route.algorithm == rp::Algorithm::kRrtConnect) {
+    o.step = 0.5;
+    o.smooth = true;
+    o.smoothing_tries = 200;
+  } else {
+    o.step = kStepCells * cell;
+    o.goal_bias = kGoalBias;
+  }
+  rp::PlanResult r = rp::plan(q, o);
+  if (!r.success) return std::nan("");
+  if (!route.pull) return r.length;
+  const rp::CollisionChecker checker = rp::collisionChecker(q, rp::CollisionCheck::kSegments);
+  const auto sweep = [&checker](const rp::Point2& a, const rp::Point2& b) {
+    return checker.isSegmentFree(a, b);
+  };
+  std::vector<rp::Point2> path = pullString(r.path, sweep);
+  for (double d : {8 * cell, 2 * cell}) path = pullString(rp::densify(path, d), sweep);
+  return rp::pathLength(path);
+}
+
+/// The A* peer on every pair (after building its inflated grid, timed apart), then each route of
+/// ours, timed the same way, against A*'s length on the pair.
+GridRows gridRows(const rp::Problem& base, const std::vector<rp::Problem>& pairs,
+                  const std::vector<double>& shortest, const Config& cfg) {
+  GridRows rows;
+  const double t0 = threadCpuSeconds();
+  const GridAStar astar(*base.map, kRobotRadius);
+  rows.inflate_ms = cpuSecondsSince(t0) * 1e3;
+  const int n = static_cast<int>(pairs.size());
+  std::vector<double> astar_length(n, std::nan(""));
+  rows.astar = measureSide(cfg.warmup, n * cfg.runs, shortest, [&](int i) {
+    const rp::Problem& q = pairs[i % n];
+    const double t = threadCpuSeconds();
+    const GridAStar::Result r = astar.plan(q.start, q.goal);
+    Solve s;
+    s.seconds = cpuSecondsSince(t);
+    s.solved = !r.path.empty();
+    s.length = r.length;
+    s.work = r.expanded;
+    astar_length[i % n] = s.solved ? r.length : std::nan("");
+    return s;
+  });
+  for (const RouteSpec& spec : kRoutes) {
+    ShortRoute route;
+    route.name = spec.name;
+    std::vector<double> seconds;
+    double ratio_sum = 0;
+    int found = 0;
+    for (int i = 0; i < cfg.warmup + n * cfg.runs; ++i) {
+      const int pair = i % n;
+      const double t = threadCpuSeconds();
+      const double length = routeLength(pairs[pair], 42u + static_cast<std::uint32_t>(i), spec);
+      const double s = cpuSecondsSince(t);
+      if (i < cfg.warmup) continue;
+      seconds.push_back(s);
+      ++route.runs;
+      if (!std::isfinite(length) || !std::isfinite(astar_length[pair])) continue;
+      ++found;
+      ratio_sum += length / astar_length[pair];
+      if (length <= astar_length[pair] * (1 + 1e-9)) ++route.met;
+    }
+    route.median_us = median(seconds) * 1e6;
+    if (found > 0) route.mean_over_astar = ratio_sum / found;
+    std::cerr << "  " << spec.name << ": " << route.met << "/" << route.runs
+              << " no longer than A*'s, " << route.median_us << " us (A* " << rows.astar.median_us
+              << " us), length / A*'s " << route.mean_over_astar << "\n";
+    rows.routes.push_back(route);
+  }
+  return rows;
+}
+
 MapRows runMap(const std::string& yaml, const Config& cfg) {
   MapRows rows;
   rows.name = std::filesystem::path(yaml).stem().string();
@@ -230,6 +352,11 @@ MapRows runMap(const std::string& yaml, const Config& cfg) {
   options.algorithm = rp::Algorithm::kRrtConnect;
   rows.rrt_connect = timeRow<og::RRTConnect>(pairs, shortest, options, cfg);
   options.algorithm = rp::Algorithm::kRrtStar;
+  rows.grid = gridRows(base, pairs, shortest, cfg);
+  std::cerr << rows.name << ": A* " << rows.grid.astar.median_us << " us (inflated grid "
+            << rows.grid.inflate_ms << " ms), length / shortest " << rows.grid.astar.mean_ratio
+            << "\n";
+  if (cfg.grid_only) return rows;
   rows.rrt_star = starRow(pairs, shortest, options, cfg, rows.star_iterations);
   std::cerr << rows.name << ": RRT " << rows.rrt.ours.median_us << " / " << rows.rrt.ompl.median_us
             << " us, RRT-Connect " << rows.rrt_connect.ours.median_us << " / "
@@ -247,6 +374,18 @@ std::string sideJson(const Side& s) {
          ", \"mean_length_over_shortest\": " + num(s.mean_ratio, 4) +
          ", \"min_length_over_shortest\": " + num(s.min_ratio, 4) +
          ", \"median_work\": " + num(s.median_work, 0) + "}";
+}
+
+std::string gridJson(const GridRows& g) {
+  std::string routes;
+  for (const ShortRoute& r : g.routes) {
+    routes += std::string(routes.empty() ? "" : ", ") + "{\"route\": \"" + r.name +
+              "\", \"met\": " + std::to_string(r.met) + ", \"runs\": " + std::to_string(r.runs) +
+              ", \"median_us\": " + num(r.median_us, 2) +
+              ", \"mean_length_over_astar\": " + num(r.mean_over_astar, 4) + "}";
+  }
+  return "{\"inflate_ms\": " + num(g.inflate_ms, 2) + ", \"astar\": " + sideJson(g.astar) +
+         ", \"routes\": [" + routes + "]}";
 }
 
 std::string rowJson(const Row& r) {
@@ -267,8 +406,9 @@ void printJson(const std::vector<MapRows>& maps, const Config& cfg) {
               << ", \"star_iterations\": " << m.star_iterations
               << ", \"sweep_ns\": " << num(m.sweep_ns, 1) << ",\n   \"rrt\": " << rowJson(m.rrt)
               << ",\n   \"rrt_connect\": " << rowJson(m.rrt_connect)
-              << ",\n   \"rrt_star\": " << rowJson(m.rrt_star) << "}"
-              << (k + 1 < maps.size() ? "," : "") << "\n";
+              << ",\n   \"rrt_star\": " << rowJson(m.rrt_star)
+              << ",\n   \"grid\": " << gridJson(m.grid) << "}" << (k + 1 < maps.size() ? "," : "")
+              << "\n";
   }
   std::cout << " ]}\n";
 }
@@ -295,6 +435,24 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
               << solved(m.rrt_connect) << " | " << num(m.rrt_star.ours.mean_ratio, 3) << " | "
               << num(m.rrt_star.ompl.mean_ratio, 3) << " | " << solved(m.rrt_star) << " |\n";
   }
+  std::cout << "\nAgainst 8-connected A* on the inflated grid (bench/grid_astar.h): median CPU time"
+               " per query; a short path: paths no longer than A*'s on the same pair\n\n"
+               "| map | A* µs | A* L/shortest | RRT-Connect first µs | /A* |";
+  for (const RouteSpec& r : kRoutes) std::cout << " " << r.name << " µs | as short | L/A* |";
+  std::cout << "\n|---|---|---|---|---|";
+  for (std::size_t k = 0; k < std::size(kRoutes); ++k) std::cout << "---|---|---|";
+  std::cout << "\n";
+  for (const MapRows& m : maps) {
+    const GridRows& g = m.grid;
+    std::cout << "| " << m.name << " | " << num(g.astar.median_us, 0) << " | "
+              << num(g.astar.mean_ratio, 3) << " | " << num(m.rrt_connect.ours.median_us, 0)
+              << " | " << num(m.rrt_connect.ours.median_us / g.astar.median_us, 3) << " |";
+    for (const ShortRoute& r : g.routes) {
+      std::cout << " " << num(r.median_us, 0) << " | " << r.met << "/" << r.runs << " | "
+                << num(r.mean_over_astar, 3) << " |";
+    }
+    std::cout << "\n";
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -302,8 +460,9 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
 
 const char* const kUsage =
     "usage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
-    " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N]\n"
-    "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n";
+    " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N] [--grid-only]\n"
+    "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n"
+    "  --grid-only: RRT, RRT-Connect and the A* rows, without RRT*\n";
 
 Config parseArgs(int argc, char** argv) {
   Config cfg;
@@ -313,6 +472,8 @@ Config parseArgs(int argc, char** argv) {
       cfg.json = true;
     } else if (args.is("--maps")) {
       cfg.maps_dir = args.value();
+    } else if (args.is("--grid-only")) {
+      cfg.grid_only = true;
     } else if (args.is("--map")) {
       cfg.only_map = args.value();
     } else if (args.is("--pairs")) {

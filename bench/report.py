@@ -12,7 +12,8 @@ RESULTS_DIR holds, per benchmark, NAME.json (its output) or NAME.error (one line
 figures). A missing or failed piece becomes "n/a" with the reason; the other rows still print.
 
     ompl.json      bench/ompl_comparison --json
-    maps.json      map_comparison --json (the shared maps: RRT family vs OMPL, RRT* vs shortest)
+    maps.json      map_comparison --json (the shared maps: RRT family vs OMPL, RRT* vs shortest,
+                   RRT-Connect and routes to a short path vs 8-connected A*)
     map_load.json  map_load_bench --json (willow_full × 8: load + inflate per cell, memory)
     map_huge.json  map_load_bench --json --tile 5 --plans 20 (10^8 cells; RRT-Connect across)
     big_map.json   big_map_probe --json (the same map over ROS: rrt_planner on a latched /map)
@@ -250,6 +251,52 @@ def map_rows(t, results):
               lo, lp, ratio, "≤ OMPL and ≤ 1.1× shortest",
               lo is not None and lp is not None and lo <= lp and lo <= 1.1 and
               ours["solved"] >= ompl["solved"], star(ours), star(ompl))
+
+
+def grid_rows(t, results):
+    """The grid planner ROS users pick (issue 47): 8-connected A* on the same inflated map
+    (bench/grid_astar.h), against our first path and our routes to a path as short as A*'s."""
+    try:
+        data = load(results, "maps")
+    except Missing as e:
+        t.missing("grid", "RRT-Connect vs 8-connected A* on the shared maps", str(e), "≤ 0.5")
+        return
+    for m in data["maps"]:
+        g = m.get("grid")
+        if g is None:
+            t.missing(f"grid_{m['map']}", f"vs 8-connected A*, map {m['map']}",
+                      "no A* rows in maps.json", "≤ 0.5")
+            continue
+        astar = g["astar"]
+        where = (f"map {m['map']} ({m['width']} × {m['height']} @ {m['resolution']:g} m), radius "
+                 f"{data['robot_radius']:g} m, {data['pairs']} pairs × {data['runs_per_pair']}")
+        peer = (f"{fmt(astar['median_us'])} µs · {astar['solved']}/{astar['runs']} solved · "
+                f"{astar['mean_length_over_shortest']:.3f} × shortest · "
+                f"{astar['median_work']:.0f} cells expanded (inflated grid built once: "
+                f"{fmt(g['inflate_ms'])} ms)")
+        first = m["rrt_connect"]["ours"]
+        ratio = first["median_us"] / astar["median_us"] if astar["median_us"] else None
+        t.add(f"grid_{m['map']}_first",
+              f"First path, rrt_connect (range {m['step']:g} m) vs 8-connected A* on the same "
+              f"inflated grid, {where}: median CPU time per query",
+              first["median_us"], astar["median_us"], ratio, None, None,
+              f"{fmt(first['median_us'])} µs · {first['solved']}/{first['runs']} solved · "
+              f"{first['mean_length_over_shortest']:.3f} × shortest", peer)
+        # The route that most often matched A*'s length, then the fastest of those.
+        routes = sorted(g["routes"], key=lambda r: (-r["met"], r["median_us"]))
+        best = routes[0]
+        ratio = best["median_us"] / astar["median_us"] if astar["median_us"] else None
+        others = "; ".join(f"{r['route']} {r['met']}/{r['runs']} in {fmt(r['median_us'])} µs"
+                           for r in routes[1:])
+        t.add(f"grid_{m['map']}_short",
+              f"A path no longer than A*'s, ours (best of the routes make_plan, make_plan+pull, "
+              f"rrt_star_10k+pull) vs 8-connected A*, {where}: median CPU time per query · "
+              f"paths no longer than A*'s",
+              best["median_us"], astar["median_us"], ratio, "≤ 0.5, every path",
+              ratio is not None and ratio <= 0.5 and best["met"] == best["runs"],
+              f"{best['route']}: {fmt(best['median_us'])} µs · {best['met']}/{best['runs']} no "
+              f"longer than A*'s · length {best['mean_length_over_astar']:.3f} × A*'s "
+              f"(others: {others})", peer)
 
 
 def map_load_rows(t, results):
@@ -638,8 +685,9 @@ def main(argv):
         return 2
     results = argv[1]
     t = Table()
-    for rows in (rrt_rows, room_rows, map_rows, map_load_rows, huge_map_rows, planning_rows, behavior_rows,
-                 groot2_rows, sim_rows, sim_robot_rows, mapping_rows, rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
+    for rows in (rrt_rows, room_rows, map_rows, grid_rows, map_load_rows, huge_map_rows,
+                 planning_rows, behavior_rows, groot2_rows, sim_rows, sim_robot_rows, mapping_rows,
+                 rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

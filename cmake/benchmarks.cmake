@@ -47,7 +47,8 @@ if(OMPL_FOUND AND TARGET rrt_planning)
   target_compile_definitions(ompl_comparison PRIVATE
     ROOMBA_RRT_CONFIG_DIR="${PROJECT_SOURCE_DIR}/config")
   # The same on the shared real maps (issue 17), against the disc's shortest path.
-  rr_ompl_benchmark(map_comparison bench/map_comparison.cpp bench/disc_lattice.cpp)
+  rr_ompl_benchmark(map_comparison bench/map_comparison.cpp bench/disc_lattice.cpp
+    bench/grid_astar.cpp)
   target_compile_definitions(map_comparison PRIVATE
     ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
 endif()
@@ -80,3 +81,11 @@ foreach(target IN ITEMS planning_bench behavior_bench sim_bench sensor_bench sim
     add_dependencies(benchmarks ${target})
   endif()
 endforeach()
+
+# The A* peer of map_comparison (bench/grid_astar.h) is tested like the library: its rows are
+# only as right as it is.
+roomba_rrt_gtest(grid_astar_test test/bench/grid_astar_test.cpp bench/grid_astar.cpp
+  LINK roomba_geometry)
+if(TARGET grid_astar_test)
+  target_include_directories(grid_astar_test PRIVATE bench)
+endif()

@@ -35,10 +35,10 @@ int main(int argc, char** argv) {
     roomba_rrt::planner_node::RrtPlanner node(pnh, params);
     params.warnUnknown();
     // Several threads: each request is planned in its own callback, so a long plan leaves the
-    // other threads free to accept and answer further requests. Two threads more than plans may
-    // run at once answer "busy" while every planning thread is taken. A plan (up to minutes
-    // long) does not hold up Ctrl-C.
-    roomba_rrt::nodes::spinWithShutdownGrace(node.planThreads() + 2, master_watch, "rrt_planner");
+    // other threads free to accept and answer further requests; more threads than plans may run
+    // at once, so that an ordinary request never waits in the callback queue behind long plans
+    // (RrtPlanner::callbackThreads()). A plan (up to minutes long) does not hold up Ctrl-C.
+    roomba_rrt::nodes::spinWithShutdownGrace(node.callbackThreads(), master_watch, "rrt_planner");
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM("rrt_planner: " << e.what());
     return 1;

@@ -7,65 +7,63 @@ PlanSlots::PlanSlots(int capacity) {
 }
 
 PlanSlots::Lease::~Lease() {
-  if (slots_ != nullptr) slots_->release(slot_);
+  if (slots_ != nullptr) slots_->release(slot_, generation_);
 }
 
 bool PlanSlots::Lease::stopRequested() const {
-  return slots_ != nullptr && slots_->slots_[slot_]->stop.load(std::memory_order_relaxed);
+  return slots_ != nullptr &&
+         slots_->slots_[slot_]->generation.load(std::memory_order_relaxed) != generation_;
 }
 
-void PlanSlots::release(int slot) {
+void PlanSlots::release(int slot, std::uint64_t generation) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    slots_[slot]->busy = false;
-    slots_[slot]->stop = false;
+    Slot& s = *slots_[slot];
+    if (s.generation.load() != generation) return;  // preempted: the slot is its new holder's
+    s.busy = false;
   }
   freed_.notify_all();
 }
 
-int PlanSlots::takeFree(bool ordinary) {
+PlanSlots::Lease PlanSlots::take(int i, bool ordinary) {
+  Slot& s = *slots_[i];
+  s.busy = true;
+  s.ordinary = ordinary;
+  s.started = Clock::now();
+  return Lease(this, i, s.generation.fetch_add(1) + 1);
+}
+
+PlanSlots::Lease PlanSlots::takeFree(bool ordinary) {
   for (int i = 0; i < capacity(); ++i) {
-    Slot& s = *slots_[i];
-    if (s.busy) continue;
-    s.busy = true;
-    s.ordinary = ordinary;
-    s.started = Clock::now();
-    return i;
+    if (!slots_[i]->busy) return take(i, ordinary);
   }
-  return -1;
+  return Lease();
 }
 
 PlanSlots::Lease PlanSlots::acquireLong() {
   std::lock_guard<std::mutex> lock(mutex_);
-  const int slot = ordinary_waiting_ > 0 ? -1 : takeFree(false);
-  return slot < 0 ? Lease() : Lease(this, slot);
+  return ordinary_waiting_ > 0 ? Lease() : takeFree(false);
 }
 
 PlanSlots::Lease PlanSlots::acquireOrdinary(Clock::time_point deadline) {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
-    const int slot = takeFree(true);
-    if (slot >= 0) return Lease(this, slot);
-    // Every thread is taken: stop the oldest long plan not already stopping (it ends within about
-    // a millisecond and frees its thread); with none, wait for an ordinary plan to end.
+    if (Lease free = takeFree(true)) return free;
+    // Every thread is taken: the oldest long plan's, at once (its lease sees the new generation
+    // and stops); with none, wait for an ordinary plan to end.
     int oldest = -1;
     for (int i = 0; i < capacity(); ++i) {
       const Slot& s = *slots_[i];
-      if (!s.ordinary && !s.stop && (oldest < 0 || s.started < slots_[oldest]->started)) {
-        oldest = i;
-      }
+      if (!s.ordinary && (oldest < 0 || s.started < slots_[oldest]->started)) oldest = i;
     }
     if (oldest >= 0) {
-      slots_[oldest]->stop = true;
       preemptions_.fetch_add(1);
+      return take(oldest, true);
     }
     ++ordinary_waiting_;
     const bool timed_out = freed_.wait_until(lock, deadline) == std::cv_status::timeout;
     --ordinary_waiting_;
-    if (timed_out && Clock::now() >= deadline) {
-      const int last = takeFree(true);
-      return last < 0 ? Lease() : Lease(this, last);
-    }
+    if (timed_out && Clock::now() >= deadline) return takeFree(true);
   }
 }
 

@@ -5,16 +5,20 @@
 // the service to all others with a handful of long plans (six unreachable plans at the request
 // cap held every thread for two seconds). Requests now come in two kinds. An *ordinary* request
 // asks for no more iterations than the node's ~ordinary_iterations (20 000 by default: a default
-// request, and the navigation tree's): it takes a free thread, or else the thread of the oldest
-// *long* plan, which is stopped for it (its client hears "preempted"), or else it waits for an
-// ordinary plan to end, up to its own time budget. A *long* request takes a free thread or is
-// answered "busy" at once; it never preempts. So an ordinary request starts within about a
-// millisecond whatever long plans others run, and long plans use whatever ordinary ones leave.
+// request, and the navigation tree's): it takes a free thread, or else, at once, the thread of
+// the oldest *long* plan, which is told to stop (its client hears "preempted") and winds down
+// beside it, or else it waits for an ordinary plan to end, up to its own time budget. A *long*
+// request takes a free thread or is answered "busy" at once; it never preempts. So an ordinary
+// request starts planning as soon as its callback runs, whatever long plans others run: it does
+// not wait for the preempted plan to notice (a plan looks about every millisecond of its own CPU
+// time, far longer on a machine whose cores the long plans keep busy), and for that moment one
+// plan more than the capacity runs. Long plans use whatever ordinary ones leave.
 #pragma once
 
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -32,7 +36,8 @@ class PlanSlots {
   class Lease {
    public:
     Lease() = default;
-    Lease(Lease&& other) noexcept : slots_(other.slots_), slot_(other.slot_) {
+    Lease(Lease&& other) noexcept
+        : slots_(other.slots_), slot_(other.slot_), generation_(other.generation_) {
       other.slots_ = nullptr;
     }
     Lease(const Lease&) = delete;
@@ -40,18 +45,20 @@ class PlanSlots {
     Lease& operator=(Lease&&) = delete;
     ~Lease();
     explicit operator bool() const { return slots_ != nullptr; }
-    /// True once an ordinary request preempted this (long) plan.
+    /// True once an ordinary request took this (long) plan's thread.
     bool stopRequested() const;
 
    private:
     friend class PlanSlots;
-    Lease(PlanSlots* slots, int slot) : slots_(slots), slot_(slot) {}
+    Lease(PlanSlots* slots, int slot, std::uint64_t generation)
+        : slots_(slots), slot_(slot), generation_(generation) {}
     PlanSlots* slots_ = nullptr;
     int slot_ = -1;
+    std::uint64_t generation_ = 0;  ///< the slot's holder while it equals the slot's generation
   };
 
-  /// A thread for an ordinary plan: free, or a long plan's (stopped for it), or the first an
-  /// ordinary plan frees before `deadline`; empty when none by then.
+  /// A thread for an ordinary plan: free, or a long plan's (taken at once; that plan is told to
+  /// stop), or the first an ordinary plan frees before `deadline`; empty when none by then.
   Lease acquireOrdinary(Clock::time_point deadline);
   /// A thread for a long plan: a free one (none while an ordinary request waits), or empty at once.
   Lease acquireLong();
@@ -65,11 +72,15 @@ class PlanSlots {
     bool busy = false;
     bool ordinary = false;
     Clock::time_point started;
-    std::atomic<bool> stop{false};
+    /// Counts the slot's holders: a lease whose generation is no longer this one was preempted
+    /// (its release leaves the slot to the new holder).
+    std::atomic<std::uint64_t> generation{0};
   };
-  /// Takes a free slot (under the lock): its index, or -1.
-  int takeFree(bool ordinary);
-  void release(int slot);
+  /// Gives slot `i` to a new holder (under the lock).
+  Lease take(int i, bool ordinary);
+  /// Takes a free slot (under the lock); empty if none.
+  Lease takeFree(bool ordinary);
+  void release(int slot, std::uint64_t generation);
 
   std::vector<std::unique_ptr<Slot>> slots_;
   std::mutex mutex_;

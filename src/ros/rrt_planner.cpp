@@ -202,6 +202,10 @@ class RrtPlannerNode {
 
   /// How many plans run at once (~threads, at least 2).
   int planThreads() const { return slots_.capacity(); }
+  /// Threads serving callbacks: one per plan, one per preempted plan still winding down (it
+  /// stops within about a millisecond of its own CPU time, which on a busy machine can be much
+  /// longer in wall time), and two for the answers that take no thread (busy, rejected).
+  int callbackThreads() const { return 2 * planThreads() + 2; }
 
  private:
   // Called concurrently by the spinner's threads: touches only const members and thread-safe
@@ -221,35 +225,47 @@ class RrtPlannerNode {
     // Ordinary requests (no more iterations than ~ordinary_iterations) are served first: see
     // plan_slots.h.
     const bool ordinary = resolved.options.max_iterations <= defaults()->ordinary_iterations;
-    const PlanSlots::Lease slot =
-        ordinary ? slots_.acquireOrdinary(
-                       PlanSlots::Clock::now() +
-                       std::chrono::duration_cast<PlanSlots::Clock::duration>(
-                           std::chrono::duration<double>(resolved.options.max_planning_time)))
-                 : slots_.acquireLong();
-    if (!slot) {
-      response.message =
-          ordinary ? "busy: all " + std::to_string(slots_.capacity()) +
-                         " planning threads (~threads) ran ordinary plans for this request's "
-                         "whole time budget; call again"
-                   : "busy: all " + std::to_string(slots_.capacity()) +
-                         " planning threads (~threads) are in use and this request asks more than "
-                         "~ordinary_iterations (" +
-                         std::to_string(defaults()->ordinary_iterations) +
-                         "): long plans only use free threads; call again later";
-      ROS_WARN_STREAM("plan_path: " << response.message);
-      return true;
+    planning::PlanResult result;
+    bool preempted = false;
+    {
+      // The thread is held for the plan alone, given back before the answer is built and the
+      // markers (up to ~max_marker_nodes) are drawn and published.
+      const PlanSlots::Lease slot =
+          ordinary ? slots_.acquireOrdinary(deadlineOf(resolved.options)) : slots_.acquireLong();
+      if (!slot) {
+        response.message =
+            ordinary ? "busy: all " + std::to_string(slots_.capacity()) +
+                           " planning threads (~threads) ran ordinary plans for this request's "
+                           "whole time budget; call again"
+                     : "busy: all " + std::to_string(slots_.capacity()) +
+                           " planning threads (~threads) are in use and this request asks more "
+                           "than ~ordinary_iterations (" +
+                           std::to_string(defaults()->ordinary_iterations) +
+                           "): long plans only use free threads; call again later";
+        ROS_WARN_STREAM("plan_path: " << response.message);
+        return true;
+      }
+      try {
+        result = plan(resolved, slot);
+      } catch (const std::exception& e) {
+        return planError(e, &response);
+      }
+      preempted = slot.stopRequested();
     }
     try {
-      const planning::PlanResult result = plan(resolved, slot);
       const ros::Time stamp = ros::Time::now();
       fillResponse(result, frame_id_, stamp, &response);
-      if (slot.stopRequested() && !result.success) {
+      if (preempted && !result.success) {
         response.message =
             "preempted: every planning thread was taken and this plan, asking more than "
             "~ordinary_iterations, had run the longest of those: it gave its thread to an "
             "ordinary request; call again";
         ROS_WARN_STREAM("plan_path: " << response.message);
+        // Its tree and empty path would replace the plan that preempted it on ~tree and ~path.
+        // Drawing it costs too: a latched topic's message is serialized under roscpp's one lock
+        // for every publication, so up to ~max_marker_nodes markers of an abandoned plan would
+        // hold up the ordinary request's own answer.
+        return true;
       }
       tree_pub_.publish(markers(resolved.problem, result.tree, &result.path, stamp));
       path_pub_.publish(response.path);
@@ -257,11 +273,22 @@ class RrtPlannerNode {
                                      << result.length << ", " << result.iterations
                                      << " iterations, " << result.tree.nodes.size() << " nodes");
     } catch (const std::exception& e) {
-      response.success = false;
-      response.message = std::string("planner error: ") + e.what();
-      ROS_ERROR_STREAM("plan_path: " << response.message);
+      return planError(e, &response);
     }
     return true;
+  }
+
+  static bool planError(const std::exception& e, PlanPath::Response* response) {
+    response->success = false;
+    response->message = std::string("planner error: ") + e.what();
+    ROS_ERROR_STREAM("plan_path: " << response->message);
+    return true;  // the client gets success: false and the message
+  }
+
+  /// When an ordinary request stops waiting for a thread: after its own time budget.
+  static PlanSlots::Clock::time_point deadlineOf(const planning::PlannerOptions& options) {
+    return PlanSlots::Clock::now() + std::chrono::duration_cast<PlanSlots::Clock::duration>(
+                                         std::chrono::duration<double>(options.max_planning_time));
   }
 
   // A map arrives (latched: at once after subscribing, then on every change): inflated here,
@@ -379,16 +406,18 @@ class RrtPlannerNode {
       ROS_WARN_STREAM("make_plan: no plan: " << query.error);
       return true;
     }
-    // An interactive request, served first like an ordinary plan_path request.
-    const PlanSlots::Lease slot = slots_.acquireOrdinary(
-        PlanSlots::Clock::now() + std::chrono::duration_cast<PlanSlots::Clock::duration>(
-                                      std::chrono::duration<double>(d.options.max_planning_time)));
-    if (!slot) {
-      ROS_WARN("make_plan: busy: every planning thread (~threads) is taken; call again");
-      return true;
-    }
     const ResolvedRequest resolved{query.problem, query.options, ""};
-    const planning::PlanResult result = plan(resolved, slot);
+    planning::PlanResult result;
+    {
+      // An interactive request, served first like an ordinary plan_path request; its thread is
+      // held for the plan alone.
+      const PlanSlots::Lease slot = slots_.acquireOrdinary(deadlineOf(d.options));
+      if (!slot) {
+        ROS_WARN("make_plan: busy: every planning thread (~threads) is taken; call again");
+        return true;
+      }
+      result = plan(resolved, slot);
+    }
     const ros::Time stamp = ros::Time::now();
     if (result.success) {
       // One pose per map cell (~plan_resolution), as navfn answers: local planners follow the
@@ -510,5 +539,6 @@ RrtPlanner::RrtPlanner(ros::NodeHandle& pnh, nodes::NodeParams& params)
     : node_(std::make_unique<RrtPlannerNode>(pnh, params)) {}
 RrtPlanner::~RrtPlanner() = default;
 int RrtPlanner::planThreads() const { return node_->planThreads(); }
+int RrtPlanner::callbackThreads() const { return node_->callbackThreads(); }
 
 }  // namespace roomba_rrt::planner_node

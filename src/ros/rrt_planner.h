@@ -21,6 +21,8 @@ class RrtPlanner {
   ~RrtPlanner();
   /// How many plans run at once (~threads, at least 2).
   int planThreads() const;
+  /// How many threads its callbacks need (planThreads() and more: see rrt_planner.cpp).
+  int callbackThreads() const;
 
  private:
   std::unique_ptr<RrtPlannerNode> node_;

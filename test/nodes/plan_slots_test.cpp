@@ -1,6 +1,6 @@
 // Who gets a planning thread when all are taken (plan_slots.h): a free one at once; an ordinary
-// request otherwise takes the oldest long plan's thread (that plan is asked to stop) or waits for
-// an ordinary one to end; a long request never waits and never preempts.
+// request otherwise takes the oldest long plan's thread at once (that plan is asked to stop) or
+// waits for an ordinary one to end; a long request never waits and never preempts.
 #include "../../src/ros/plan_slots.h"
 
 #include <gtest/gtest.h>
@@ -57,6 +57,23 @@ TEST(PlanSlots, an_ordinary_request_takes_the_oldest_long_plans_thread) {
   PlanSlots::Lease another = slots.acquireOrdinary(Clock::now() + std::chrono::seconds(2));
   EXPECT_TRUE(another);  // the second long plan goes next
   EXPECT_TRUE(second.get());
+}
+
+TEST(PlanSlots, an_ordinary_request_does_not_wait_for_the_preempted_plan_to_stop) {
+  PlanSlots slots(1);
+  auto held = std::make_unique<PlanSlots::Lease>(slots.acquireLong());  // never looks at stop
+  ASSERT_TRUE(*held);
+  // No time to wait at all: the thread is handed over at once.
+  PlanSlots::Lease ordinary = slots.acquireOrdinary(Clock::now());
+  ASSERT_TRUE(ordinary);
+  EXPECT_TRUE(held->stopRequested());
+  EXPECT_FALSE(ordinary.stopRequested());
+  EXPECT_EQ(slots.preemptions(), 1);
+  // The preempted plan ending late gives back nothing: the thread is the ordinary plan's.
+  held.reset();
+  EXPECT_FALSE(slots.acquireLong());
+  EXPECT_FALSE(slots.acquireOrdinary(Clock::now()));
+  EXPECT_FALSE(ordinary.stopRequested());
 }
 
 TEST(PlanSlots, ordinary_plans_are_never_preempted_a_newcomer_waits_for_one_to_end) {
