@@ -18,7 +18,8 @@ constexpr double kWalkSlack = 1e-9;  // m
 ClearanceMap::ClearanceMap(std::shared_ptr<const OccupancyGrid> grid, bool unknown_is_free)
     : grid_(std::move(grid)),
       unknown_is_free_(unknown_is_free),
-      distance_(squaredDistanceTransform(*grid_, unknown_is_free)) {
+      distance_(squaredDistanceTransform(*grid_, unknown_is_free)),
+      free_tiles_(*grid_, unknown_is_free) {
   // A blocked cell whose four neighbours in the grid are blocked too is inside a wall: its square
   // is never the nearest blocked point to a free point (that lies on the walls' boundary, the
   // square of a blocked cell beside a free one). Mark it −1 so the exact tests skip it. Outside

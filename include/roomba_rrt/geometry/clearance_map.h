@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "roomba_rrt/geometry/free_tiles.h"
 #include "roomba_rrt/geometry/geometry.h"
 #include "roomba_rrt/geometry/occupancy_grid.h"
 
@@ -45,6 +46,8 @@ class ClearanceMap {
   explicit ClearanceMap(std::shared_ptr<const OccupancyGrid> grid, bool unknown_is_free = false);
 
   const OccupancyGrid& grid() const { return *grid_; }
+  /// The tiles holding a free cell, where a sampler draws points (built with the map).
+  const FreeTiles& freeTiles() const { return free_tiles_; }
   bool unknownIsFree() const { return unknown_is_free_; }
   Disc disc(double radius) const;
 
@@ -75,6 +78,7 @@ class ClearanceMap {
   std::shared_ptr<const OccupancyGrid> grid_;
   bool unknown_is_free_;
   std::vector<std::int32_t> distance_;
+  FreeTiles free_tiles_;
 };
 
 }  // namespace roomba_rrt::geometry
