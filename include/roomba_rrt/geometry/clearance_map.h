@@ -70,6 +70,10 @@ class ClearanceMap {
   enum class Cell { kFree, kBlocked, kNear };
   Cell classify(int i, int j, const Disc& disc) const;
   bool insideExtent(const Point2& p, double radius) const;
+  /// True when the distance transform at the segment's midpoint alone proves the sweep free.
+  bool clearAroundMidpoint(const Point2& a, const Point2& b, const Disc& disc) const;
+  /// The exact sweep: the cells the segment passes through, and the squares near those in the band.
+  bool exactSweepFree(const Point2& a, const Point2& b, const Disc& disc) const;
   /// Whether hit(i, j) holds for a blocked cell beside a free one among columns [i0, i1] × rows
   /// [j0, j1] (clipped to the grid).
   template <class Hit>
