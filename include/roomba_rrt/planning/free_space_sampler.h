@@ -12,16 +12,18 @@ namespace roomba_rrt::planning {
 /// Draws a point uniformly and repeats while it is not free — at most `max_tries` times, so a
 /// world without free room ends in std::nullopt instead of a hang. Without a map (the lab, the
 /// furnished room) the point is x, then y, uniform in the bounds (the lab's order: two rand() per
-/// try). On a map whose free tiles (geometry::FreeTiles) cover less area than the bounds, the
+/// try). On a map whose free tiles (geometry::FreeTiles) cover at most half the bounds' area, the
 /// point is drawn in a random free tile instead: uniform over the same free points, with fewer
-/// draws wasted on unknown border and walls (a new stream of answers for map problems).
+/// draws wasted on unknown border and walls (turtlebot3_world: 6 % of the rectangle). A tile
+/// draw costs a third rand() and a read of the tile list, so on maps that are mostly floor the
+/// rectangle stays (measured: warehouse's tiles, 88 % of its rectangle, were slower).
 class FreeSpaceSampler {
  public:
   FreeSpaceSampler(const Bounds& bounds, const CollisionChecker& checker, int max_tries)
       : bounds_(bounds), checker_(checker), max_tries_(max_tries) {
     const geometry::ClearanceMap* map = checker.map();
     const double bounds_area = (bounds.x_max - bounds.x_min) * (bounds.y_max - bounds.y_min);
-    if (map != nullptr && !map->freeTiles().empty() && map->freeTiles().area() < bounds_area) {
+    if (map != nullptr && !map->freeTiles().empty() && 2 * map->freeTiles().area() <= bounds_area) {
       tiles_ = &map->freeTiles();
     }
   }
