@@ -27,17 +27,19 @@ std::shared_ptr<const geometry::OccupancyGrid> lMap() {
 TEST(FreeTiles, lists_every_tile_holding_a_free_cell_and_no_other) {
   const auto grid = lMap();
   const geometry::FreeTiles tiles(*grid, false);
-  // The L's cells 10..29 × 10..19 and 10..19 × 20..29 touch tiles 2..7 × 2..4 and 2..4 × 5..7.
-  EXPECT_EQ(tiles.size(), 6u * 3 + 3 * 3);
-  EXPECT_DOUBLE_EQ(tiles.area(), 27 * 0.4 * 0.4);
-  EXPECT_TRUE(geometry::FreeTiles(*grid, true).size() == 50u * 50u);  // unknown counts as free
+  // The L's cells 10..29 × 10..19 and 10..19 × 20..29 touch the 8 × 8-cell tiles 1..3 × 1..2
+  // and 1..2 × 2..3: eight tiles.
+  static_assert(geometry::FreeTiles::kCells == 8);
+  EXPECT_EQ(tiles.size(), 8u);
+  EXPECT_DOUBLE_EQ(tiles.area(), 8 * 0.8 * 0.8);
+  EXPECT_EQ(geometry::FreeTiles(*grid, true).size(), 25u * 25u);  // unknown counts as free
 }
 
 TEST(FreeSpaceSampler, on_a_mostly_unknown_map_finds_free_points_in_few_draws) {
   Problem problem = mapProblem(lMap());
   const CollisionChecker checker = collisionChecker(problem, CollisionCheck::kSegments);
   // The L is 3 % of the rectangle: 20 draws in the rectangle find it in under half the runs;
-  // drawn from the free tiles (about 2/3 of whose area is the L), every run does.
+  // drawn from the free tiles (59 % of whose area is the L), every run does.
   const FreeSpaceSampler sampler(problem.bounds, checker, 20);
   MatlabRandom random(7);
   for (int n = 0; n < 1000; ++n) {

@@ -18,7 +18,7 @@ namespace roomba_rrt::geometry {
 /// point of the map, so rejecting the points that are not free leaves a uniform free point.
 class FreeTiles {
  public:
-  static constexpr int kCells = 4;  ///< tile edge in cells: 4 bytes per 16 cells at most
+  static constexpr int kCells = 8;  ///< tile edge in cells: 4 bytes per 64 cells at most
 
   FreeTiles(const OccupancyGrid& grid, bool unknown_is_free);
 
