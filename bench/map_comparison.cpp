@@ -12,6 +12,8 @@
 // CollisionChecker in `segments` mode: isFree for states, isSegmentFree (exact disc sweep against
 // every blocked cell's square) for motions, OMPL through a MotionValidator that calls it
 // (ompl_lab.h); the same range (20 cells), goal bias 0.05, goal tolerance 1e-3 and iteration cap.
+// RRT and RRT-Connect also face OMPL as a user sets it up: the same exact point check as its
+// validity checker and OMPL's DiscreteMotionValidator at a quarter cell (`ompl_user`).
 //   RRT, RRT-Connect   median CPU time per solve over pairs × runs, solved counts;
 //   RRT*               path length after 100 ms of CPU time (OMPL: a termination condition on
 //                      the thread's CPU clock; ours: the iterations that fit in 100 ms on that
@@ -66,6 +68,7 @@ struct Config {
   unsigned iterations = 200000;  // both sides' cap for RRT and RRT-Connect
   bool json = false;
   bool grid_only = false;  // --grid-only: RRT, RRT-Connect and the A* rows (no RRT*)
+  bool star = true;        // --no-star: RRT and RRT-Connect only (no RRT*, A* or shortest paths)
 };
 
 /// One side of a row: solved count, median CPU time, mean length and mean length / shortest.
@@ -78,6 +81,7 @@ struct Side {
 
 struct Row {
   Side ours, ompl;
+  Side ompl_user;  // OMPL with DiscreteMotionValidator at a quarter cell (RRT, RRT-Connect)
 };
 
 /// One way of ours to a short path, against the A* peer's length on each pair: how often its
@@ -161,7 +165,7 @@ void drawPairs(const rp::Problem& base, const Config& cfg, std::vector<rp::Probl
     p.start = lattice.centre(a);
     p.goal = lattice.centre(b);
     pairs.push_back(p);
-    shortest.push_back(geometry::pathLength(lattice.shortestPath(a, b)));
+    shortest.push_back(cfg.star ? geometry::pathLength(lattice.shortestPath(a, b)) : 1.0);
   }
   rows.shortest_seconds = cpuSecondsSince(t0) / cfg.pairs;
   for (double l : shortest) rows.shortest_mean += l / cfg.pairs;
@@ -192,14 +196,19 @@ double sweepNanoseconds(const rp::Problem& base, double step) {
 template <typename OmplPlanner>
 Row timeRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& shortest,
             rp::PlannerOptions options, const Config& cfg) {
-  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl;
-  for (const rp::Problem& q : pairs)
+  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl, ompl_user;
+  const MotionCheck quarter_cell{0.25 * pairs.front().map->grid().resolution};
+  for (const rp::Problem& q : pairs) {
     ompl.push_back(std::make_unique<OmplLab<OmplPlanner>>(q, options));
+    ompl_user.push_back(std::make_unique<OmplLab<OmplPlanner>>(q, options, quarter_cell));
+  }
   const int n = static_cast<int>(pairs.size());
   const int runs = n * cfg.runs;
   Row row;
   row.ompl = measureSide(cfg.warmup, runs, shortest,
                          [&](int i) { return ompl[i % n]->solve(cfg.iterations); });
+  row.ompl_user = measureSide(cfg.warmup, runs, shortest,
+                              [&](int i) { return ompl_user[i % n]->solve(cfg.iterations); });
   row.ours = measureSide(cfg.warmup, runs, shortest, [&](int i) {
     return solveOurs(pairs[i % n], options, cfg.iterations, 42u + static_cast<std::uint32_t>(i));
   });
@@ -352,6 +361,7 @@ MapRows runMap(const std::string& yaml, const Config& cfg) {
   options.algorithm = rp::Algorithm::kRrtConnect;
   rows.rrt_connect = timeRow<og::RRTConnect>(pairs, shortest, options, cfg);
   options.algorithm = rp::Algorithm::kRrtStar;
+  if (!cfg.star) return rows;
   rows.grid = gridRows(base, pairs, shortest, cfg);
   std::cerr << rows.name << ": A* " << rows.grid.astar.median_us << " us (inflated grid "
             << rows.grid.inflate_ms << " ms), length / shortest " << rows.grid.astar.mean_ratio
@@ -359,9 +369,11 @@ MapRows runMap(const std::string& yaml, const Config& cfg) {
   if (cfg.grid_only) return rows;
   rows.rrt_star = starRow(pairs, shortest, options, cfg, rows.star_iterations);
   std::cerr << rows.name << ": RRT " << rows.rrt.ours.median_us << " / " << rows.rrt.ompl.median_us
-            << " us, RRT-Connect " << rows.rrt_connect.ours.median_us << " / "
-            << rows.rrt_connect.ompl.median_us << " us, RRT* length / shortest "
-            << rows.rrt_star.ours.mean_ratio << " / " << rows.rrt_star.ompl.mean_ratio << "\n";
+            << " / " << rows.rrt.ompl_user.median_us << " us, RRT-Connect "
+            << rows.rrt_connect.ours.median_us << " / " << rows.rrt_connect.ompl.median_us << " / "
+            << rows.rrt_connect.ompl_user.median_us << " us (ours / OMPL / OMPL user checker)"
+            << ", RRT* length / shortest " << rows.rrt_star.ours.mean_ratio << " / "
+            << rows.rrt_star.ompl.mean_ratio << "\n";
   return rows;
 }
 
@@ -389,7 +401,8 @@ std::string gridJson(const GridRows& g) {
 }
 
 std::string rowJson(const Row& r) {
-  return "{\"ours\": " + sideJson(r.ours) + ", \"ompl\": " + sideJson(r.ompl) + "}";
+  return "{\"ours\": " + sideJson(r.ours) + ", \"ompl\": " + sideJson(r.ompl) +
+         ", \"ompl_user\": " + sideJson(r.ompl_user) + "}";
 }
 
 void printJson(const std::vector<MapRows>& maps, const Config& cfg) {
@@ -418,22 +431,24 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
             << kGoalBias << ", " << cfg.pairs << " pairs x " << cfg.runs
             << " (RRT, RRT-Connect: median CPU time; RRT*: length / shortest after "
             << cfg.budget_s * 1e3 << " ms)\n\n"
-            << "| map | shortest m | RRT µs ours | OMPL | ours/OMPL | solved | RRT-Connect µs ours "
-               "| OMPL | ours/OMPL | solved | RRT* L/shortest ours | OMPL | solved |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+            << "| map | shortest m | RRT µs ours | OMPL | ours/OMPL | OMPL user | ours/user | "
+               "solved | RRT-Connect µs ours | OMPL | ours/OMPL | OMPL user | ours/user | solved "
+               "| RRT* L/shortest ours | OMPL | solved |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   auto solved = [](const Row& r) {
     return std::to_string(r.ours.solved) + "/" + std::to_string(r.ompl.solved) + " of " +
            std::to_string(r.ours.runs);
   };
+  auto times = [](const Row& r) {  // ours, OMPL, ratio, OMPL with the user's checker, ratio
+    return num(r.ours.median_us, 1) + " | " + num(r.ompl.median_us, 0) + " | " +
+           num(r.ours.median_us / r.ompl.median_us, 3) + " | " + num(r.ompl_user.median_us, 0) +
+           " | " + num(r.ours.median_us / r.ompl_user.median_us, 3) + " | ";
+  };
   for (const MapRows& m : maps) {
-    std::cout << "| " << m.name << " | " << num(m.shortest_mean, 1) << " | "
-              << num(m.rrt.ours.median_us, 0) << " | " << num(m.rrt.ompl.median_us, 0) << " | "
-              << num(m.rrt.ours.median_us / m.rrt.ompl.median_us, 3) << " | " << solved(m.rrt)
-              << " | " << num(m.rrt_connect.ours.median_us, 0) << " | "
-              << num(m.rrt_connect.ompl.median_us, 0) << " | "
-              << num(m.rrt_connect.ours.median_us / m.rrt_connect.ompl.median_us, 3) << " | "
-              << solved(m.rrt_connect) << " | " << num(m.rrt_star.ours.mean_ratio, 3) << " | "
-              << num(m.rrt_star.ompl.mean_ratio, 3) << " | " << solved(m.rrt_star) << " |\n";
+    std::cout << "| " << m.name << " | " << num(m.shortest_mean, 1) << " | " << times(m.rrt)
+              << solved(m.rrt) << " | " << times(m.rrt_connect) << solved(m.rrt_connect) << " | "
+              << num(m.rrt_star.ours.mean_ratio, 3) << " | " << num(m.rrt_star.ompl.mean_ratio, 3)
+              << " | " << solved(m.rrt_star) << " |\n";
   }
   std::cout << "\nAgainst 8-connected A* on the inflated grid (bench/grid_astar.h): median CPU time"
                " per query; a short path: paths no longer than A*'s on the same pair\n\n"
@@ -460,9 +475,10 @@ void printMarkdown(const std::vector<MapRows>& maps, const Config& cfg) {
 
 const char* const kUsage =
     "usage: map_comparison [--maps DIR] [--map NAME] [--json] [--pairs N] [--runs N]"
-    " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N] [--grid-only]\n"
+    " [--warmup N] [--star-runs N] [--budget-ms MS] [--iterations N] [--grid-only | --no-star]\n"
     "  every DIR/*.yaml (default: ../shared/maps beside the repository)\n"
-    "  --grid-only: RRT, RRT-Connect and the A* rows, without RRT*\n";
+    "  --grid-only: RRT, RRT-Connect and the A* rows, without RRT*\n"
+    "  --no-star: RRT and RRT-Connect alone (no shortest paths, A* or RRT*)\n";
 
 Config parseArgs(int argc, char** argv) {
   Config cfg;
@@ -486,6 +502,8 @@ Config parseArgs(int argc, char** argv) {
       cfg.star_runs = args.count(1);
     } else if (args.is("--budget-ms")) {
       cfg.budget_s = args.count(1) * 1e-3;
+    } else if (args.is("--no-star")) {
+      cfg.star = false;
     } else if (args.is("--iterations")) {
       cfg.iterations = static_cast<unsigned>(args.count(1));
     } else {

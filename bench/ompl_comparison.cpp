@@ -33,6 +33,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -165,7 +166,13 @@ struct RoomRow {
   std::string name;     // rrt, rrt_connect, rrt_star_10ms, rrt_star_100ms
   double budget_s = 0;  // RRT* rows: the CPU-time budget of each solve
   Summary ours, ompl;
+  /// RRT, RRT-Connect: OMPL as a user sets it up, the exact point check every kUserCheckStep.
+  std::optional<Summary> ompl_user;
 };
+
+/// The user's OMPL in the room: DiscreteMotionValidator every centimetre (the room has no cells;
+/// a user who wants no corner cut picks a step well below the furniture's legs and margins).
+constexpr double kUserCheckStep = 0.01;  // m
 
 /// The lab's options for the room: segments, step 0.2, bias 0.1, eps 1e-3, and `iterations`
 /// (the same limit for OMPL; enough that every pair is solved).
@@ -182,14 +189,19 @@ template <typename OmplPlanner>
 RoomRow roomTimeRow(const std::string& name, const std::vector<rp::Problem>& queries,
                     rp::Algorithm algorithm, const Config& cfg) {
   const rp::PlannerOptions options = roomOptions(algorithm, cfg.room_iterations);
-  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl;
-  for (const rp::Problem& q : queries)
+  std::vector<std::unique_ptr<OmplLab<OmplPlanner>>> ompl, ompl_user;
+  for (const rp::Problem& q : queries) {
     ompl.push_back(std::make_unique<OmplLab<OmplPlanner>>(q, options));
+    ompl_user.push_back(
+        std::make_unique<OmplLab<OmplPlanner>>(q, options, MotionCheck{kUserCheckStep}));
+  }
   const int runs = kRoomPairs * cfg.room_runs;
-  RoomRow row{name, 0, {}, {}};
+  RoomRow row{name, 0, {}, {}, {}};
   const auto iterations = static_cast<unsigned>(options.max_iterations);
   row.ompl =
       measure(kRoomPairs, runs, [&](int i) { return ompl[i % kRoomPairs]->solve(iterations); });
+  row.ompl_user = measure(kRoomPairs, runs,
+                          [&](int i) { return ompl_user[i % kRoomPairs]->solve(iterations); });
   row.ours = measure(kRoomPairs, runs, [&](int i) {
     return solveOurs(queries[i % kRoomPairs], options, iterations,
                      42u + static_cast<std::uint32_t>(i));
@@ -229,7 +241,11 @@ std::vector<RoomRow> runRoom(const Config& cfg) {
     std::cerr << "room " << r.name << ": ours " << r.ours.median_seconds * 1e6 << " us, L "
               << r.ours.mean_length << ", " << r.ours.solved_percent << " %; OMPL "
               << r.ompl.median_seconds * 1e6 << " us, L " << r.ompl.mean_length << ", "
-              << r.ompl.solved_percent << " %\n";
+              << r.ompl.solved_percent << " %";
+    if (r.ompl_user) {
+      std::cerr << "; OMPL with a user's checker " << r.ompl_user->median_seconds * 1e6 << " us";
+    }
+    std::cerr << "\n";
   }
   return rows;
 }
@@ -264,7 +280,8 @@ void printJson(const std::vector<ScenarioRow>& scenarios, const std::vector<Grow
   for (std::size_t i = 0; i < room.size(); ++i) {
     const RoomRow& r = room[i];
     std::cout << "    {\"row\": \"" << r.name << "\", \"budget_ms\": " << num(r.budget_s * 1e3, 1)
-              << ", \"ours\": " << side(r.ours) << ", \"ompl\": " << side(r.ompl) << "}"
+              << ", \"ours\": " << side(r.ours) << ", \"ompl\": " << side(r.ompl)
+              << (r.ompl_user ? ", \"ompl_user\": " + side(*r.ompl_user) : std::string()) << "}"
               << (i + 1 < room.size() ? "," : "") << "\n";
   }
   std::cout << "  ]\n}\n";

@@ -4,6 +4,7 @@
 // statistics and the output's numbers.
 #pragma once
 
+#include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/Goal.h>
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/ProblemDefinition.h>
@@ -127,6 +128,13 @@ struct Solve {
   long work = 0;       // OMPL: motion checks made; ours: iterations (what is shared is the checker)
 };
 
+/// How OMPL checks a motion: with the library's exact checker (the same sweep our planner calls),
+/// or as a user sets it up: OMPL's DiscreteMotionValidator, the exact point check every
+/// `resolution` metres along the motion (../shared/PERFORMANCE.md: a quarter cell on a map).
+struct MotionCheck {
+  double resolution = 0;  ///< m between the points checked; 0: the library's exact sweep
+};
+
 /// An OMPL planner (RRT by default; RRTConnect, RRTstar for the room rows) set up once for one
 /// problem; solve() runs a fresh tree each call. A robot with a size (problem.robot_radius +
 /// clearance) gets the grown world exactly as the library plans in it: the library's checker of
@@ -134,7 +142,7 @@ struct Solve {
 template <typename Planner = og::RRT>
 class OmplLab {
  public:
-  OmplLab(const rp::Problem& problem, const rp::PlannerOptions& options)
+  OmplLab(const rp::Problem& problem, const rp::PlannerOptions& options, MotionCheck motion = {})
       : bounds_(rp::shrink(problem.bounds, rp::robotMargin(problem))),
         checker_(rp::collisionChecker(problem, options.collision)) {
     auto space = std::make_shared<ob::RealVectorStateSpace>(2);
@@ -150,7 +158,13 @@ class OmplLab {
       const rp::Point2 p = point(s);
       return rp::contains(bounds_, p) && checker_.isFree(p);
     });
-    si_->setMotionValidator(std::make_shared<LabMotionValidator>(si_, checker_));
+    if (motion.resolution > 0) {
+      // OMPL's resolution is a fraction of the space's extent (the bounds' diagonal).
+      si_->setStateValidityCheckingResolution(motion.resolution / space->getMaximumExtent());
+      si_->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si_));
+    } else {
+      si_->setMotionValidator(std::make_shared<LabMotionValidator>(si_, checker_));
+    }
     si_->setup();
 
     ob::ScopedState<ob::RealVectorStateSpace> start(space), goal(space);

@@ -193,6 +193,16 @@ def room_rows(t, results):
                   "20 start/goal pairs)",
                   ours["median_us"], ompl["median_us"], ratio, "≤ 0.1",
                   ratio is not None and ratio <= 0.1, cell(ours), cell(ompl))
+            user = r.get("ompl_user")
+            if user is not None:
+                ratio = ours["median_us"] / user["median_us"] if user["median_us"] else None
+                t.add(f"room_{r['row']}_user",
+                      f"{r['row']} vs OMPL {peers[r['row']]} with a user's checker (exact point "
+                      "validity, DiscreteMotionValidator every 1 cm), furnished room, radius "
+                      f"0.17: median CPU time per solve · solved · mean length "
+                      f"({data['room_runs']} solves, 20 start/goal pairs)",
+                      ours["median_us"], user["median_us"], ratio, "≤ 0.1",
+                      ratio is not None and ratio <= 0.1, cell(ours), cell(user))
         else:
             lo, lp = ours["mean_length"], ompl["mean_length"]
             ratio = lo / lp if lo is not None and lp else None
@@ -231,6 +241,17 @@ def map_rows(t, results):
                   ours["median_us"], ompl["median_us"], ratio, "≤ 0.1",
                   ratio is not None and ratio <= 0.1, cell(ours, "iterations"),
                   cell(ompl, "motion checks"))
+            user = m[key].get("ompl_user")
+            if user is None:
+                continue
+            ratio = ours["median_us"] / user["median_us"] if user["median_us"] else None
+            t.add(f"map_{m['map']}_{key}_user",
+                  f"{key} vs OMPL {peer} with a user's checker (exact point validity, "
+                  f"DiscreteMotionValidator at a quarter cell), map {where}: median CPU time per "
+                  f"solve · solved · median work ({solves})",
+                  ours["median_us"], user["median_us"], ratio, "≤ 0.1",
+                  ratio is not None and ratio <= 0.1, cell(ours, "iterations"),
+                  cell(user, "motion checks"))
         ours, ompl = m["rrt_star"]["ours"], m["rrt_star"]["ompl"]
         lo, lp = ours["mean_length_over_shortest"], ompl["mean_length_over_shortest"]
         ratio = lo / lp if lo is not None and lp else None

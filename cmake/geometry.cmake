@@ -7,6 +7,7 @@ pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
 
 add_library(roomba_geometry src/geometry/geometry.cpp src/geometry/occupancy_grid.cpp
   src/geometry/distance_transform.cpp src/geometry/clearance_map.cpp
+  src/geometry/free_tiles.cpp
   src/geometry/map_file.cpp src/geometry/map_image.cpp)
 target_include_directories(roomba_geometry PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_geometry PRIVATE yaml-cpp PkgConfig::LIBPNG)

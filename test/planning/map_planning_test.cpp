@@ -121,6 +121,38 @@ TEST(MapPlanning, every_edge_of_1000_seeded_plans_keeps_the_radius_from_every_bl
   RecordProperty("paths_found", found);
 }
 
+TEST(MapPlanning, the_inflated_maps_sweeps_agree_with_the_plain_exact_check_on_real_maps) {
+  // Steps from a fraction of a cell to 3 m between points where the Roomba is free: most are
+  // settled by the distance transform at their midpoint, the rest by the exact sweep.
+  for (const char* name :
+       {"turtlebot3_world", "depot", "warehouse", "willow_full", "nav2_bench_100by100_15"}) {
+    ROOMBA_RRT_REQUIRE_SHARED_MAP(name);
+    auto grid = std::make_shared<OccupancyGrid>(
+        geometry::loadMap(::roomba_rrt::test::sharedMapPath(name)).grid);
+    const geometry::ClearanceMap map(grid);
+    const geometry::ClearanceMap::Disc disc = map.disc(kRoomba);
+    const geometry::Rectangle e = grid->extent();
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    int free = 0, blocked = 0;
+    while (free + blocked < 20000) {
+      const Point2 a{e.min_x + u(rng) * (e.max_x - e.min_x),
+                     e.min_y + u(rng) * (e.max_y - e.min_y)};
+      // Half from a fraction of a cell to 2 m (log-uniform), half up to 3 m (uniform).
+      const double length = (free + blocked) % 2 ? 0.005 * std::pow(400.0, u(rng)) : 3 * u(rng);
+      const double angle = u(rng) * 2 * M_PI;
+      const Point2 b{a.x + length * std::cos(angle), a.y + length * std::sin(angle)};
+      if (!map.discFree(a, disc) || !map.discFree(b, disc)) continue;  // ends inside, free
+      const bool expected = !geometry::segmentMeetsBlocked(*grid, {a, b}, kRoomba);
+      ASSERT_EQ(map.sweepFree(a, b, disc), expected)
+          << name << " from " << a.x << "," << a.y << " to " << b.x << "," << b.y;
+      (expected ? free : blocked)++;
+    }
+    EXPECT_GT(free, 5000) << name;  // both answers exercised
+    EXPECT_GT(blocked, 50) << name;
+  }
+}
+
 TEST(MapPlanning, a_start_or_goal_in_a_wall_is_refused_naming_it) {
   ROOMBA_RRT_REQUIRE_SHARED_MAP("turtlebot3_world");
   auto grid = std::make_shared<OccupancyGrid>(

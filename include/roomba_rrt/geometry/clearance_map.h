@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "roomba_rrt/geometry/free_tiles.h"
 #include "roomba_rrt/geometry/geometry.h"
 #include "roomba_rrt/geometry/occupancy_grid.h"
 
@@ -45,6 +46,8 @@ class ClearanceMap {
   explicit ClearanceMap(std::shared_ptr<const OccupancyGrid> grid, bool unknown_is_free = false);
 
   const OccupancyGrid& grid() const { return *grid_; }
+  /// The tiles holding a free cell, where a sampler draws points (built with the map).
+  const FreeTiles& freeTiles() const { return free_tiles_; }
   bool unknownIsFree() const { return unknown_is_free_; }
   Disc disc(double radius) const;
 
@@ -67,6 +70,10 @@ class ClearanceMap {
   enum class Cell { kFree, kBlocked, kNear };
   Cell classify(int i, int j, const Disc& disc) const;
   bool insideExtent(const Point2& p, double radius) const;
+  /// True when the distance transform at the segment's midpoint alone proves the sweep free.
+  bool clearAroundMidpoint(const Point2& a, const Point2& b, const Disc& disc) const;
+  /// The exact sweep: the cells the segment passes through, and the squares near those in the band.
+  bool exactSweepFree(const Point2& a, const Point2& b, const Disc& disc) const;
   /// Whether hit(i, j) holds for a blocked cell beside a free one among columns [i0, i1] × rows
   /// [j0, j1] (clipped to the grid).
   template <class Hit>
@@ -75,6 +82,7 @@ class ClearanceMap {
   std::shared_ptr<const OccupancyGrid> grid_;
   bool unknown_is_free_;
   std::vector<std::int32_t> distance_;
+  FreeTiles free_tiles_;
 };
 
 }  // namespace roomba_rrt::geometry
