@@ -219,8 +219,11 @@ RoomRow roomStarRow(const std::vector<rp::Problem>& queries, double budget, cons
     iterations.push_back(iterationsWithin(q, options, budget));
   }
   const int runs = kRoomPairs * cfg.room_runs;
-  RoomRow row{
-      "rrt_star_" + std::to_string(static_cast<int>(budget * 1000 + 0.5)) + "ms", budget, {}, {}};
+  RoomRow row{"rrt_star_" + std::to_string(static_cast<int>(budget * 1000 + 0.5)) + "ms",
+              budget,
+              {},
+              {},
+              std::nullopt};
   row.ompl = measure(0, runs, [&](int i) { return ompl[i % kRoomPairs]->solveFor(budget); });
   row.ours = measure(0, runs, [&](int i) {
     const int pair = i % kRoomPairs;
