@@ -21,6 +21,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     groot2.json    groot2_bench --json (Groot2 monitoring: the monitor per tick, the server thread)
     sim.json       sim_bench --benchmark_out (Google Benchmark JSON; one robot and 1/10/100 robots)
     planning.json  planning_bench --benchmark_out (Google Benchmark JSON)
+    sensors.json   sensor_bench --benchmark_out (rays per second; ten robots with lidars)
     rtf.json       {"requested": F, "line": "<sim_rtf_probe's output line>"}
     multi_rtf.json the same for 10 robots (sim_rtf_probe --robots 10), each with a roomba_fsm
     service.json   plan_path_bench --json
@@ -491,6 +492,38 @@ def sim_rows(t, results):
           ours_text=f"{furnished / 1e6:.1f} M/s")
 
 
+def sensor_rows(t, results):
+    """The range sensors' core (issue 43 item 1): rays per second of an LDS scan, and ten robots
+    each with the LDS at 5 Hz in the simulator core."""
+    what = "Range sensors: one 360-ray LDS scan ({}), rays cast per second (exact against walls, furniture and map cells)"
+    try:
+        data = load(results, "sensors")
+    except Missing as e:
+        t.missing("sensors", what.format("furnished room, willow_full"), str(e), "≥ 10 M rays/s")
+        return
+    for key, run, where, judged in (
+            ("sensors_furnished", "BM_LdsScanFurnishedRoom", "furnished room, 3.5 m", True),
+            ("sensors_willow", "BM_LdsScanWillowFull/35", "willow_full, 3.5 m", True),
+            ("sensors_willow_30m", "BM_LdsScanWillowFull/300", "willow_full, a 30 m lidar", False)):
+        try:
+            rays = gbench(data, run, "items_per_second")
+        except (Missing, KeyError) as e:
+            t.missing(key, what.format(where), str(e))
+            continue
+        t.add(key, what.format(where), rays, target="≥ 10 M rays/s" if judged else None,
+              met=rays >= 10e6 if judged else None, ours_text=f"{fmt(rays / 1e6)} M rays/s")
+    what = ("Simulator core, 10 robots in the furnished room each with the LDS at 5 Hz: simulated "
+            "seconds per wall second (without sensors in brackets)")
+    try:
+        lidar = gbench(data, "BM_StepTenRobotsWithLidar/1", "sim_s_per_wall_s")
+        bare = gbench(data, "BM_StepTenRobotsWithLidar/0", "sim_s_per_wall_s")
+    except (Missing, KeyError) as e:
+        t.missing("sensors_ten_robots", what, str(e), "≥ 10×")
+        return
+    t.add("sensors_ten_robots", what, lidar, target="≥ 10×", met=lidar >= 10,
+          ours_text=f"{fmt(lidar)}× ({fmt(bare)}×)")
+
+
 def sim_robot_rows(t, results):
     """MultiRobotSimulator in the furnished room: the cost per robot must stay within 2x of one
     robot's step (robot-robot contact through a spatial index, not all pairs)."""
@@ -707,7 +740,8 @@ def main(argv):
     results = argv[1]
     t = Table()
     for rows in (rrt_rows, room_rows, map_rows, grid_rows, map_load_rows, huge_map_rows,
-                 planning_rows, behavior_rows, groot2_rows, sim_rows, sim_robot_rows, mapping_rows,
+                 planning_rows, behavior_rows, groot2_rows, sim_rows, sim_robot_rows, sensor_rows,
+                 mapping_rows,
                  rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
         try:
             rows(t, results)
