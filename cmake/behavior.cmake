@@ -81,19 +81,19 @@ add_executable(roomba_fsm src/nodes/roomba_fsm_node.cpp)
 target_link_libraries(roomba_fsm roomba_behavior_node)
 
 # Headless coverage experiments: the simulation core and a behaviour in one process (its
-# arguments, runs, statistics and pictures in src/tools/coverage_*).
-add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_arguments.cpp
-  src/tools/coverage_run.cpp src/tools/coverage_statistics.cpp src/tools/coverage_drawing.cpp
+# arguments and runs, the cleaning of an unknown world: roomba_coverage_run, also used by
+# mapping_bench; its statistics and pictures in src/tools/coverage_*).
+add_library(roomba_coverage_run STATIC src/tools/coverage_arguments.cpp src/tools/coverage_run.cpp
   src/tools/explore_clean.cpp)
-target_link_libraries(roomba_coverage roomba_tools roomba_behavior_core roomba_coverage_core
-  roomba_exploration roomba_mapping roomba_sensors)
+target_link_libraries(roomba_coverage_run PUBLIC roomba_tools roomba_behavior_core
+  roomba_coverage_core roomba_exploration roomba_mapping roomba_sensors)
+add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_statistics.cpp
+  src/tools/coverage_drawing.cpp)
+target_link_libraries(roomba_coverage roomba_coverage_run)
 
 if(CATKIN_ENABLE_TESTING)
   # roomba_coverage --unknown in process: exploring and cleaning a world the robot does not know.
-  roomba_rrt_gtest(explore_clean_test test/tools/explore_clean_test.cpp src/tools/explore_clean.cpp
-    src/tools/coverage_run.cpp src/tools/coverage_arguments.cpp
-    LINK roomba_tools roomba_behavior_core roomba_coverage_core roomba_exploration roomba_mapping
-    roomba_sensors)
+  roomba_rrt_gtest(explore_clean_test test/tools/explore_clean_test.cpp LINK roomba_coverage_run)
 endif()
 
 if(CATKIN_ENABLE_TESTING)

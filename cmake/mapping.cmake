@@ -42,11 +42,9 @@ endif()
 # in process (as roomba_coverage), feeding the mapper. With MRPT's occupancy grid
 # (libmrpt-maps-dev, optional: not a dependency of the package) it also times MRPT's update.
 find_package(mrpt-maps QUIET)
-add_executable(mapping_bench EXCLUDE_FROM_ALL bench/mapping_bench.cpp src/tools/coverage_run.cpp
-  src/tools/coverage_arguments.cpp)
+add_executable(mapping_bench EXCLUDE_FROM_ALL bench/mapping_bench.cpp)
 target_include_directories(mapping_bench PRIVATE ${PROJECT_SOURCE_DIR}/bench)
-target_link_libraries(mapping_bench roomba_mapping roomba_sensors roomba_tools roomba_behavior_core
-  roomba_coverage_core)
+target_link_libraries(mapping_bench roomba_coverage_run)
 target_compile_definitions(mapping_bench PRIVATE
   ROOMBA_RRT_SHARED_MAPS="${PROJECT_SOURCE_DIR}/../shared/maps")
 if(mrpt-maps_FOUND)
