@@ -238,5 +238,9 @@ for delay in 0.5 1.5 2.5; do
   check "... without a traceback" bash -c "! grep -q 'Traceback\|pop_var_context' '$work/early'"
   for _ in $(seq 100); do [ -z "$(leftovers)" ] && break; sleep 0.1; done
   check "... and nothing of it left running" [ -z "$(leftovers)" ]
+  if [ -n "$(leftovers)" ]; then  # what, for whoever reads the log
+    leftovers | sed 's/^/    left running: /'
+    tail -n 5 "$work/early" | sed 's/^/    its output: /'
+  fi
 done
 [ "$failures" = 0 ]
