@@ -180,7 +180,8 @@ goal=$(grep -o 'position: {x: [-0-9.]*, y: [-0-9.]*}' "$work/nav" | head -n 1 ||
 check "... suggesting a goal ($goal)" [ -n "$goal" ]
 goal_x=$(echo "$goal" | sed 's/.*x: \([-0-9.]*\),.*/\1/')
 goal_y=$(echo "$goal" | sed 's/.*y: \([-0-9.]*\)}.*/\1/')
-state=$(timeout 30 /usr/bin/python3 - "$goal_x" "$goal_y" 2>&1 <<'PY'
+# Its answer on stdout; rospy's log on stderr (actionlib may log about goals of other clients).
+state=$(timeout 30 /usr/bin/python3 - "$goal_x" "$goal_y" 2>"$work/goal_log" <<'PY'
 import sys, rospy, actionlib
 from actionlib_msgs.msg import GoalStatus
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
@@ -199,6 +200,7 @@ client.cancel_all_goals()
 PY
 )
 check "... which navigation takes ($state)" [ "$state" = taken ]
+[ "$state" = taken ] || sed 's/^/    its log: /' "$work/goal_log"
 kill -TERM -- "-$nav_run"
 rc=0
 wait "$nav_run" || rc=$?
