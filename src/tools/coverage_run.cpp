@@ -113,6 +113,7 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
   std::unique_ptr<sensors::Scanner> scanner;
   if (behavior.sees()) scanner = std::make_unique<sensors::Scanner>(simulator.world());
   const std::vector<sensors::Scan> no_scans;
+  std::vector<robot::Pose2D> scan_poses(1);  // the one robot's, for the scanner
   const long steps = std::lround(o.duration / step);
   Run run;
   std::size_t next_checkpoint = 0, next_ideal = 0;
@@ -132,7 +133,9 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
     const robot::Pose2D pose = simulator.pose();  // written and drawn: where the robot is
     seen.emplace_back(bumper, pose);
     if (seen.size() > static_cast<std::size_t>(o.lag) + 1) seen.pop_front();
-    const std::vector<sensors::Scan>& scans = scanner ? scanner->scan(k * step, {pose}) : no_scans;
+    scan_poses[0] = pose;
+    const std::vector<sensors::Scan>& scans =
+        scanner ? scanner->scan(k * step, scan_poses) : no_scans;
     const robot::Velocity cmd =
         behavior.tick(seen.front().first, seen.front().second, k * step,
                       (k - static_cast<long>(seen.size()) + 1) * step, scans, pose);

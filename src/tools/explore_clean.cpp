@@ -96,13 +96,17 @@ void ExploreClean::nextGoal(double time, const robot::Pose2D& pose, bool arrived
   const auto grid = std::make_shared<const geometry::OccupancyGrid>(builtGrid(true));
   const geometry::ClearanceMap known(grid);
   const geometry::Point2 at{pose.x, pose.y};
+  // Found once; each give-up below only takes more of their cells away.
+  const std::vector<exploration::Frontier> found =
+      exploration::findFrontiers(seen, frontier_options_.min_cells);
   std::optional<exploration::FrontierGoal> goal =
-      exploration::nearestFrontier(known, seen, at, openFrontiers(seen), frontier_options_);
+      exploration::nearestFrontier(known, seen, at, openFrontiers(found, seen), frontier_options_);
   // Arrived, and the nearest frontier is still in view from here: the robot cannot see it
   // from where it may stand (a shadow under furniture, a gap it cannot reach): given up.
   while (goal && arrived && geometry::distance(goal->goal, at) < kSameGoal) {
     given_up_.push_back(goal->goal);
-    goal = exploration::nearestFrontier(known, seen, at, openFrontiers(seen), frontier_options_);
+    goal = exploration::nearestFrontier(known, seen, at, openFrontiers(found, seen),
+                                        frontier_options_);
   }
   if (!goal) {
     // Nothing to explore from what the map says now: on the way to a goal, go on; else the
@@ -207,10 +211,9 @@ geometry::OccupancyGrid ExploreClean::builtGrid(bool strict) const {
 }
 
 std::vector<exploration::Frontier> ExploreClean::openFrontiers(
-    const geometry::OccupancyGrid& grid) const {
+    std::vector<exploration::Frontier> frontiers, const geometry::OccupancyGrid& grid) const {
   std::vector<exploration::Frontier> open;
-  for (exploration::Frontier& frontier :
-       exploration::findFrontiers(grid, frontier_options_.min_cells)) {
+  for (exploration::Frontier& frontier : frontiers) {
     auto near_given_up = [&](int cell) {
       const geometry::Point2 c{grid.origin.x + (cell % grid.width + 0.5) * grid.resolution,
                                grid.origin.y + (cell / grid.width + 0.5) * grid.resolution};

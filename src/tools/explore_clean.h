@@ -83,8 +83,10 @@ class ExploreClean {
   /// where clearly free (kClearlyFree), and free where the robot stood (footprints_): the map
   /// the robot plans on. Not strict: the map its frontiers are found on.
   geometry::OccupancyGrid builtGrid(bool strict) const;
-  /// The frontiers of the map without those round given-up goals.
-  std::vector<exploration::Frontier> openFrontiers(const geometry::OccupancyGrid& grid) const;
+  /// `frontiers` (of `grid`) without their cells round given-up goals, and without those that
+  /// keep fewer than min_cells.
+  std::vector<exploration::Frontier> openFrontiers(std::vector<exploration::Frontier> frontiers,
+                                                   const geometry::OccupancyGrid& grid) const;
   /// `grid` as a world (unknown and occupied cells as walls) with the robot at `pose`.
   world::World builtWorld(std::shared_ptr<const geometry::OccupancyGrid> grid,
                           const robot::Pose2D& pose) const;
