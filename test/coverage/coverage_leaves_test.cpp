@@ -543,6 +543,13 @@ struct CleaningLoop {
         planner(std::make_shared<const CoveragePlanner>(world)),
         sim(world),
         nav(cleaningConfig(world, planner), 1, kCoverageTree) {}
+  /// A chair in the simulated room that the planner does not know, in the middle of the lab
+  /// room's first rows.
+  void addUnknownChair() {
+    world::World with_chair = world;
+    with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
+    sim = sim::Simulator(with_chair);
+  }
   void run(double seconds) {
     for (long i = 0; i < std::lround(seconds * 60); ++i) {
       const robot::BumperState bumper = sim.senseContact();
@@ -589,9 +596,7 @@ TEST(CoverageTree, after_a_bump_backs_up_and_resumes_instead_of_starting_over) {
   // meets it is resumed from behind the chair until it is given up (skip_after="3"): the floor
   // beyond the chair on those rows stays dirty, but the rest of the plan goes on.
   CleaningLoop loop("roomba_world.yaml");
-  world::World with_chair = loop.world;
-  with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
-  loop.sim = sim::Simulator(with_chair);
+  loop.addUnknownChair();
   loop.run(600);
   const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
   ASSERT_NE(progress, nullptr);
@@ -687,9 +692,7 @@ TEST(CoverageTree, state_reads_idle_only_once_the_floor_is_done_not_after_each_b
   // returns RUNNING and commands nothing (the resume is planned, the row starts at the next
   // tick): that tick must not read as idle.
   CleaningLoop loop("roomba_world.yaml");
-  world::World with_chair = loop.world;
-  with_chair.room.circles.push_back({{1.5, 3.0}, 0.2});
-  loop.sim = sim::Simulator(with_chair);
+  loop.addUnknownChair();
   loop.run(600);
   const CoverageProgress* progress = findProgress(loop.nav.tree().blackboard());
   ASSERT_NE(progress, nullptr);
