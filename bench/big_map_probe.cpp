@@ -20,7 +20,6 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -28,6 +27,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
 
+#include "far_apart_pairs.h"
 #include "map_messages.h"
 #include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/geometry/map_file.h"
@@ -127,26 +127,11 @@ int main(int argc, char** argv) {
 
   // The start and goal of every request, drawn on the probe's own inflated copy.
   const geometry::ClearanceMap clearance(grid);
-  const geometry::ClearanceMap::Disc disc = clearance.disc(kRadius);
-  const geometry::Rectangle e = grid->extent();
-  std::mt19937 random(2024);
-  std::uniform_real_distribution<double> x(e.min_x, e.max_x), y(e.min_y, e.max_y);
-  auto freePoint = [&] {
-    for (;;) {
-      const geometry::Point2 p{x(random), y(random)};
-      if (clearance.discFree(p, disc)) return p;
-    }
-  };
-  const double far_apart = 0.5 * std::hypot(e.max_x - e.min_x, e.max_y - e.min_y);
+  const auto pairs = roomba_rrt::bench::farApartPairs(clearance, kRadius, plans + 1);
   std::vector<nav_msgs::GetPlan> requests(plans + 1);
-  for (nav_msgs::GetPlan& r : requests) {
-    geometry::Point2 a, b;
-    do {
-      a = freePoint();
-      b = freePoint();
-    } while (std::hypot(a.x - b.x, a.y - b.y) < far_apart);
-    r.request.start = pose(a);
-    r.request.goal = pose(b);
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    requests[i].request.start = pose(pairs[i].first);
+    requests[i].request.goal = pose(pairs[i].second);
   }
 
   ros::Publisher publisher = nh.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);

@@ -36,13 +36,14 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "arguments.h"
+#include "far_apart_pairs.h"
 #include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/planner.h"
@@ -196,24 +197,12 @@ PlanStats planAcross(const std::shared_ptr<const geometry::ClearanceMap>& map, i
   options.step = kStepCells * map->grid().resolution;
   options.goal_bias = 0.05;
   options.max_iterations = 2000000;
-  const geometry::ClearanceMap::Disc disc = map->disc(kRadius);
-  std::mt19937 random(2024);
-  std::uniform_real_distribution<double> x(e.min_x, e.max_x), y(e.min_y, e.max_y);
-  auto freePoint = [&] {
-    for (;;) {
-      const geometry::Point2 p{x(random), y(random)};
-      if (map->discFree(p, disc)) return p;
-    }
-  };
-  const double far_apart = 0.5 * std::hypot(e.max_x - e.min_x, e.max_y - e.min_y);
+  const auto pairs = roomba_rrt::bench::farApartPairs(*map, kRadius, plans);
   PlanStats stats;
   std::vector<double> ms;
   for (int i = 0; i < plans; ++i) {
     planning::Problem p = base;
-    do {
-      p.start = freePoint();
-      p.goal = freePoint();
-    } while (geometry::distance(p.start, p.goal) < far_apart);
+    std::tie(p.start, p.goal) = pairs[i];
     options.seed = 42u + static_cast<std::uint32_t>(i);
     const double t0 = threadCpuSeconds();
     const planning::PlanResult result = planning::plan(p, options);
