@@ -219,7 +219,10 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
   ends.clear();
   // The rays' directions by turning the first by the increment (no sine per ray): the error
   // after 10^5 rays is about 10^-11 rad.
-  const double first = pose.theta + scan.angle_min;
+  // Each angle within a turn before the sum: a heading and an angle_min that are finite but
+  // near ±1.8e308 overflow to −inf together, and cos(−inf) is NaN.
+  const double first =
+      std::remainder(pose.theta, 2 * M_PI) + std::remainder(scan.angle_min, 2 * M_PI);
   const double turn_c = std::cos(scan.angle_increment), turn_s = std::sin(scan.angle_increment);
   double c = std::cos(first), s = std::sin(first);
   for (std::size_t k = 0; k < scan.count; ++k) {

@@ -4,6 +4,7 @@
 // oracle; +inf rays; scans that must be refused; the bumper's marks; a map that grows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -240,6 +241,23 @@ TEST(OccupancyMapper, ScansThatDoNotAddUpAreRefusedNamingTheFieldAndChangeNothin
   EXPECT_EQ(mapper.scans(), 0u);
   for (std::int8_t v : mapper.grid().cells) ASSERT_EQ(v, OccupancyGrid::kUnknown);
   EXPECT_EQ(mapper.addScan({0, 0, 0}, good), "");
+}
+
+TEST(OccupancyMapper, HeadingAndAngleMinNearTheLargestDoubleAreTakenModuloATurn) {
+  // Both finite, but their sum overflows to −inf (scan_fuzzer found it): the rays go where the
+  // two angles within a turn point, as for any other heading.
+  const double heading = -std::numeric_limits<double>::max(), angle_min = -9.16471e306;
+  const std::vector<float> ranges = {1.2f, 0.8f, 1.5f};
+  const auto map = [&](double theta, double first) {
+    OccupancyMapper mapper(MapperOptions{});
+    const ScanView scan{first, first + 0.2, 0.1, 0.1, 3.5, ranges.data(), ranges.size()};
+    EXPECT_EQ(mapper.addScan({0.3, -0.2, theta}, scan), "");
+    return mapper.grid().cells;
+  };
+  const std::vector<std::int8_t> reduced =
+      map(std::remainder(heading, 2 * M_PI), std::remainder(angle_min, 2 * M_PI));
+  EXPECT_EQ(std::count(reduced.begin(), reduced.end(), OccupancyGrid::kOccupied), 3);
+  EXPECT_EQ(map(heading, angle_min), reduced);
 }
 
 TEST(OccupancyMapper, HostileScansNeverCrashNorLeaveAnythingButTrinaryCells) {
