@@ -83,10 +83,9 @@ target_link_libraries(roomba_fsm roomba_behavior_node)
 # Headless coverage experiments: the simulation core and a behaviour in one process (its
 # arguments and runs, the cleaning of an unknown world: roomba_coverage_run, also used by
 # mapping_bench; its statistics and pictures in src/tools/coverage_*).
-add_library(roomba_coverage_run STATIC src/tools/coverage_arguments.cpp src/tools/coverage_run.cpp
-  src/tools/explore_clean.cpp)
+add_library(roomba_coverage_run STATIC src/tools/coverage_arguments.cpp src/tools/coverage_run.cpp)
 target_link_libraries(roomba_coverage_run PUBLIC roomba_tools roomba_behavior_core
-  roomba_coverage_core roomba_exploration roomba_mapping roomba_sensors)
+  roomba_coverage_core roomba_explore_clean roomba_sensors)
 add_executable(roomba_coverage src/tools/roomba_coverage.cpp src/tools/coverage_statistics.cpp
   src/tools/coverage_drawing.cpp)
 target_link_libraries(roomba_coverage roomba_coverage_run)

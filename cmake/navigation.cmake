@@ -19,11 +19,12 @@ target_link_libraries(roomba_nav_core PUBLIC roomba_behavior_core roomba_world_p
   roomba_robot Threads::Threads)
 
 # roomba_bt: the lab's tree, or a navigation tree behind move_base's interface (the move_base
-# action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client). The conversions are
-# unit-tested without a master (nav_ros_test).
+# action, /move_base_simple/goal, tf2, ~plan; the ~plan_path client), or with ~unknown exploring
+# and cleaning from `scan`. The conversions are unit-tested without a master (nav_ros_test).
 add_executable(roomba_bt src/nodes/roomba_bt_node.cpp src/ros/nav_behavior.cpp
   src/ros/nav_ros.cpp src/ros/planner_ros.cpp)
-target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core roomba_coverage_core)
+target_link_libraries(roomba_bt roomba_behavior_node roomba_nav_core roomba_coverage_core
+  roomba_explore_clean roomba_node_common)
 add_dependencies(roomba_bt ${${PROJECT_NAME}_EXPORTED_TARGETS})
 
 # Goal message to first non-zero /cmd_vel over ROS, in wall time (scripts/bench).
@@ -64,6 +65,8 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/nav_map.test DEPENDENCIES nav_rostest)
   # Systematic cleaning: the coverage tree cleans the furnished room, then stands still.
   add_rostest(test/navigation/clean.test DEPENDENCIES nav_rostest)
+  # A home it has never seen: roomba_mapper's /map, roomba_bt ~unknown explores, then cleans.
+  add_rostest(test/navigation/clean_unknown.test DEPENDENCIES nav_rostest)
   if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
     add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
   elseif("$ENV{CI}" STREQUAL "true")
@@ -76,7 +79,7 @@ if(CATKIN_ENABLE_TESTING)
   if(TARGET nav_rostest)
     target_include_directories(nav_rostest PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(nav_rostest roomba_geometry ${catkin_LIBRARIES})
-    add_dependencies(nav_rostest roomba_bt roomba_sim rrt_planner
+    add_dependencies(nav_rostest roomba_bt roomba_sim rrt_planner roomba_mapper
       ${${PROJECT_NAME}_EXPORTED_TARGETS})
   endif()
 

@@ -1,18 +1,15 @@
-#include "explore_clean.h"
+#include "roomba_rrt/exploration/explore_clean.h"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "roomba_rrt/mapping/sensor_scan.h"
-#include "roomba_rrt/util/invalid_input.h"
+#include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
-namespace roomba_rrt::tools {
+namespace roomba_rrt::exploration {
 namespace {
 
-const std::string kExploreTree = ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml";
-const std::string kCleanTree = ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml";
 const std::string kLooking = "Explore";
 
 /// The map as the robot starts it: 0.05 m cells (gmapping's default), 10 m round the robot,
@@ -29,20 +26,28 @@ mapping::MapperOptions mapperOptions(const robot::Pose2D& start) {
 
 }  // namespace
 
-ExploreClean::ExploreClean(const world::World& world, const behavior::RoombaParams& params,
-                           std::uint32_t seed, double pose_latency)
-    : robot_(world.robot()),
-      coverage_cell_size_(world.coverage_cell_size),
+navigation::NavLeafConfig cleaningConfig(const world::World& world,
+                                         const behavior::RoombaParams& params,
+                                         std::shared_ptr<const coverage::CoveragePlanner> planner) {
+  navigation::NavLeafConfig config =
+      navigation::inProcessNavConfig(world_planning::roomProblem(world));
+  config.params = params;
+  config.follower.rate = params.rate;
+  config.more_leaves.push_back(coverage::coverageLeaves(std::move(planner)));
+  return config;
+}
+
+ExploreClean::ExploreClean(const world::RobotSpec& robot, double coverage_cell_size,
+                           const behavior::RoombaParams& params, std::uint32_t seed,
+                           double pose_latency, ExploreCleanTrees trees)
+    : robot_(robot),
+      coverage_cell_size_(coverage_cell_size),
       params_(params),
       seed_(seed),
       pose_latency_(pose_latency),
-      mapper_(mapperOptions(world.robot().initial_pose)),
-      lattice_(mapper_.origin()) {
-  if (robot_.sensors.empty()) {
-    throw util::InvalidInput("sensors",
-                             "exploring an unknown world needs a range sensor on the "
-                             "robot (a world file without `sensors:` has the lidar)");
-  }
+      mapper_(mapperOptions(robot.initial_pose)),
+      lattice_(mapper_.origin()),
+      trees_(std::move(trees)) {
   frontier_options_.robot_radius = robot_.radius + kGoalMargin;
   frontier_options_.view_distance = kViewDistance;
   footprints_.push_back({robot_.initial_pose.x, robot_.initial_pose.y});
@@ -50,22 +55,26 @@ ExploreClean::ExploreClean(const world::World& world, const behavior::RoombaPara
 
 ExploreClean::~ExploreClean() = default;
 
+std::string ExploreClean::addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
+  std::string why = mapper_.addScan(sensor, scan);
+  if (why.empty()) markHits(sensor, scan);
+  return why;
+}
+
+void ExploreClean::setParams(const behavior::RoombaParams& params) {
+  params_ = params;
+  if (explore_) explore_->setRoombaParams(params);
+  if (clean_) clean_->setRoombaParams(params);
+}
+
 robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper,
-                                   const robot::Pose2D& pose, double pose_stamp,
-                                   const std::vector<sensors::Scan>& scans,
-                                   const robot::Pose2D& scan_pose) {
-  for (const sensors::Scan& scan : scans) {
-    if (scan.robot != 0) continue;
-    const sensors::RangeSensorSpec& spec = robot_.sensors[scan.sensor];
-    const robot::Pose2D sensor = mapping::mountedPose(scan_pose, spec.mount);
-    mapper_.addScan(sensor, mapping::scanView(spec, scan.ranges));
-    markHits(sensor, spec, scan.ranges);
-  }
+                                   const robot::Pose2D& pose, double pose_stamp) {
   if (bumper.pressed) mapper_.addBump(pose, robot_.radius, bumper);
   if (clean_) {
     clean_->observeTiming(time, pose_stamp);
     return clean_->tick(bumper, pose);
   }
+  if (mapper_.scans() == 0) return stop_;  // nothing seen yet (over ROS the first scan may lag)
 
   const double look_every = none_since_ >= 0 ? 0.2 : kReplanPeriod;
   if ((!explore_ && time - last_look_ >= look_every) || time - last_look_ >= kReplanPeriod) {
@@ -125,29 +134,31 @@ void ExploreClean::nextGoal(double time, const robot::Pose2D& pose, bool arrived
   config.params = params_;
   config.follower.rate = params_.rate;
   config.pose_latency = pose_latency_;
-  explore_ = std::make_unique<navigation::NavBt>(config, seed_, kExploreTree);
+  explore_ = std::make_unique<navigation::NavBt>(config, seed_, trees_.explore);
   goal_ = goal->goal;
   goal_since_ = time;
   explore_->setGoal({goal_.x, goal_.y, std::atan2(goal_.y - pose.y, goal_.x - pose.x)});
 }
 
-void ExploreClean::markHits(const robot::Pose2D& sensor, const sensors::RangeSensorSpec& spec,
-                            const std::vector<float>& ranges) {
-  const double step = spec.angleIncrement(), resolution = mapper_.resolution();
+void ExploreClean::markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
+  const double resolution = mapper_.resolution();
   auto mark = [&](const geometry::Point2& p) {
     hits_.insert(cellKey(static_cast<std::int64_t>(std::floor((p.x - lattice_.x) / resolution)),
                          static_cast<std::int64_t>(std::floor((p.y - lattice_.y) / resolution))));
   };
   bool previous_hit = false;
   geometry::Point2 previous;
-  for (std::size_t k = 0; k < ranges.size(); ++k) {
-    if (!std::isfinite(ranges[k])) {
+  for (std::size_t k = 0; k < scan.count; ++k) {
+    const double range = scan.ranges[k];
+    // No return (+inf, or beyond range_max), or none to trust (NaN, below range_min).
+    if (!(range >= scan.range_min && range <= scan.range_max)) {
       previous_hit = false;
       continue;
     }
     // A hair beyond the return, inside what it hit.
-    const double angle = sensor.theta + spec.angle_min + static_cast<double>(k) * step;
-    const double r = ranges[k] + kInside;
+    const double angle =
+        sensor.theta + scan.angle_min + static_cast<double>(k) * scan.angle_increment;
+    const double r = range + kInside;
     const geometry::Point2 hit{sensor.x + r * std::cos(angle), sensor.y + r * std::sin(angle)};
     mark(hit);
     // Two neighbouring returns close together lie on one obstacle: the chord between them
@@ -246,10 +257,12 @@ void ExploreClean::startCleaning(double time, const robot::Pose2D& pose) {
   explore_.reset();
   footprints_.push_back({pose.x, pose.y});
   const auto grid = std::make_shared<const geometry::OccupancyGrid>(builtGrid(true));
-  cleaning_ = std::make_unique<Cleaning>(builtWorld(grid, pose), params_);
-  navigation::NavLeafConfig config = cleaning_->config;
+  const world::World world = builtWorld(grid, pose);
+  navigation::NavLeafConfig config = cleaningConfig(
+      world, params_,
+      std::make_shared<const coverage::CoveragePlanner>(world, coverage::cleaningOptions(world)));
   config.pose_latency = pose_latency_;
-  clean_ = std::make_unique<navigation::NavBt>(config, seed_, kCleanTree);
+  clean_ = std::make_unique<navigation::NavBt>(config, seed_, trees_.clean);
 }
 
 const std::string& ExploreClean::stateName() const {
@@ -264,4 +277,4 @@ behavior::RoombaState ExploreClean::state() const {
   return behavior::RoombaState::kRotate;
 }
 
-}  // namespace roomba_rrt::tools
+}  // namespace roomba_rrt::exploration

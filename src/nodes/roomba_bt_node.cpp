@@ -1,7 +1,8 @@
 // roomba_bt: a behavior tree read from ~tree_file (default config/roomba_tree.xml, the lab's
 // Roomba). A tree with navigation or cleaning leaves (config/roomba_nav_tree.xml,
 // config/roomba_coverage_tree.xml) runs as navigation behind move_base's interface
-// (nav_behavior.h); see behavior_node.h for the rest.
+// (nav_behavior.h), and with ~unknown the cleaning tree cleans a home the robot explores and maps
+// first; see behavior_node.h for the rest.
 //
 // `roomba_bt --tree-nodes-model` prints the BehaviorTree.CPP v4 <TreeNodesModel> of every node
 // our trees can use (for Groot2) and exits, without a master; `roomba_bt --print-log FILE` prints
@@ -86,14 +87,23 @@ int main(int argc, char** argv) {
         ROS_INFO("roomba_bt: tree from %s", tree_file.c_str());
         const std::string log_file = node_params.get<std::string>("log_file", "");
         std::unique_ptr<roomba_rrt::behavior::RoombaBehavior> behavior;
-        if (roomba_rrt::navigation::usesNavigationLeaves(
+        // ~unknown: exploring and cleaning a home it has never seen, with tree_file cleaning
+        // once it has been explored (nav_behavior.h).
+        if (node_params.get("unknown", false, /*write_back=*/false) ||
+            roomba_rrt::navigation::usesNavigationLeaves(
                 tree_file, {roomba_rrt::coverage::coverageLeaves(nullptr)})) {
           behavior =
               roomba_rrt::nav_node::makeNavBehavior(node_params, params, seed, tree_file, output);
         } else {
           behavior = std::make_unique<RoombaBt>(params, seed, tree_file);
         }
-        if (!log_file.empty()) startLog(*behavior->behaviorTree(), log_file, tree_file);
+        if (!log_file.empty()) {
+          if (behavior->behaviorTree() == nullptr) {
+            throw roomba_rrt::util::InvalidInput(
+                "~log_file", "cannot record with ~unknown (its trees change as it explores)");
+          }
+          startLog(*behavior->behaviorTree(), log_file, tree_file);
+        }
         return behavior;
       },
       roomba_rrt::navigation::treeNodesModel({roomba_rrt::coverage::coverageLeaves(nullptr)}));

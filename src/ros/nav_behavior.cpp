@@ -20,10 +20,12 @@
 #include "planner_ros.h"
 #include "reconfigure.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/explore_clean.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/util/require.h"
 #include "roomba_rrt/world/world_file.h"
 #include "roomba_rrt/world_planning/room_problem.h"
+#include "scan_input.h"
 
 namespace roomba_rrt::nav_node {
 namespace {
@@ -40,6 +42,11 @@ struct Settings {
   double clearance = navigation::kDefaultClearance;
   std::string global_frame = "map", robot_frame = "base_link";
   navigation::NavLeafConfig config;
+  /// ~unknown: the robot explores and cleans a home it does not know, with the map it builds
+  /// from `scan` (exploration::ExploreClean); world holds only its robot then.
+  bool unknown = false;
+  exploration::ExploreCleanTrees trees;
+  double transform_timeout = 0.2;  ///< s a scan waits for tf (roomba_mapper's ~transform_timeout)
 };
 
 /// The ~plan_path client behind ComputePath: one persistent connection per planner, made again
@@ -78,9 +85,15 @@ class NavBehavior final : public behavior::RoombaBehavior {
       : RoombaBehavior(params, seed),
         output_(output),
         settings_(std::move(settings)),
-        nav_(settings_.config, seed, tree_file),
+        seed_(seed),
         listener_(buffer_),
-        server_(nh_, "move_base", false) {
+        server_(nh_, "move_base", false),
+        scans_(buffer_, settings_.global_frame, settings_.transform_timeout, "roomba_bt") {
+    if (settings_.unknown) {
+      scan_sub_ = nh_.subscribe("scan", 5, &NavBehavior::onScan, this);
+    } else {
+      nav_ = std::make_unique<navigation::NavBt>(settings_.config, seed, tree_file);
+    }
     context_.state_name = &kIdle;
     plan_pub_ = ros::NodeHandle("~").advertise<nav_msgs::Path>("plan", 1, /*latch=*/true);
     coverage_pub_ =
@@ -97,11 +110,13 @@ class NavBehavior final : public behavior::RoombaBehavior {
     startFollowerReconfigure();
   }
 
-  bt::Tree* behaviorTree() override { return &nav_.tree(); }
+  /// The tree, to watch and record; none with ~unknown (its trees come and go as it explores).
+  bt::Tree* behaviorTree() override { return nav_ ? &nav_->tree() : nullptr; }
 
   /// The lab's constants for the cleaning leaves (BehaviorNode's dynamic_reconfigure).
   void setParams(const behavior::RoombaParams& params) override {
-    nav_.setRoombaParams(params);
+    if (nav_) nav_->setRoombaParams(params);
+    if (explore_) explore_->setParams(params);
     RoombaBehavior::setParams(params);
   }
 
@@ -113,6 +128,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
  private:
   robot::Velocity step() {
     robot::Pose2D pose;
+    double stamp = 0;
     try {
       const auto t =
           buffer_.lookupTransform(settings_.global_frame, settings_.robot_frame, ros::Time(0));
@@ -121,30 +137,68 @@ class NavBehavior final : public behavior::RoombaBehavior {
       p.position.y = t.transform.translation.y;
       p.orientation = t.transform.rotation;
       pose = toPose2D(p);
-      // How late the commands land (the cleaning slows down when they do): the tick's time and
-      // the stamp of the pose it acts on, both the simulator's clock.
-      nav_.observeTiming(ros::Time::now().toSec(), t.header.stamp.toSec());
+      stamp = t.header.stamp.toSec();
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5.0, "no robot pose (%s -> %s): %s; standing still",
                         settings_.global_frame.c_str(), settings_.robot_frame.c_str(), e.what());
       return {};
     }
-    const robot::Velocity cmd = nav_.tick(bumper_, pose);
-    // ~state names the active leaf; "Idle" once the tree is done and the robot stands (the tree
-    // keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and the
-    // resume (NavBt::idle).
-    context_.state_name = nav_.idle() ? &kIdle : &nav_.stateName();
-    publishPlan();
-    publishCoveragePath();
-    reportCoverage();
+    // How late the commands land (the cleaning slows down when they do): the tick's time and
+    // the stamp of the pose it acts on, both the simulator's clock.
+    const double now = ros::Time::now().toSec();
+    robot::Velocity cmd;
+    navigation::NavBt* active = nav_.get();
+    if (nav_) {
+      nav_->observeTiming(now, stamp);
+      cmd = nav_->tick(bumper_, pose);
+      // ~state names the active leaf; "Idle" once the tree is done and the robot stands (the
+      // tree keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and
+      // the resume (NavBt::idle).
+      context_.state_name = nav_->idle() ? &kIdle : &nav_->stateName();
+    } else {
+      if (!explore_) startExploring(pose);
+      scans_.drain(ros::Time::now());  // a scan that came before its tf: into the map now
+      cmd = explore_->tick(now, bumper_, pose, stamp);
+      context_.state_name = explore_->done() ? &kIdle : &explore_->stateName();
+      active = explore_->activeTree();
+    }
+    if (active) {
+      publishPlan(*active);
+      publishCoveragePath(*active);
+      reportCoverage(*active);
+    }
     report(pose);
     return cmd;
   }
 
+  /// ~unknown: the map starts round the robot's first pose.
+  void startExploring(const robot::Pose2D& pose) {
+    world::RobotSpec robot = settings_.world.robot();
+    robot.initial_pose = pose;
+    explore_ = std::make_unique<exploration::ExploreClean>(
+        robot, settings_.world.coverage_cell_size, params(), seed_, settings_.config.pose_latency,
+        settings_.trees);
+    ROS_INFO("roomba_bt: exploring from (%.2f, %.2f) with the map built from %s", pose.x, pose.y,
+             scan_sub_.getTopic().c_str());
+  }
+
+  /// ~unknown: a scan into the map, with its frame's pose in the global frame at its stamp.
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
+    if (!explore_) return;  // no pose yet: nowhere to start the map
+    scans_.push(scan->header.frame_id, scan->header.stamp,
+                [this, scan](const geometry_msgs::Transform& transform) {
+                  robot::Pose2D sensor;
+                  std::string why = nodes::planarPose(transform, &sensor);
+                  if (why.empty()) why = explore_->addScan(sensor, nodes::scanView(*scan));
+                  if (!why.empty())
+                    ROS_WARN_THROTTLE(5.0, "roomba_bt: scan skipped: %s", why.c_str());
+                });
+  }
+
   /// ~coverage_path: what is left of the cleaning tree's coverage plan, from the leg being
   /// driven on, whenever the plan or the leg changes (empty once everything is driven).
-  void publishCoveragePath() {
-    const coverage::CoverageProgress* progress = coverage::findProgress(nav_.tree().blackboard());
+  void publishCoveragePath(navigation::NavBt& nav) {
+    const coverage::CoverageProgress* progress = coverage::findProgress(nav.tree().blackboard());
     if (progress == nullptr) return;
     const CoverageMark mark{progress->plan.legs.data(), progress->plan.legs.size(), progress->leg};
     if (mark == coverage_mark_) return;
@@ -155,11 +209,11 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   /// Once the cleaning is done: what it reached and what it gave up, on ~coverage_report and in
   /// a line (a warning when rows were given up). Until then, the latency's worst.
-  void reportCoverage() {
-    const coverage::CoverageProgress* progress = coverage::findProgress(nav_.tree().blackboard());
+  void reportCoverage(navigation::NavBt& nav) {
+    const coverage::CoverageProgress* progress = coverage::findProgress(nav.tree().blackboard());
     if (progress == nullptr) return;
-    max_latency_ = std::max(max_latency_, nav_.latency());
-    slowest_ = std::min(slowest_, nav_.speedScale());
+    max_latency_ = std::max(max_latency_, nav.latency());
+    slowest_ = std::min(slowest_, nav.speedScale());
     if (!progress->done()) {
       reported_ = false;
       return;
@@ -203,7 +257,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   void report(const robot::Pose2D& pose) {
     if (!goal_open_) return;
     move_base_msgs::MoveBaseResult result;
-    switch (nav_.outcome()) {
+    switch (nav_->outcome()) {
       case navigation::GoalOutcome::kSucceeded:
         goal_open_ = false;
         ROS_INFO("goal reached at (%.2f, %.2f)", pose.x, pose.y);
@@ -211,8 +265,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
         return;
       case navigation::GoalOutcome::kAborted:
         goal_open_ = false;
-        ROS_WARN("goal aborted: %s", nav_.message().c_str());
-        server_.setAborted(result, nav_.message());
+        ROS_WARN("goal aborted: %s", nav_->message().c_str());
+        server_.setAborted(result, nav_->message());
         return;
       case navigation::GoalOutcome::kNone:
       case navigation::GoalOutcome::kActive:
@@ -225,8 +279,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
     server_.publishFeedback(feedback);
   }
 
-  void publishPlan() {
-    const navigation::Path* path = nav_.path();
+  void publishPlan(const navigation::NavBt& nav) {
+    const navigation::Path* path = nav.path();
     const auto same = [](const planning::Point2& a, const planning::Point2& b) {
       return a.x == b.x && a.y == b.y;
     };
@@ -248,13 +302,19 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   void onGoal() {
     const auto goal = server_.acceptNewGoal();  // the goal that was active is preempted
+    if (!nav_) {
+      ROS_WARN("goal refused: roomba_bt explores and cleans on its own (~unknown)");
+      server_.setAborted(move_base_msgs::MoveBaseResult(),
+                         "roomba_bt explores and cleans on its own (~unknown): no goals");
+      return;
+    }
     robot::Pose2D target;
     std::string problem = toGlobal(goal->target_pose, target);
     if (problem.empty()) {
       problem = goalPlaceProblem(settings_.world, settings_.clearance, target.x, target.y);
     }
     if (!problem.empty()) {
-      nav_.cancelGoal();
+      nav_->cancelGoal();
       goal_open_ = false;
       stop();
       ROS_WARN("goal refused: %s", problem.c_str());
@@ -262,7 +322,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
       return;
     }
     ROS_INFO("goal (%.2f, %.2f, %.2f rad)", target.x, target.y, target.theta);
-    nav_.setGoal(target);
+    nav_->setGoal(target);
     goal_open_ = true;
     ticks_since_feedback_ = 0;
     // Tick at once so that planning starts now, not at the next timer event.
@@ -271,7 +331,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   void onPreempt() {
     if (server_.isNewGoalAvailable()) return;  // onGoal follows and replaces the goal
-    nav_.cancelGoal();
+    if (!nav_) return;                         // no goal was taken (~unknown)
+    nav_->cancelGoal();
     goal_open_ = false;
     stop();
     ROS_INFO("goal canceled");
@@ -330,7 +391,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
           next.max_angular_speed = c.max_angular_speed;
           next.xy_tolerance = c.xy_tolerance;
           next.yaw_tolerance = c.yaw_tolerance;
-          nav_.setFollowerParams(next);
+          if (nav_) nav_->setFollowerParams(next);
           settings_.config.follower = next;
         });
   }
@@ -339,11 +400,16 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   nodes::CommandOutput& output_;  ///< the node's /cmd_vel
   Settings settings_;
-  navigation::NavBt nav_;
+  std::uint32_t seed_;
+  std::unique_ptr<navigation::NavBt> nav_;  ///< null with ~unknown
+  /// ~unknown: exploring and cleaning, from the first pose tf gives.
+  std::unique_ptr<exploration::ExploreClean> explore_;
   ros::NodeHandle nh_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
   MoveBaseServer server_;
+  nodes::TfQueue scans_;  ///< ~unknown: scans until tf knows where they were taken
+  ros::Subscriber scan_sub_;
   std::unique_ptr<nodes::Reconfigure<NavFollowerConfig>> follower_reconfigure_;
   ros::Publisher plan_pub_, action_goal_pub_, coverage_pub_, report_pub_;
   bool reported_ = false;                 ///< ~coverage_report went out for the cleaning done
@@ -388,7 +454,9 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   s.global_frame = nodes::tfFrameId(node_params.get<std::string>("global_frame", s.global_frame));
   s.robot_frame = nodes::tfFrameId(
       node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame)));
-  const std::string planner = node_params.get<std::string>("planner", "service");
+  s.unknown = node_params.get("unknown", false);
+  const std::string planner =
+      node_params.get<std::string>("planner", s.unknown ? "in_process" : "service");
   const std::string service =
       node_params.get<std::string>("plan_path_service", "/rrt_planner/plan_path");
 
@@ -396,7 +464,20 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   world.clearance = s.clearance;
   planning::PlannerOptions options = navigation::navPlannerOptions(world);
   options.seed = seed;
-  if (planner == "in_process") {
+  if (s.unknown) {
+    // Plans are made on the map the robot builds: only in process. The world file gives the robot.
+    if (planner != "in_process") {
+      throw std::invalid_argument(
+          "~planner must be 'in_process' with ~unknown (roomba_bt plans on the map it builds), "
+          "got '" +
+          planner + "'");
+    }
+    s.trees = {node_params.get<std::string>("explore_tree_file",
+                                            nodes::packageConfigFile("roomba_nav_tree.xml")),
+               tree_file};
+    s.transform_timeout = node_params.get("transform_timeout", s.transform_timeout);
+    util::requireInRange("~transform_timeout", s.transform_timeout, 0.0, 10.0, "s");
+  } else if (planner == "in_process") {
     s.config = navigation::inProcessNavConfig(world, options);
   } else if (planner == "service") {
     const PlanTarget target = planTarget(s.world, s.clearance);
@@ -418,8 +499,10 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   util::requireInRange("~pose_latency", s.config.pose_latency, 0,
                        navigation::PosePredictor::kMaxLatency, "s");
   // The cleaning leaves plan in the same world (their planner is built only if the tree uses them).
-  s.config.more_leaves.push_back(
-      coverage::coverageLeaves(s.world, coverage::cleaningOptions(s.world)));
+  if (!s.unknown) {
+    s.config.more_leaves.push_back(
+        coverage::coverageLeaves(s.world, coverage::cleaningOptions(s.world)));
+  }
   navigation::FollowerParams& f = s.config.follower;
   f.rate = params.rate;
   using L =
@@ -432,6 +515,14 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
   // Which of the planner's worlds the plans are asked in: a planner on another world answers
   // "start ... is outside the bounds" to every goal, so the user is told what it must have.
+  if (s.unknown) {
+    ROS_INFO(
+        "roomba_bt: exploring and cleaning a home it has never seen (~unknown): scans on "
+        "%s, the robot of %s, trees %s then %s",
+        ros::NodeHandle().resolveName("scan").c_str(), world_file.c_str(), s.trees.explore.c_str(),
+        s.trees.clean.c_str());
+    return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
+  }
   std::string asks;
   if (planner == "service") {
     asks = planTarget(s.world, s.clearance).scenario == "map"

@@ -6,12 +6,10 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
-#include <tf2/exceptions.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -19,13 +17,12 @@
 #include "map_messages.h"
 #include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/util/require.h"
+#include "scan_input.h"
 
 namespace roomba_rrt::mapper_node {
 namespace {
 
-constexpr double kWarningPeriod = 5.0;    // s between two warnings of one kind
-constexpr double kMaxTilt = 0.05;         // rad: a scan frame tilted more is not planar
-constexpr std::size_t kMaxPending = 200;  // messages waiting for tf (3 s of bumper at 60 Hz)
+constexpr double kWarningPeriod = 5.0;  // s between two warnings of one kind
 
 /// The parameter each option is read from (gmapping's name where it has one).
 const std::vector<std::pair<const char*, const char*>> kOptionParameters = {
@@ -93,36 +90,14 @@ MapperSettings readSettings(nodes::NodeParams& params) {
   return s;
 }
 
-mapping::ScanView scanView(const sensor_msgs::LaserScan& scan) {
-  return {scan.angle_min, scan.angle_max,     scan.angle_increment, scan.range_min,
-          scan.range_max, scan.ranges.data(), scan.ranges.size()};
-}
-
-std::string planarPose(const geometry_msgs::Transform& t, robot::Pose2D* pose) {
-  const auto& q = t.rotation;
-  for (const double v : {t.translation.x, t.translation.y, t.translation.z, q.x, q.y, q.z, q.w}) {
-    if (!std::isfinite(v)) return "not finite";
-  }
-  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-  if (norm == 0) return "rotation: a zero quaternion";
-  const double x = q.x / norm, y = q.y / norm, z = q.z / norm, w = q.w / norm;
-  // The angle between the frame's z axis and the map's: its z axis is (2(xz + wy), 2(yz − wx),
-  // 1 − 2(x² + y²)).
-  const double tilt = std::acos(std::clamp(1 - 2 * (x * x + y * y), -1.0, 1.0));
-  if (tilt > kMaxTilt) {
-    return "tilted by " + util::show(tilt) + " rad (a planar map takes at most " +
-           util::show(kMaxTilt) + ")";
-  }
-  pose->x = t.translation.x;
-  pose->y = t.translation.y;
-  pose->theta = std::atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z));
-  return "";
-}
-
 class RoombaMapperNode {
  public:
   explicit RoombaMapperNode(const MapperSettings& settings)
-      : settings_(settings), mapper_(settings.options), pnh_("~"), listener_(tf_) {
+      : settings_(settings),
+        mapper_(settings.options),
+        pnh_("~"),
+        listener_(tf_),
+        waiting_(tf_, settings.odom_frame, settings.transform_timeout, "roomba_mapper") {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, /*latch=*/true);
     metadata_pub_ = nh_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, /*latch=*/true);
     map_srv_ = pnh_.advertiseService("dynamic_map", &RoombaMapperNode::onGetMap, this);
@@ -137,68 +112,38 @@ class RoombaMapperNode {
   }
 
  private:
-  /// A scan or a pressed bumper waiting for tf to know where it was taken.
-  struct Pending {
-    sensor_msgs::LaserScan::ConstPtr scan;  ///< or
-    roomba_rrt::Bumper::ConstPtr bumper;
-    const std::string& frame(const MapperSettings& s) const {
-      return scan ? scan->header.frame_id : s.base_frame;
-    }
-    ros::Time stamp() const { return scan ? scan->header.stamp : bumper->header.stamp; }
-  };
-
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
     if (scans_seen_++ % settings_.throttle_scans != 0) return;
-    const std::string bad = mapping::checkScan(scanView(*scan));
+    const std::string bad = mapping::checkScan(nodes::scanView(*scan));
     if (!bad.empty()) {
       ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: scan skipped: %s", bad.c_str());
       return;
     }
-    pending_.push_back({scan, nullptr});
-    drain(scan->header.stamp);
+    waiting_.push(scan->header.frame_id, scan->header.stamp,
+                  [this, scan](const geometry_msgs::Transform& t) { use(t, scan.get(), nullptr); });
   }
 
   void onBumper(const roomba_rrt::Bumper::ConstPtr& bumper) {
     if (!bumper->pressed) return;
-    pending_.push_back({nullptr, bumper});
-    drain(bumper->header.stamp);
+    waiting_.push(
+        settings_.base_frame, bumper->header.stamp,
+        [this, bumper](const geometry_msgs::Transform& t) { use(t, nullptr, bumper.get()); });
   }
 
-  /// Uses the waiting messages in order, each as soon as tf has its pose in ~odom_frame at its
-  /// stamp; one that tf cannot place once messages ~transform_timeout newer have come (or when
-  /// too many wait) is skipped with a throttled warning. Never waits: a message whose frame tf
-  /// never knows, or a clock that stops, does not hold up the timer or ~dynamic_map.
-  void drain(const ros::Time& newest) {
-    while (!pending_.empty()) {
-      const Pending& p = pending_.front();
-      const std::string& frame = p.frame(settings_);
-      std::string why;
-      if (tf_.canTransform(settings_.odom_frame, frame, p.stamp(), &why)) {
-        use(p, tf_.lookupTransform(settings_.odom_frame, frame, p.stamp()).transform);
-      } else if (newest - p.stamp() <= ros::Duration(settings_.transform_timeout) &&
-                 pending_.size() <= kMaxPending) {
-        return;  // tf may still come
-      } else {
-        ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: no pose of %s in %s at %.3f s: %s",
-                          frame.c_str(), settings_.odom_frame.c_str(), p.stamp().toSec(),
-                          why.c_str());
-      }
-      pending_.pop_front();
-    }
-  }
-
-  void use(const Pending& p, const geometry_msgs::Transform& transform) {
+  /// A scan or a bump, with the pose tf gave its frame.
+  void use(const geometry_msgs::Transform& transform, const sensor_msgs::LaserScan* scan,
+           const roomba_rrt::Bumper* bumper) {
     robot::Pose2D pose;
-    std::string why = planarPose(transform, &pose);
-    if (why.empty() && p.scan) why = mapper_.addScan(pose, scanView(*p.scan));
+    std::string why = nodes::planarPose(transform, &pose);
+    if (why.empty() && scan) why = mapper_.addScan(pose, nodes::scanView(*scan));
     if (!why.empty()) {
-      ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: %s skipped: %s", p.scan ? "scan" : "bump",
+      ROS_WARN_THROTTLE(kWarningPeriod, "roomba_mapper: %s skipped: %s", scan ? "scan" : "bump",
                         why.c_str());
       return;
     }
-    if (p.bumper) {
-      const roomba_rrt::Bumper& b = *p.bumper;
-      mapper_.addBump(pose, settings_.robot_radius, {b.pressed != 0, b.left != 0, b.right != 0});
+    if (bumper) {
+      mapper_.addBump(pose, settings_.robot_radius,
+                      {bumper->pressed != 0, bumper->left != 0, bumper->right != 0});
     }
     changed_ = true;
     if (!published_) publishIfChanged();  // the first map at once, then at the interval
@@ -233,7 +178,8 @@ class RoombaMapperNode {
   ros::Timer timer_;
   geometry::OccupancyGrid grid_;
   nav_msgs::OccupancyGrid message_;
-  std::deque<Pending> pending_;
+  /// Scans and bumps until tf knows where they were taken (~transform_timeout).
+  nodes::TfQueue waiting_;
   std::size_t scans_seen_ = 0;
   bool changed_ = false, published_ = false;
 };

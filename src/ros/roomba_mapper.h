@@ -3,14 +3,12 @@
 // robot's pose from tf (~odom_frame → the scan's frame, ~base_frame); the map out, latched, on
 // `map` and `map_metadata` in ~map_frame, every ~map_update_interval, and on the ~dynamic_map
 // service (nav_msgs/GetMap). The pure conversions are here to be tested without a master
-// (src/ros/roomba_mapper.cpp); src/nodes/roomba_mapper_node.cpp is its main.
+// (src/ros/roomba_mapper.cpp; scans and tf: scan_input.h); src/nodes/roomba_mapper_node.cpp is its
+// main.
 #pragma once
 
 #include <memory>
 #include <string>
-
-#include <geometry_msgs/Transform.h>
-#include <sensor_msgs/LaserScan.h>
 
 #include "node_params.h"
 #include "roomba_rrt/mapping/occupancy_mapper.h"
@@ -35,13 +33,6 @@ struct MapperSettings {
 /// ~map_update_interval, ~throttle_scans, the frames). Throws std::invalid_argument naming the
 /// parameter ("~delta: must be in [0.001, 10] m, got 0").
 MapperSettings readSettings(nodes::NodeParams& params);
-
-/// The scan as the core takes it (its ranges are not copied: `scan` must outlive the view).
-mapping::ScanView scanView(const sensor_msgs::LaserScan& scan);
-
-/// The planar pose of a transform: "" and `pose` written, or why it is not one (a component not
-/// finite, a frame tilted by more than 0.05 rad: a planar map cannot use its rays).
-std::string planarPose(const geometry_msgs::Transform& transform, robot::Pose2D* pose);
 
 class RoombaMapperNode;
 

@@ -7,12 +7,14 @@
 #include <stdexcept>
 #include <utility>
 
-#include "explore_clean.h"
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/explore_clean.h"
+#include "roomba_rrt/mapping/sensor_scan.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/world_planning/room_problem.h"
+#include "roomba_rrt/sensors/scanner.h"
+#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::tools {
 namespace {
@@ -24,8 +26,17 @@ class Driver {
   Driver(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
          const world::World& world, const Cleaning* cleaning) {
     if (o.behavior == "unknown") {
-      explore_ =
-          std::make_unique<ExploreClean>(world, params, seed, o.predictTicks() / params.rate);
+      robot_ = world.robot();
+      if (robot_.sensors.empty()) {
+        throw util::InvalidInput("sensors",
+                                 "exploring an unknown world needs a range sensor on the "
+                                 "robot (a world file without `sensors:` has the lidar)");
+      }
+      // The world's walls, furniture and map are never looked at: the robot and its start only.
+      explore_ = std::make_unique<exploration::ExploreClean>(
+          robot_, world.coverage_cell_size, params, seed, o.predictTicks() / params.rate,
+          exploration::ExploreCleanTrees{ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml",
+                                         ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml"});
       return;
     }
     if (o.behavior != "coverage") {
@@ -44,7 +55,15 @@ class Driver {
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose, double now,
                        double pose_stamp, const std::vector<sensors::Scan>& scans,
                        const robot::Pose2D& scan_pose) {
-    if (explore_) return explore_->tick(now, bumper, pose, pose_stamp, scans, scan_pose);
+    if (explore_) {
+      for (const sensors::Scan& scan : scans) {
+        if (scan.robot != 0) continue;
+        const sensors::RangeSensorSpec& spec = robot_.sensors[scan.sensor];
+        explore_->addScan(mapping::mountedPose(scan_pose, spec.mount),
+                          mapping::scanView(spec, scan.ranges));
+      }
+      return explore_->tick(now, bumper, pose, pose_stamp);
+    }
     if (lab_) return lab_->tick(bumper);
     tree_->observeTiming(now, pose_stamp);
     return tree_->tick(bumper, pose);
@@ -60,7 +79,8 @@ class Driver {
  private:
   std::unique_ptr<behavior::RoombaBehavior> lab_;
   std::unique_ptr<navigation::NavBt> tree_;
-  std::unique_ptr<ExploreClean> explore_;
+  std::unique_ptr<exploration::ExploreClean> explore_;
+  world::RobotSpec robot_;  ///< whose sensors explore_'s scans come from
 };
 
 /// Fraction of the reachable floor the robot has swept.
@@ -81,10 +101,7 @@ Cleaning::Cleaning(const world::World& world, const behavior::RoombaParams& para
   reachable_area = plan.reachable_area;
   floor_area = plan.floor_area;
   ideal_time = reachable_area / (2 * world.robot().radius * params.forward_speed);
-  config = navigation::inProcessNavConfig(world_planning::roomProblem(world));
-  config.params = params;
-  config.follower.rate = params.rate;
-  config.more_leaves.push_back(coverage::coverageLeaves(planner));
+  config = exploration::cleaningConfig(world, params, planner);
 }
 
 bool finalIsCheckpoint(double duration, double step) {

@@ -34,6 +34,13 @@ refuses "~rate: must be in [1, 1000] Hz, got 1e-300" roomba_bt _rate:=1e-300
 refuses "~bumper_timeout" roomba_fsm _bumper_timeout:=1e300
 refuses "~pose_latency: must be in [0, 1] s, got 5" roomba_bt _pose_latency:=5 \
   _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+refuses "~planner must be 'in_process' with ~unknown" roomba_bt _unknown:=true _planner:=service \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+refuses "~transform_timeout: must be in [0, 10] s, got -1" roomba_bt _unknown:=true \
+  _transform_timeout:=-1 _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+refuses "~log_file: cannot record with ~unknown" roomba_bt _unknown:=true \
+  _log_file:=/tmp/unknown.btlog \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
 refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "../../src/ros/roomba_mapper.h"
+#include "../../src/ros/scan_input.h"
 #include "roomba_rrt/mapping/occupancy_mapper.h"
 
 namespace roomba_rrt::mapper_node {
@@ -19,13 +20,13 @@ TEST(MapperRos, LaserScanIsViewedWithItsOwnRanges) {
   scan.range_min = 0.1f;
   scan.range_max = 4;
   scan.ranges = {1, 2, 3};
-  const mapping::ScanView v = scanView(scan);
+  const mapping::ScanView v = nodes::scanView(scan);
   EXPECT_EQ(v.ranges, scan.ranges.data());
   EXPECT_EQ(v.count, 3u);
   EXPECT_FLOAT_EQ(v.range_min, 0.1f);
   EXPECT_EQ(mapping::checkScan(v), "");
   scan.angle_max = 2;
-  EXPECT_EQ(mapping::checkScan(scanView(scan)).rfind("angle_max:", 0), 0u);
+  EXPECT_EQ(mapping::checkScan(nodes::scanView(scan)).rfind("angle_max:", 0), 0u);
 }
 
 TEST(MapperRos, TransformBecomesAPlanarPoseAndATiltedOneIsRefused) {
@@ -35,17 +36,17 @@ TEST(MapperRos, TransformBecomesAPlanarPoseAndATiltedOneIsRefused) {
   t.rotation.z = std::sin(0.3);  // 0.6 rad about z
   t.rotation.w = std::cos(0.3);
   robot::Pose2D pose;
-  ASSERT_EQ(planarPose(t, &pose), "");
+  ASSERT_EQ(nodes::planarPose(t, &pose), "");
   EXPECT_DOUBLE_EQ(pose.x, 1.5);
   EXPECT_DOUBLE_EQ(pose.y, -2);
   EXPECT_NEAR(pose.theta, 0.6, 1e-12);
   t.rotation.x = std::sin(0.2);  // rolled
   t.rotation.z = 0;
   t.rotation.w = std::cos(0.2);
-  EXPECT_EQ(planarPose(t, &pose).rfind("tilted by 0.4", 0), 0u);
+  EXPECT_EQ(nodes::planarPose(t, &pose).rfind("tilted by 0.4", 0), 0u);
   t.rotation.x = 0;
   t.translation.x = NAN;
-  EXPECT_EQ(planarPose(t, &pose), "not finite");
+  EXPECT_EQ(nodes::planarPose(t, &pose), "not finite");
 }
 
 }  // namespace

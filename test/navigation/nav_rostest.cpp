@@ -26,7 +26,9 @@
 #include <gtest/gtest.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/GetPlan.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
 #include <std_msgs/Float32.h>
@@ -79,6 +81,11 @@ class Robot {
     std::lock_guard<std::mutex> lock(mutex_);
     return pressed_;
   }
+  /// Times the bumper was pressed (a press lasting several messages counts once).
+  int bumps() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return bumps_;
+  }
   /// Robot time of the first /odom at or after `since` that shows the robot stopped (v = w = 0).
   ros::Time stoppedSince(const ros::Time& since) const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -104,12 +111,15 @@ class Robot {
   }
   void onBumper(const roomba_rrt::Bumper& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
+    bumps_ += msg.pressed && !pressing_;
+    pressing_ = msg.pressed;
     pressed_ = pressed_ || msg.pressed;
   }
 
   mutable std::mutex mutex_;
   Sample latest_;
-  bool pressed_ = false;
+  bool pressed_ = false, pressing_ = false;
+  int bumps_ = 0;
   ros::Time stopped_since_;
   std::string state_;
   ros::Subscriber odom_sub_, bumper_sub_, state_sub_;
@@ -418,58 +428,111 @@ TEST_F(NavMap, a_goal_in_another_room_is_reached_through_the_doorway_without_a_b
 /// roomba_bt with the cleaning tree (clean.test): it cleans the furnished room and stops.
 class Clean : public Nav {};
 
-TEST_F(Clean, the_cleaning_tree_covers_90_percent_of_the_floor_then_stands_still) {
+/// What a cleaning run over ROS showed: /roomba_sim/coverage and roomba_bt's ~coverage_path, from
+/// the first plan (within `rows_timeout` s of wall time) until ~state reads Idle with nothing left
+/// to drive (within `timeout` s).
+struct Cleaned {
+  bool planned = false, done = false;
+  std::size_t planned_points = 0, points_left = 0;
+  double coverage = 0;
+};
+
+Cleaned cleanUntilDone(const Robot& robot, double rows_timeout, double timeout) {
   ros::NodeHandle nh;
   std::mutex mutex;
-  double coverage = 0;
-  std::size_t rows_left = 0;
-  bool got_rows = false;
+  Cleaned out;
   ros::Subscriber coverage_sub = nh.subscribe<std_msgs::Float32>(
       "/roomba_sim/coverage", 10, [&](const std_msgs::Float32::ConstPtr& m) {
         std::lock_guard<std::mutex> lock(mutex);
-        coverage = m->data;
+        out.coverage = m->data;
       });
   ros::Subscriber rows_sub = nh.subscribe<nav_msgs::Path>("/roomba_bt/coverage_path", 10,
                                                           [&](const nav_msgs::Path::ConstPtr& m) {
                                                             std::lock_guard<std::mutex> lock(mutex);
-                                                            rows_left = m->poses.size();
-                                                            got_rows = true;
+                                                            if (!out.planned)
+                                                              out.planned_points = m->poses.size();
+                                                            out.points_left = m->poses.size();
+                                                            out.planned = true;
                                                           });
-  const Robot& robot = robot_;
-  // The plan's rows are published as soon as it is made.
-  ASSERT_TRUE(waitFor(
-      [&] {
-        std::lock_guard<std::mutex> lock(mutex);
-        return got_rows;
-      },
-      30.0));
-  {
+  const auto locked = [&](auto&& f) {
     std::lock_guard<std::mutex> lock(mutex);
-    EXPECT_GT(rows_left, 50u) << "the furnished room's plan has some 50 legs";
+    return f();
+  };
+  if (!waitFor([&] { return locked([&] { return out.planned; }); }, rows_timeout)) {
+    return locked([&] { return out; });
   }
-  // Done: Idle and standing, with nothing left on ~coverage_path. (~state also reads Idle for a
-  // tick in which a recovery resumes the plan and nothing drives.)
-  const bool done = waitFor(
-      [&] {
-        std::lock_guard<std::mutex> lock(mutex);
-        return robot.state() == "Idle" && rows_left == 0;
-      },
-      kCleanWallTimeout);
-  const ros::Time finished = ros::Time::now();
-  std::unique_lock<std::mutex> lock(mutex);
-  std::printf("cleaning: %s after %.0f s of robot time, coverage %.1f %%, %zu path points left\n",
-              done ? "done" : "not done", finished.toSec(), 100 * coverage, rows_left);
-  ASSERT_TRUE(done) << "still " << robot.state() << " at coverage " << coverage;
-  EXPECT_GE(coverage, 0.90);
-  EXPECT_EQ(rows_left, 0u);
-  lock.unlock();
-  EXPECT_FALSE(robot.everPressed());
-  // It comes to rest (odometry is a step behind the command) and stays there.
+  // Done: Idle and standing, with nothing left on ~coverage_path.
+  waitFor([&] { return locked([&] { return robot.state() == "Idle" && out.points_left == 0; }); },
+          timeout);
+  return locked([&] {
+    out.done = robot.state() == "Idle" && out.points_left == 0;
+    std::printf(
+        "cleaning: %s after %.0f s of robot time, coverage %.1f %%, %zu of %zu path "
+        "points left, %d bumps\n",
+        out.done ? "done" : "not done", ros::Time::now().toSec(), 100 * out.coverage,
+        out.points_left, out.planned_points, robot.bumps());
+    return out;
+  });
+}
+
+/// It comes to rest (odometry is a step behind the command) and stays there, Idle.
+void expectStandingStill(const Robot& robot) {
   const auto standing = [&] { return robot.latest().v == 0 && robot.latest().w == 0; };
   EXPECT_TRUE(waitFor(standing, 5.0)) << "v " << robot.latest().v << ", w " << robot.latest().w;
   ros::WallDuration(1.0).sleep();
   EXPECT_TRUE(standing()) << "moving again: v " << robot.latest().v;
   EXPECT_EQ(robot.state(), "Idle");
+}
+
+TEST_F(Clean, the_cleaning_tree_covers_90_percent_of_the_floor_then_stands_still) {
+  // The plan's rows are published as soon as it is made.
+  const Cleaned cleaned = cleanUntilDone(robot_, 30.0, kCleanWallTimeout);
+  ASSERT_TRUE(cleaned.planned) << "no plan on ~coverage_path";
+  EXPECT_GT(cleaned.planned_points, 50u) << "the furnished room's plan has some 50 legs";
+  ASSERT_TRUE(cleaned.done) << "still " << robot_.state() << " at coverage " << cleaned.coverage;
+  EXPECT_GE(cleaned.coverage, 0.90);
+  EXPECT_FALSE(robot_.everPressed());
+  expectStandingStill(robot_);
+}
+
+class CleanUnknown : public Nav {};
+
+TEST_F(CleanUnknown, explores_maps_and_cleans_90_percent_of_a_room_it_has_never_seen) {
+  // roomba_sim keeps its map to itself: the only /map is roomba_mapper's, and it grows.
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  std::size_t first_known = 0, known = 0;
+  ros::Subscriber map_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "/map", 10, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        known = static_cast<std::size_t>(
+            std::count_if(m->data.begin(), m->data.end(), [](std::int8_t v) { return v >= 0; }));
+        if (first_known == 0) first_known = known;
+      });
+  // Exploring first (about a minute of robot time in the furnished room), then the rows.
+  const Cleaned cleaned = cleanUntilDone(robot_, kCleanWallTimeout, kCleanWallTimeout);
+  ASSERT_TRUE(cleaned.planned) << "never done exploring: still " << robot_.state();
+  ASSERT_TRUE(cleaned.done) << "still " << robot_.state() << " at coverage " << cleaned.coverage;
+  EXPECT_GE(cleaned.coverage, 0.90);
+  EXPECT_LE(robot_.bumps(), 2);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    // The first scan from the middle of the room sees most of it (about 10 000 cells); the rest
+    // comes as the robot explores: the room's 6.4 m × 4.8 m (12 288 cells of 0.05 m), less the
+    // furniture's 3 m², and its walls.
+    EXPECT_GT(known, first_known) << "the map did not grow as the robot explored";
+    EXPECT_GT(known, 11000u);
+  }
+  expectStandingStill(robot_);
+  // It takes no goals: it says so.
+  move_base_msgs::MoveBaseGoal goal;
+  goal.target_pose.header.frame_id = "map";
+  goal.target_pose.pose.position.x = 3.0;
+  goal.target_pose.pose.position.y = 2.0;
+  goal.target_pose.pose.orientation.w = 1;
+  EXPECT_EQ(run(*client_, goal), SimpleClientGoalState::ABORTED);
+  EXPECT_NE(client_->getState().getText().find("~unknown"), std::string::npos)
+      << client_->getState().getText();
 }
 
 }  // namespace

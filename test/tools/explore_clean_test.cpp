@@ -1,7 +1,5 @@
 // Cleaning a world the robot does not know (roomba_coverage --unknown), in process: the simulator,
-// the lidar, the mapper, exploring and cleaning, as a user runs it.
-#include "explore_clean.h"
-
+// the lidar, the mapper, exploring and cleaning (exploration/explore_clean.h), as a user runs it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,8 +18,7 @@ struct Outcome {
   double ideal_time = 0;
 };
 
-Outcome cleanUnknown(const std::string& world_file, double duration) {
-  const world::World world = world::loadWorld(world_file);
+Outcome cleanUnknown(const world::World& world, double duration) {
   behavior::RoombaParams params =
       behavior::loadRoombaParams(ROOMBA_RRT_CONFIG_DIR "/roomba_behavior.yaml");
   params.rate = 1.0 / world.step;
@@ -31,6 +28,10 @@ Outcome cleanUnknown(const std::string& world_file, double duration) {
   const Cleaning cleaning(world, params);  // the true reachable floor, to measure against
   sim::Simulator simulator(world);
   return {simulate(o, params, 1, nullptr, false, simulator, &cleaning), cleaning.ideal_time};
+}
+
+Outcome cleanUnknown(const std::string& world_file, double duration) {
+  return cleanUnknown(world::loadWorld(world_file), duration);
 }
 
 TEST(ExploreClean, cleans_a_furnished_room_it_has_never_seen_without_bumping) {
@@ -53,7 +54,7 @@ TEST(ExploreClean, a_robot_without_a_range_sensor_is_refused_naming_the_field) {
   world::World world = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
   world.robots.front().sensors.clear();
   try {
-    ExploreClean explore(world, behavior::RoombaParams{}, 1, 0);
+    cleanUnknown(world, 1);
     FAIL() << "accepted a robot without sensors";
   } catch (const util::InvalidInput& e) {
     EXPECT_EQ(e.field(), "sensors");

@@ -1,7 +1,8 @@
-// roomba_coverage --unknown: cleaning a home the robot has never seen, in one process. ROS-free.
+// Cleaning a home the robot has never seen: roomba_coverage --unknown in one process, roomba_bt
+// ~unknown over ROS. ROS-free: scans, bumper and pose in, velocity out.
 //
-// The robot starts with an empty map and its lidar:
-//   1. mapping: every scan of its range sensors and every bump goes into a log-odds map
+// The robot starts with an empty map and a range sensor:
+//   1. mapping: every scan (addScan) and every bump goes into a log-odds map
 //      (mapping::OccupancyMapper), as roomba_mapper builds /map over ROS;
 //   2. exploring: it drives to the nearest frontier it can reach (exploration::nearestFrontier:
 //      unknown cells are walls until seen) with the navigation tree (config/roomba_nav_tree.xml)
@@ -22,34 +23,55 @@
 #include <unordered_set>
 #include <vector>
 
-#include "coverage_run.h"
 #include "roomba_rrt/behavior/roomba_params.h"
+#include "roomba_rrt/coverage/coverage_planner.h"
 #include "roomba_rrt/exploration/frontiers.h"
 #include "roomba_rrt/mapping/occupancy_mapper.h"
 #include "roomba_rrt/navigation/nav_bt.h"
-#include "roomba_rrt/sensors/scanner.h"
 #include "roomba_rrt/world/world.h"
 
-namespace roomba_rrt::tools {
+namespace roomba_rrt::exploration {
+
+/// The cleaning tree's configuration in `world` (a known one, or the one the robot built): its
+/// coverage leaves plan with `planner`, its navigation leaves in process.
+navigation::NavLeafConfig cleaningConfig(const world::World& world,
+                                         const behavior::RoombaParams& params,
+                                         std::shared_ptr<const coverage::CoveragePlanner> planner);
+
+/// The two trees, by file (config/roomba_nav_tree.xml and config/roomba_coverage_tree.xml).
+struct ExploreCleanTrees {
+  std::string explore;  ///< drives to a frontier (navigation leaves)
+  std::string clean;    ///< cleans the built map (coverage leaves)
+};
 
 class ExploreClean {
  public:
-  /// For the first robot of `world`, whose sensors it reads (util::InvalidInput when it has no
-  /// range sensor); `world`'s walls, furniture and map are never looked at.
-  ExploreClean(const world::World& world, const behavior::RoombaParams& params, std::uint32_t seed,
-               double pose_latency);
+  /// For `robot` starting at its initial_pose; cells of `coverage_cell_size` for the cleaning's
+  /// plan; `pose_latency` as NavLeafConfig's.
+  ExploreClean(const world::RobotSpec& robot, double coverage_cell_size,
+               const behavior::RoombaParams& params, std::uint32_t seed, double pose_latency,
+               ExploreCleanTrees trees);
   ~ExploreClean();
 
-  /// One tick at simulated `time`: the scans taken at this step (from the robot at
-  /// `scan_pose`) and the bumper go into the map, then the phase's tree decides the command from
-  /// `bumper` and `pose` (the robot's pose at `pose_stamp`: NavBt::observeTiming).
+  /// A scan taken from `sensor` (the sensor's pose in the map): into the map. "" or why it was
+  /// refused (mapping::checkScan), naming the field.
+  std::string addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan);
+
+  /// One tick at simulated `time`: the bumper goes into the map, then the phase's tree decides
+  /// the command from `bumper` and `pose` (the robot's pose at `pose_stamp`:
+  /// NavBt::observeTiming).
   robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
-                       double pose_stamp, const std::vector<sensors::Scan>& scans,
-                       const robot::Pose2D& scan_pose);
+                       double pose_stamp);
 
   const std::string& stateName() const;
   behavior::RoombaState state() const;
   bool cleaning() const { return clean_ != nullptr; }
+  /// The tree driving now (to a frontier, or cleaning); null while the robot stands and looks.
+  navigation::NavBt* activeTree() { return clean_ ? clean_.get() : explore_.get(); }
+  /// Cleaning, and the cleaning tree is done: the robot stands for good.
+  bool done() const { return clean_ && clean_->idle(); }
+  /// The lab's constants for the trees made from now on and the one driving.
+  void setParams(const behavior::RoombaParams& params);
   /// Simulated s when exploring ended (the cleaning began); negative while exploring.
   double exploredAt() const { return explored_at_; }
   const mapping::OccupancyMapper& mapper() const { return mapper_; }
@@ -92,8 +114,7 @@ class ExploreClean {
                           const robot::Pose2D& pose) const;
   void startCleaning(double time, const robot::Pose2D& pose);
   /// Remembers the cells the scan's returns end in (hits_).
-  void markHits(const robot::Pose2D& sensor, const sensors::RangeSensorSpec& spec,
-                const std::vector<float>& ranges);
+  void markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan);
   static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
     return (i << 32) ^ (j & 0xffffffff);
   }
@@ -118,10 +139,10 @@ class ExploreClean {
   std::vector<geometry::Point2> given_up_;
   std::vector<geometry::Point2> footprints_;  ///< where the robot stood when it looked
 
-  std::unique_ptr<Cleaning> cleaning_;
+  ExploreCleanTrees trees_;
   std::unique_ptr<navigation::NavBt> clean_;
   double explored_at_ = -1;
   robot::Velocity stop_;
 };
 
-}  // namespace roomba_rrt::tools
+}  // namespace roomba_rrt::exploration
