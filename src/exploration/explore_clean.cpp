@@ -148,16 +148,17 @@ void ExploreClean::markHits(const robot::Pose2D& sensor, const mapping::ScanView
   };
   bool previous_hit = false;
   geometry::Point2 previous;
+  const double first = mapping::firstRayAngle(sensor.theta, scan);
   for (std::size_t k = 0; k < scan.count; ++k) {
     const double range = scan.ranges[k];
-    // No return (+inf, or beyond range_max), or none to trust (NaN, below range_min).
-    if (!(range >= scan.range_min && range <= scan.range_max)) {
+    // The rays the mapper counts as hits only: no return (+inf, or beyond what it trusts) and
+    // none to trust (NaN, below range_min) are not.
+    if (!mapper_.isReturn(range, scan)) {
       previous_hit = false;
       continue;
     }
     // A hair beyond the return, inside what it hit.
-    const double angle =
-        sensor.theta + scan.angle_min + static_cast<double>(k) * scan.angle_increment;
+    const double angle = first + static_cast<double>(k) * scan.angle_increment;
     const double r = range + kInside;
     const geometry::Point2 hit{sensor.x + r * std::cos(angle), sensor.y + r * std::sin(angle)};
     mark(hit);

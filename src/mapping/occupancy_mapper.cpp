@@ -68,6 +68,10 @@ void validate(const MapperOptions& o) {
                 "in (0, 1)", o.occupied_threshold);
 }
 
+double firstRayAngle(double heading, const ScanView& scan) {
+  return std::remainder(heading, 2 * M_PI) + std::remainder(scan.angle_min, 2 * M_PI);
+}
+
 std::string checkScan(const ScanView& s) {
   std::ostringstream why;
   const auto finite = [&why](const char* field, double v) {
@@ -208,7 +212,7 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
     return "pose: (" + util::show(pose.x) + ", " + util::show(pose.y) + ") is more than " +
            util::show(MapperLimits::kMaxCoordinate) + " m from the origin";
   }
-  const double reach = std::min<double>(scan.range_max, options_.max_range);
+  const double reach = trustedRange(scan);
   // The cells the scan can touch: the map grows to hold them first.
   double x0 = pose.x, y0 = pose.y, x1 = pose.x, y1 = pose.y;
   struct End {
@@ -219,10 +223,7 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
   ends.clear();
   // The rays' directions by turning the first by the increment (no sine per ray): the error
   // after 10^5 rays is about 10^-11 rad.
-  // Each angle within a turn before the sum: a heading and an angle_min that are finite but
-  // near ±1.8e308 overflow to −inf together, and cos(−inf) is NaN.
-  const double first =
-      std::remainder(pose.theta, 2 * M_PI) + std::remainder(scan.angle_min, 2 * M_PI);
+  const double first = firstRayAngle(pose.theta, scan);
   const double turn_c = std::cos(scan.angle_increment), turn_s = std::sin(scan.angle_increment);
   double c = std::cos(first), s = std::sin(first);
   for (std::size_t k = 0; k < scan.count; ++k) {
@@ -234,13 +235,13 @@ std::string OccupancyMapper::addScan(const robot::Pose2D& pose, const ScanView& 
     const double r = scan.ranges[k];
     bool hit = true;
     double length = r;
-    if (r == HUGE_VAL || (std::isfinite(r) && r > reach && r <= scan.range_max)) {
+    if (isReturn(r, scan)) {
+      length += kIntoHit * (1 + length);
+    } else if (r == HUGE_VAL || (std::isfinite(r) && r > reach && r <= scan.range_max)) {
       length = reach;  // no return within range_max (REP 117), or beyond what is trusted
       hit = false;
-    } else if (!(r >= scan.range_min && r <= scan.range_max)) {
-      continue;  // NaN, −inf (too near to tell) or out of the scan's own range
     } else {
-      length += kIntoHit * (1 + length);
+      continue;  // NaN, −inf (too near to tell) or out of the scan's own range
     }
     const End e{pose.x + length * c, pose.y + length * s, hit};
     x0 = std::min(x0, e.x);

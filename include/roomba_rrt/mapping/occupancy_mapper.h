@@ -11,6 +11,7 @@
 // reads +inf (REP 117: nothing within range_max) is free space up to range_max.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -72,6 +73,11 @@ void validate(const MapperOptions& options);
 /// Why a scan was not used: "" when it was. The scan's fields named as in sensor_msgs/LaserScan.
 std::string checkScan(const ScanView& scan);
 
+/// The direction (rad, in the map) of the first ray of `scan` taken with the sensor heading
+/// `heading`: each angle within a turn before they are added (a heading and an angle_min that
+/// are finite but near ±1.8e308 would add up to −inf).
+double firstRayAngle(double heading, const ScanView& scan);
+
 class OccupancyMapper {
  public:
   /// Throws util::InvalidInput as validate() does.
@@ -83,6 +89,15 @@ class OccupancyMapper {
   /// Rays reading NaN, −inf or a finite range outside [range_min, range_max] are skipped; a
   /// finite range beyond max_range, or +inf, clears the cells up to min(range_max, max_range).
   std::string addScan(const robot::Pose2D& sensor_pose, const ScanView& scan);
+  /// How far the rays of `scan` are trusted: its range_max, at most max_range.
+  double trustedRange(const ScanView& scan) const {
+    return std::min<double>(scan.range_max, options_.max_range);
+  }
+  /// Whether `range`, one of `scan`'s, is a return addScan() counts as a hit: in
+  /// [range_min, trustedRange()].
+  bool isReturn(double range, const ScanView& scan) const {
+    return range >= scan.range_min && range <= trustedRange(scan);
+  }
 
   /// Adds the bumper's evidence for a robot of `radius` at `pose`: each closed switch marks the
   /// cell at the bumper's edge where it points (both switches: straight ahead; left only: 45°
