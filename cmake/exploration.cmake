@@ -1,16 +1,21 @@
 # Exploration (include/roomba_rrt/exploration/), ROS-free: frontiers of a map the robot builds and
 # the nearest one it can drive to (roomba_exploration, over the geometry library's grid), and
 # cleaning a home the robot has never seen (roomba_explore_clean: the mapper, the frontiers, the
-# navigation and cleaning trees; roomba_coverage --unknown and roomba_bt ~unknown).
+# navigation and cleaning trees; roomba_coverage --unknown and roomba_bt ~unknown; and driving to a
+# goal on the map it builds, roomba_nav_eval --unknown).
 
 add_library(roomba_exploration src/exploration/frontiers.cpp)
 target_include_directories(roomba_exploration PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_exploration PUBLIC roomba_geometry)
 
-add_library(roomba_explore_clean src/exploration/explore_clean.cpp)
+add_library(roomba_explore_clean src/exploration/built_map.cpp src/exploration/explore_clean.cpp
+  src/exploration/navigate_unknown.cpp)
 target_link_libraries(roomba_explore_clean PUBLIC roomba_exploration roomba_mapping roomba_nav_core
   roomba_coverage_core roomba_world_planning)
 
 if(CATKIN_ENABLE_TESTING)
   roomba_rrt_gtest(exploration_test test/exploration/frontiers_test.cpp LINK roomba_exploration)
+  # Goals in a home the robot has never seen, through roomba_nav_eval's loop (--unknown).
+  roomba_rrt_gtest(navigate_unknown_test test/exploration/navigate_unknown_test.cpp
+    LINK roomba_nav_eval_run)
 endif()

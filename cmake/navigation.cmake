@@ -36,7 +36,8 @@ target_link_libraries(nav_latency_probe ${catkin_LIBRARIES})
 # (src/tools/nav_eval_run.*) is a library of its own, for the tests that drive navigation with it.
 add_library(roomba_nav_eval_run STATIC src/tools/nav_eval_run.cpp)
 target_include_directories(roomba_nav_eval_run PUBLIC ${PROJECT_SOURCE_DIR}/src/tools)
-target_link_libraries(roomba_nav_eval_run PUBLIC roomba_nav_core roomba_sim_core)
+target_link_libraries(roomba_nav_eval_run PUBLIC roomba_nav_core roomba_sim_core roomba_explore_clean
+  roomba_sensors)
 add_executable(roomba_nav_eval src/tools/roomba_nav_eval.cpp)
 target_link_libraries(roomba_nav_eval roomba_nav_eval_run roomba_tools)
 

@@ -7,7 +7,11 @@
 #include <queue>
 #include <random>
 
+#include "roomba_rrt/exploration/navigate_unknown.h"
+#include "roomba_rrt/mapping/sensor_scan.h"
+#include "roomba_rrt/sensors/scanner.h"
 #include "roomba_rrt/sim/simulator.h"
+#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world_planning/room_problem.h"
 
 namespace roomba_rrt::tools {
@@ -159,6 +163,48 @@ double shortestDiscPathLength(const world::World& world, const robot::Pose2D& st
   return length;
 }
 
+GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
+                     const std::string& tree_file, const robot::Pose2D& goal, std::uint32_t seed,
+                     double timeout_s, double& clock) {
+  const world::World& world = simulator.world();
+  world::RobotSpec robot = world.robot();
+  robot.initial_pose = simulator.pose();
+  behavior::RoombaParams params;
+  params.rate = 1.0 / world.step;
+  // No lag: the command of a pose moves the robot from that pose, as in the known world's runs.
+  exploration::NavigateUnknown nav(robot, params, seed, 0.0, tree_file);
+  nav.setGoal(goal);
+  GoalRun run;
+  run.start = robot.initial_pose;
+  run.goal = goal;
+  const long max_ticks = std::lround(timeout_s / world.step);
+  std::vector<robot::Pose2D> poses(1);
+  long tick = 0;
+  for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
+    const robot::BumperState bumper = simulator.senseContact();
+    run.bumps += bumper.pressed ? 1 : 0;
+    const robot::Pose2D before = simulator.pose();
+    poses[0] = before;
+    for (const sensors::Scan& scan : scanner.scan(clock, poses)) {
+      const sensors::RangeSensorSpec& spec = robot.sensors[scan.sensor];
+      nav.addScan(mapping::mountedPose(before, spec.mount), mapping::scanView(spec, scan.ranges));
+    }
+    simulator.move(nav.tick(clock, bumper, before, clock));
+    clock += world.step;
+    run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
+    if (tick % 6 == 0) run.trace.push_back(simulator.pose());
+  }
+  run.time_s = static_cast<double>(tick) * world.step;
+  run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
+  if (nav.outcome() == navigation::GoalOutcome::kActive) {
+    run.message = "timeout";
+  } else if (!run.reached) {
+    run.message = nav.message();
+  }
+  run.plans = nav.plans();
+  return run;
+}
+
 NavEvalReport evaluateNavigation(const world::World& world, const std::string& tree_file,
                                  const NavEvalOptions& options,
                                  const std::function<void(int, int)>& progress) {
@@ -181,6 +227,16 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
   config.follower.rate = config.params.rate;
   navigation::NavBt nav(config, options.seed, tree_file);
   sim::Simulator simulator(world);
+  std::unique_ptr<sensors::Scanner> scanner;
+  if (options.unknown) {
+    if (world.robot().sensors.empty()) {
+      throw util::InvalidInput("sensors",
+                               "navigating an unknown world needs a range sensor on the robot (a "
+                               "world file without `sensors:` has the lidar)");
+    }
+    scanner = std::make_unique<sensors::Scanner>(world);
+  }
+  double clock = 0;  // robot s, on across the goals (the scanner's rate counts on it)
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> ux(world.room.origin.x,
                                             world.room.origin.x + world.room.width),
@@ -203,23 +259,31 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
       run.goal = candidate;
       break;
     }
-    nav.setGoal(run.goal);
-    long tick = 0;
-    for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
-      const robot::BumperState bumper = simulator.senseContact();
-      run.bumps += bumper.pressed ? 1 : 0;
-      const robot::Pose2D before = simulator.pose();
-      simulator.move(nav.tick(bumper, before));
-      run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
-      if (tick % 6 == 0) run.trace.push_back(simulator.pose());
-    }
-    run.time_s = static_cast<double>(tick) * world.step;
-    run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
-    if (nav.outcome() == navigation::GoalOutcome::kActive) {
-      nav.cancelGoal();
-      run.message = "timeout";
-    } else if (!run.reached) {
-      run.message = nav.message();
+    if (options.unknown) {
+      GoalRun driven =
+          driveUnknown(simulator, *scanner, tree_file, run.goal,
+                       options.seed + static_cast<std::uint32_t>(n), options.timeout_s, clock);
+      driven.shortest_m = run.shortest_m;
+      run = std::move(driven);
+    } else {
+      nav.setGoal(run.goal);
+      long tick = 0;
+      for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
+        const robot::BumperState bumper = simulator.senseContact();
+        run.bumps += bumper.pressed ? 1 : 0;
+        const robot::Pose2D before = simulator.pose();
+        simulator.move(nav.tick(bumper, before));
+        run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
+        if (tick % 6 == 0) run.trace.push_back(simulator.pose());
+      }
+      run.time_s = static_cast<double>(tick) * world.step;
+      run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
+      if (nav.outcome() == navigation::GoalOutcome::kActive) {
+        nav.cancelGoal();
+        run.message = "timeout";
+      } else if (!run.reached) {
+        run.message = nav.message();
+      }
     }
     report.runs.push_back(std::move(run));
     if (progress) progress(n + 1, options.goals);

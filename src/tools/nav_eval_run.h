@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "roomba_rrt/navigation/nav_bt.h"
+#include "roomba_rrt/sensors/scanner.h"
+#include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::tools {
@@ -31,6 +33,10 @@ struct NavEvalOptions {
   double min_goal_distance = 0.5;  ///< m from the robot, so each goal is a real trip
   double clearance = navigation::kDefaultClearance;  ///< on top of the robot radius, m
   bool threaded_planner = false;  ///< plan on a worker thread (not deterministic)
+  /// Each goal in a home the robot has never seen: it starts a fresh map where it stands and
+  /// drives with its lidar (exploration::NavigateUnknown); the world's walls and furniture are
+  /// the simulator's only.
+  bool unknown = false;
 };
 
 /// One goal's run.
@@ -42,6 +48,7 @@ struct GoalRun {
   double driven_m = 0;               ///< length driven
   double shortest_m = 0;             ///< shortestDiscPathLength
   std::string message;               ///< why it was aborted
+  int plans = 0;                     ///< --unknown: trees that planned it (1 + paths blocked)
   std::vector<robot::Pose2D> trace;  ///< poses, every 6th tick
 };
 
@@ -54,6 +61,14 @@ struct NavEvalReport {
   double mean_length_ratio = 0;  ///< driven ÷ shortest, over reached goals
   double planning_ms_p50 = 0;
 };
+
+/// One goal in a world the robot has never seen, from where `simulator`'s robot stands: a fresh
+/// map there (exploration::NavigateUnknown with the tree in `tree_file`), `scanner`'s scans of the
+/// lidar into it, until the goal ends or `timeout_s` robot seconds pass. `clock` (robot s, the
+/// scanner's time) goes on across goals. The run's shortest_m is left 0.
+GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
+                     const std::string& tree_file, const robot::Pose2D& goal, std::uint32_t seed,
+                     double timeout_s, double& clock);
 
 /// Runs `options.goals` random reachable goals (a free pose for the robot's disc with a finite
 /// shortest path, at least min_goal_distance away) one after another from the world's initial

@@ -25,7 +25,7 @@ namespace {
 
 const char* const kUsage =
     "usage: roomba_nav_eval [--goals 20] [--seed 1] [--world FILE] [--pose X,Y[,THETA]]\n"
-    "                       [--tree FILE] [--json]\n"
+    "                       [--tree FILE] [--json] [--unknown]\n"
     "                       [--csv FILE] [--png FILE] [--timeout 120]\n"
     "  --goals    random reachable goals, one after another (default 20)\n"
     "  --seed     seed of the goals and the planner (default 1)\n"
@@ -38,7 +38,10 @@ const char* const kUsage =
     "  --csv      per goal: goal,start_x,start_y,goal_x,goal_y,goal_theta,reached,bumps,time_s,\n"
     "             driven_m,shortest_m,message\n"
     "  --png      picture: room, traces (green reached, red not), goals as arrows\n"
-    "  --timeout  robot seconds per goal before it counts as not reached (default 120)\n";
+    "  --timeout  robot seconds per goal before it counts as not reached (default 120)\n"
+    "  --unknown  every goal in a home the robot has never seen: it starts a fresh map where\n"
+    "             it stands, maps with its lidar (the world's sensors) and plans on that map,\n"
+    "             unknown cells as floor until seen, again whenever its path is blocked\n";
 
 /// The room, every run's trace (green: reached, red: not) and each goal as an arrow.
 void drawPng(const std::string& file, const roomba_rrt::world::World& world,
@@ -124,6 +127,8 @@ int main(int argc, char** argv) {
       png = value();
     } else if (flag == "--json") {
       json = true;
+    } else if (flag == "--unknown") {
+      options.unknown = true;
     } else if (flag == "-h" || flag == "--help") {
       std::cout << kUsage;
       return 0;

@@ -20,13 +20,12 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/coverage/coverage_planner.h"
+#include "roomba_rrt/exploration/built_map.h"
 #include "roomba_rrt/exploration/frontiers.h"
-#include "roomba_rrt/mapping/occupancy_mapper.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/world/world.h"
 
@@ -74,7 +73,7 @@ class ExploreClean {
   void setParams(const behavior::RoombaParams& params);
   /// Simulated s when exploring ended (the cleaning began); negative while exploring.
   double exploredAt() const { return explored_at_; }
-  const mapping::OccupancyMapper& mapper() const { return mapper_; }
+  const mapping::OccupancyMapper& mapper() const { return map_.mapper(); }
 
   static constexpr double kReplanPeriod = 1.0;  ///< s between two looks for a nearer frontier
   /// m: a frontier is in view this far over free floor (FrontierOptions::view_distance).
@@ -89,22 +88,11 @@ class ExploreClean {
   static constexpr double kSameGoal = 0.3;      ///< m: a goal this close to the current is kept
   /// s the robot stands and looks with no frontier in reach before it starts cleaning.
   static constexpr double kConfirmDone = 1.0;
-  /// A cell the robot plans over as floor has log-odds below this (p < 0.27: more rays passed
-  /// it than ended in it, by three free observations).
-  static constexpr double kClearlyFree = -1.0;
-  /// m: two neighbouring returns this close are taken as one obstacle's (hits_).
-  static constexpr double kChord = 0.1;
-  /// m beyond a return where it counts as hitting (inside the obstacle, not on its edge).
-  static constexpr double kInside = 1e-3;
 
  private:
   /// Looks for the nearest frontier from `pose` and drives there (`arrived`: the previous goal
   /// was reached); starts cleaning when none is left.
   void nextGoal(double time, const robot::Pose2D& pose, bool arrived);
-  /// The mapper's grid with the cells returns ended in (hits_) occupied; `strict`: also free only
-  /// where clearly free (kClearlyFree), and free where the robot stood (footprints_): the map
-  /// the robot plans on. Not strict: the map its frontiers are found on.
-  geometry::OccupancyGrid builtGrid(bool strict) const;
   /// `frontiers` (of `grid`) without their cells round given-up goals, and without those that
   /// keep fewer than min_cells.
   std::vector<exploration::Frontier> openFrontiers(std::vector<exploration::Frontier> frontiers,
@@ -113,23 +101,13 @@ class ExploreClean {
   world::World builtWorld(std::shared_ptr<const geometry::OccupancyGrid> grid,
                           const robot::Pose2D& pose) const;
   void startCleaning(double time, const robot::Pose2D& pose);
-  /// Remembers the cells the scan's returns end in (hits_).
-  void markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan);
-  static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
-    return (i << 32) ^ (j & 0xffffffff);
-  }
 
   world::RobotSpec robot_;
   double coverage_cell_size_;
   behavior::RoombaParams params_;
   std::uint32_t seed_;
   double pose_latency_;
-  mapping::OccupancyMapper mapper_;
-  /// The mapper's first origin: its lattice's cells stay where they are as the map grows.
-  geometry::Point2 lattice_;
-  /// Every cell a return ended in (cellKey of its column and row from lattice_): the planning
-  /// map holds them occupied (builtGrid()).
-  std::unordered_set<std::int64_t> hits_;
+  BuiltMap map_;  ///< scans, bumps and where the robot stood
   exploration::FrontierOptions frontier_options_;
 
   std::unique_ptr<navigation::NavBt> explore_;  ///< driving to the current frontier goal
@@ -137,7 +115,6 @@ class ExploreClean {
   double goal_since_ = 0, last_look_ = -1e9;
   double none_since_ = -1;  ///< s since no frontier was in reach; negative: one is
   std::vector<geometry::Point2> given_up_;
-  std::vector<geometry::Point2> footprints_;  ///< where the robot stood when it looked
 
   ExploreCleanTrees trees_;
   std::unique_ptr<navigation::NavBt> clean_;

@@ -1,0 +1,81 @@
+// The map a robot builds of a home it has never seen, as its planners need it: the log-odds map of
+// its scans and bumps (mapping::OccupancyMapper, as roomba_mapper publishes it), the cells its
+// returns ended in, and where it stood. ROS-free. Exploring and cleaning (explore_clean.h) and
+// navigating (navigate_unknown.h) plan on it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "roomba_rrt/geometry/occupancy_grid.h"
+#include "roomba_rrt/mapping/occupancy_mapper.h"
+#include "roomba_rrt/world/world.h"
+
+namespace roomba_rrt::exploration {
+
+class BuiltMap {
+ public:
+  /// For `robot` (its radius, sensors and initial_pose): a map of 0.05 m cells (gmapping's
+  /// default), 10 m round the initial pose, growing as the scans reach farther.
+  explicit BuiltMap(const world::RobotSpec& robot);
+
+  /// A scan taken from `sensor` (the sensor's pose in the map): into the map. "" or why it was
+  /// refused (mapping::checkScan), naming the field.
+  std::string addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan);
+  /// The cells the pressed bumper touches at `pose` become occupied.
+  void addBump(const robot::Pose2D& pose, const robot::BumperState& bumper);
+  /// The robot stands at `p`: its disc is floor in the strict grid, whatever the map says.
+  void stoodAt(const geometry::Point2& p) { footprints_.push_back(p); }
+
+  /// How unknown cells are planned over.
+  enum class Unknown {
+    kWall,  ///< unknown as walls: free only where clearly free (kClearlyFree); cleaning, frontiers
+    kFree,  ///< unknown as floor until seen: a goal beyond what the robot has seen
+  };
+  /// The mapper's grid with the cells returns ended in occupied (an obstacle's edge crosses
+  /// them, however many rays passed their free part), and:
+  ///   - kWall: free only where clearly free, and free under where the robot stood (and the
+  ///     unknown cells its disc reaches into: its lidar starts range_min from its centre);
+  ///   - kFree: unknown cells free, grown to take in every point of `include` (the goal) with a
+  ///     metre round it.
+  geometry::OccupancyGrid grid(Unknown unknown,
+                               const std::vector<geometry::Point2>& include = {}) const;
+  /// The mapper's grid with the returns' cells occupied: the map frontiers are found on.
+  geometry::OccupancyGrid seenGrid() const;
+  /// `grid` as a world (its unknown and occupied cells as walls) with the robot at `pose`.
+  world::World world(std::shared_ptr<const geometry::OccupancyGrid> grid,
+                     const robot::Pose2D& pose) const;
+
+  const mapping::OccupancyMapper& mapper() const { return mapper_; }
+  const world::RobotSpec& robot() const { return robot_; }
+
+  /// A cell the robot plans over as floor (Unknown::kWall) has log-odds below this (p < 0.27:
+  /// more rays passed it than ended in it, by three free observations).
+  static constexpr double kClearlyFree = -1.0;
+  /// m: two neighbouring returns this close are taken as one obstacle's (hits_).
+  static constexpr double kChord = 0.1;
+  /// m beyond a return where it counts as hitting (inside the obstacle, not on its edge).
+  static constexpr double kInside = 1e-3;
+
+ private:
+  /// Remembers the cells the scan's returns end in (hits_).
+  void markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan);
+  /// The returns' cells occupied; cells clearly free only (`strict`).
+  void markGrid(geometry::OccupancyGrid& grid, bool strict) const;
+  static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
+    return (i << 32) ^ (j & 0xffffffff);
+  }
+
+  world::RobotSpec robot_;
+  mapping::OccupancyMapper mapper_;
+  /// The mapper's first origin: its lattice's cells stay where they are as the map grows.
+  geometry::Point2 lattice_;
+  /// Every cell a return ended in (cellKey of its column and row from lattice_).
+  std::unordered_set<std::int64_t> hits_;
+  std::vector<geometry::Point2> footprints_;  ///< where the robot stood (stoodAt)
+};
+
+}  // namespace roomba_rrt::exploration

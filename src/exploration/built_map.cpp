@@ -1,0 +1,172 @@
+#include "roomba_rrt/exploration/built_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "roomba_rrt/mapping/sensor_scan.h"
+
+namespace roomba_rrt::exploration {
+namespace {
+
+mapping::MapperOptions mapperOptions(const robot::Pose2D& start) {
+  mapping::MapperOptions options;
+  options.resolution = 0.05;
+  options.xmin = start.x - 5;
+  options.xmax = start.x + 5;
+  options.ymin = start.y - 5;
+  options.ymax = start.y + 5;
+  return options;
+}
+
+}  // namespace
+
+BuiltMap::BuiltMap(const world::RobotSpec& robot)
+    : robot_(robot), mapper_(mapperOptions(robot.initial_pose)), lattice_(mapper_.origin()) {
+  footprints_.push_back({robot_.initial_pose.x, robot_.initial_pose.y});
+}
+
+std::string BuiltMap::addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
+  std::string why = mapper_.addScan(sensor, scan);
+  if (why.empty()) markHits(sensor, scan);
+  return why;
+}
+
+void BuiltMap::addBump(const robot::Pose2D& pose, const robot::BumperState& bumper) {
+  mapper_.addBump(pose, robot_.radius, bumper);
+}
+
+void BuiltMap::markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
+  const double resolution = mapper_.resolution();
+  auto mark = [&](const geometry::Point2& p) {
+    hits_.insert(cellKey(static_cast<std::int64_t>(std::floor((p.x - lattice_.x) / resolution)),
+                         static_cast<std::int64_t>(std::floor((p.y - lattice_.y) / resolution))));
+  };
+  bool previous_hit = false;
+  geometry::Point2 previous;
+  const double first = mapping::firstRayAngle(sensor.theta, scan);
+  for (std::size_t k = 0; k < scan.count; ++k) {
+    const double range = scan.ranges[k];
+    // The rays the mapper counts as hits only: no return (+inf, or beyond what it trusts) and
+    // none to trust (NaN, below range_min) are not.
+    if (!mapper_.isReturn(range, scan)) {
+      previous_hit = false;
+      continue;
+    }
+    // A hair beyond the return, inside what it hit.
+    const double angle = first + static_cast<double>(k) * scan.angle_increment;
+    const double r = range + kInside;
+    const geometry::Point2 hit{sensor.x + r * std::cos(angle), sensor.y + r * std::sin(angle)};
+    mark(hit);
+    // Two neighbouring returns close together lie on one obstacle: the chord between them
+    // lies inside it (on a wall, along it), and so does every cell it crosses, among them the
+    // cells the obstacle's edge crosses between the two returns, where no ray ended.
+    const double chord = geometry::distance(previous, hit);
+    if (previous_hit && chord <= kChord) {
+      const int samples = static_cast<int>(std::ceil(chord / (0.2 * resolution)));
+      for (int s = 1; s < samples; ++s) {
+        const double t = static_cast<double>(s) / samples;
+        mark({previous.x + t * (hit.x - previous.x), previous.y + t * (hit.y - previous.y)});
+      }
+    }
+    previous = hit;
+    previous_hit = true;
+  }
+}
+
+void BuiltMap::markGrid(geometry::OccupancyGrid& grid, bool strict) const {
+  for (int j = 0; j < grid.height; ++j) {
+    for (int i = 0; i < grid.width; ++i) {
+      std::int8_t& cell = grid.cells[static_cast<std::size_t>(j) * grid.width + i];
+      // Strict: free only where the rays said so clearly; a cell an obstacle's edge crosses gets
+      // free evidence from the rays that pass its free part and hits from those that end in it,
+      // and the robot plans as close to a free cell as to the floor.
+      if (strict && cell == geometry::OccupancyGrid::kFree &&
+          mapper_.logOdds(i, j) > kClearlyFree) {
+        cell = geometry::OccupancyGrid::kOccupied;
+      }
+      // A ray ended in it: an obstacle's edge crosses it, however many rays passed its free part.
+      const std::int64_t gi = std::llround((grid.origin.x - lattice_.x) / grid.resolution) + i;
+      const std::int64_t gj = std::llround((grid.origin.y - lattice_.y) / grid.resolution) + j;
+      if (hits_.count(cellKey(gi, gj))) cell = geometry::OccupancyGrid::kOccupied;
+    }
+  }
+}
+
+geometry::OccupancyGrid BuiltMap::seenGrid() const {
+  geometry::OccupancyGrid grid = mapper_.grid();
+  markGrid(grid, false);
+  return grid;
+}
+
+geometry::OccupancyGrid BuiltMap::grid(Unknown unknown,
+                                       const std::vector<geometry::Point2>& include) const {
+  geometry::OccupancyGrid grid = mapper_.grid();
+  markGrid(grid, unknown == Unknown::kWall);
+  // Where the robot stood is floor: every cell wholly under its disc, whatever the map says
+  // (the cells it marked while it was seen from afar), and the unknown cells its disc reaches
+  // into (its lidar starts range_min from its centre).
+  const int r = static_cast<int>(std::ceil(robot_.radius / grid.resolution));
+  const double r2 = robot_.radius * robot_.radius;
+  for (const geometry::Point2& p : footprints_) {
+    const int ci = grid.column(p.x), cj = grid.row(p.y);
+    for (int j = cj - r; j <= cj + r; ++j) {
+      for (int i = ci - r; i <= ci + r; ++i) {
+        if (!grid.inside(i, j)) continue;
+        const geometry::Rectangle s = grid.square(i, j);
+        const double nx = std::max({s.min_x - p.x, 0.0, p.x - s.max_x});
+        const double ny = std::max({s.min_y - p.y, 0.0, p.y - s.max_y});
+        const double fx = std::max(p.x - s.min_x, s.max_x - p.x);
+        const double fy = std::max(p.y - s.min_y, s.max_y - p.y);
+        std::int8_t& cell = grid.cells[static_cast<std::size_t>(j) * grid.width + i];
+        const bool under = fx * fx + fy * fy < r2;
+        const bool reached = nx * nx + ny * ny < r2 && cell == geometry::OccupancyGrid::kUnknown;
+        if (under || reached) cell = geometry::OccupancyGrid::kFree;
+      }
+    }
+  }
+  if (unknown == Unknown::kFree) {
+    // Grown on the mapper's lattice to take in `include` with a metre round each point; every
+    // cell not known occupied is floor.
+    geometry::Rectangle want = grid.extent();
+    for (const geometry::Point2& p : include) {
+      want.min_x = std::min(want.min_x, p.x - 1);
+      want.min_y = std::min(want.min_y, p.y - 1);
+      want.max_x = std::max(want.max_x, p.x + 1);
+      want.max_y = std::max(want.max_y, p.y + 1);
+    }
+    const int left = static_cast<int>(std::ceil((grid.origin.x - want.min_x) / grid.resolution));
+    const int below = static_cast<int>(std::ceil((grid.origin.y - want.min_y) / grid.resolution));
+    const geometry::Rectangle has = grid.extent();
+    const int right = static_cast<int>(std::ceil((want.max_x - has.max_x) / grid.resolution));
+    const int above = static_cast<int>(std::ceil((want.max_y - has.max_y) / grid.resolution));
+    geometry::OccupancyGrid grown;
+    grown.resolution = grid.resolution;
+    grown.width = grid.width + left + right;
+    grown.height = grid.height + below + above;
+    grown.origin = {grid.origin.x - left * grid.resolution,
+                    grid.origin.y - below * grid.resolution};
+    grown.cells.assign(static_cast<std::size_t>(grown.width) * grown.height,
+                       geometry::OccupancyGrid::kFree);
+    for (int j = 0; j < grid.height; ++j) {
+      for (int i = 0; i < grid.width; ++i) {
+        if (grid.at(i, j) == geometry::OccupancyGrid::kOccupied) {
+          grown.cells[static_cast<std::size_t>(j + below) * grown.width + i + left] =
+              geometry::OccupancyGrid::kOccupied;
+        }
+      }
+    }
+    return grown;
+  }
+  return grid;
+}
+
+world::World BuiltMap::world(std::shared_ptr<const geometry::OccupancyGrid> grid,
+                             const robot::Pose2D& pose) const {
+  world::World world = world::mapWorld(std::move(grid), robot_.radius);
+  world.robots.front() = robot_;
+  world.robots.front().initial_pose = pose;
+  return world;
+}
+
+}  // namespace roomba_rrt::exploration
