@@ -68,6 +68,8 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/clean.test DEPENDENCIES nav_rostest)
   # A home it has never seen: roomba_mapper's /map, roomba_bt ~unknown explores, then cleans.
   add_rostest(test/navigation/clean_unknown.test DEPENDENCIES nav_rostest)
+  # And navigation there: roomba_bt ~unknown with the navigation tree takes goals on that map.
+  add_rostest(test/navigation/nav_unknown.test DEPENDENCIES nav_rostest)
   if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
     add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
   elseif("$ENV{CI}" STREQUAL "true")

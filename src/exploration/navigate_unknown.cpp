@@ -58,7 +58,9 @@ NavigateUnknown::NavigateUnknown(const world::RobotSpec& robot,
       pose_latency_(pose_latency),
       tree_file_(std::move(tree_file)),
       map_(robot),
-      last_footprint_{robot.initial_pose.x, robot.initial_pose.y} {}
+      last_footprint_{robot.initial_pose.x, robot.initial_pose.y} {
+  follower_.rate = params_.rate;
+}
 
 NavigateUnknown::~NavigateUnknown() = default;
 
@@ -74,9 +76,9 @@ void NavigateUnknown::setGoal(const robot::Pose2D& goal) {
   const double dx = std::max({known.min_x - goal.x, 0.0, goal.x - known.max_x});
   const double dy = std::max({known.min_y - goal.y, 0.0, goal.y - known.max_y});
   if (std::hypot(dx, dy) > kMaxGoalDistance) {
-    throw util::InvalidInput("goal", "is " + std::to_string(std::hypot(dx, dy)) +
+    throw util::InvalidInput("goal", util::show(std::hypot(dx, dy)) +
                                          " m beyond the map the robot has built (at most " +
-                                         std::to_string(kMaxGoalDistance) + " m)");
+                                         util::show(kMaxGoalDistance) + " m)");
   }
   goal_ = goal;
   nav_.reset();  // the next tick plans on the map as it is then
@@ -89,6 +91,14 @@ void NavigateUnknown::setGoal(const robot::Pose2D& goal) {
 void NavigateUnknown::cancelGoal() {
   nav_.reset();
   outcome_ = navigation::GoalOutcome::kNone;
+}
+
+void NavigateUnknown::setFollowerParams(const navigation::FollowerParams& params) {
+  navigation::FollowerParams next = params;
+  next.rate = params_.rate;
+  navigation::validate(next);
+  if (nav_) nav_->setFollowerParams(next);
+  follower_ = next;
 }
 
 void NavigateUnknown::end(navigation::GoalOutcome outcome, std::string message) {
@@ -146,7 +156,7 @@ void NavigateUnknown::look(double time, const robot::Pose2D& pose) {
   navigation::NavLeafConfig config = navigation::inProcessNavConfig(
       problem, navigation::navPlannerOptions(problem), navigation::InProcessPlanner::Mode::kInline);
   config.params = params_;
-  config.follower.rate = params_.rate;
+  config.follower = follower_;
   config.pose_latency = pose_latency_;
   nav_ = std::make_unique<navigation::NavBt>(config, seed_ + static_cast<std::uint32_t>(plans_),
                                              tree_file_);

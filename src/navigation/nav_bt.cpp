@@ -63,6 +63,14 @@ bool usesNavigationLeaves(const std::string& tree_file, const std::vector<LeafRe
   return false;
 }
 
+bool usesLeavesOf(const std::string& tree_file, const std::vector<LeafRegistrar>& more) {
+  const std::vector<std::string> without = LeafCatalogue({}).all.registeredTypes();
+  for (const std::string& type : LeafCatalogue(more).all.typesUsedIn(tree_file)) {
+    if (!std::binary_search(without.begin(), without.end(), type)) return true;
+  }
+  return false;
+}
+
 planning::PlannerOptions defaultNavPlannerOptions() {
   planning::PlannerOptions options;
   options.algorithm = planning::Algorithm::kRrtConnect;

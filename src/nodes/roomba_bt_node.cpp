@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         if (!log_file.empty()) {
           if (behavior->behaviorTree() == nullptr) {
             throw roomba_rrt::util::InvalidInput(
-                "~log_file", "cannot record with ~unknown (its trees change as it explores)");
+                "~log_file", "cannot record with ~unknown (its trees change as the map grows)");
           }
           startLog(*behavior->behaviorTree(), log_file, tree_file);
         }

@@ -21,6 +21,7 @@
 #include "reconfigure.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/exploration/explore_clean.h"
+#include "roomba_rrt/exploration/navigate_unknown.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/util/require.h"
 #include "roomba_rrt/world/world_file.h"
@@ -42,10 +43,13 @@ struct Settings {
   double clearance = navigation::kDefaultClearance;
   std::string global_frame = "map", robot_frame = "base_link";
   navigation::NavLeafConfig config;
-  /// ~unknown: the robot explores and cleans a home it does not know, with the map it builds
-  /// from `scan` (exploration::ExploreClean); world holds only its robot then.
+  /// ~unknown: a home the robot does not know, with the map it builds from `scan`; world holds
+  /// only its robot then. With a cleaning tree it explores and cleans on its own
+  /// (exploration::ExploreClean); with a navigation tree it drives to goals on that map
+  /// (exploration::NavigateUnknown).
   bool unknown = false;
-  exploration::ExploreCleanTrees trees;
+  bool cleaning = false;  ///< ~unknown with a cleaning tree (one with coverage leaves)
+  exploration::ExploreCleanTrees trees;  ///< cleaning: both; navigation: explore is the tree
   double transform_timeout = 0.2;  ///< s a scan waits for tf (roomba_mapper's ~transform_timeout)
 };
 
@@ -110,7 +114,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
     startFollowerReconfigure();
   }
 
-  /// The tree, to watch and record; none with ~unknown (its trees come and go as it explores).
+  /// The tree, to watch and record; none with ~unknown (its trees come and go as the map grows).
   bt::Tree* behaviorTree() override { return nav_ ? &nav_->tree() : nullptr; }
 
   /// The lab's constants for the cleaning leaves (BehaviorNode's dynamic_reconfigure).
@@ -155,12 +159,18 @@ class NavBehavior final : public behavior::RoombaBehavior {
       // tree keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and
       // the resume (NavBt::idle).
       context_.state_name = nav_->idle() ? &kIdle : &nav_->stateName();
-    } else {
+    } else if (settings_.cleaning) {
       if (!explore_) startExploring(pose);
       scans_.drain(ros::Time::now());  // a scan that came before its tf: into the map now
       cmd = explore_->tick(now, bumper_, pose, stamp);
       context_.state_name = explore_->done() ? &kIdle : &explore_->stateName();
       active = explore_->activeTree();
+    } else {
+      if (!to_goal_) startNavigating(pose);
+      scans_.drain(ros::Time::now());
+      cmd = to_goal_->tick(now, bumper_, pose, stamp);
+      context_.state_name = &to_goal_->stateName();  // Idle without a goal
+      active = to_goal_->tree();
     }
     if (active) {
       publishPlan(*active);
@@ -182,14 +192,29 @@ class NavBehavior final : public behavior::RoombaBehavior {
              scan_sub_.getTopic().c_str());
   }
 
+  /// ~unknown with a navigation tree: the map starts round the robot's first pose; goals are
+  /// taken from then on.
+  void startNavigating(const robot::Pose2D& pose) {
+    world::RobotSpec robot = settings_.world.robot();
+    robot.initial_pose = pose;
+    to_goal_ = std::make_unique<exploration::NavigateUnknown>(
+        robot, params(), seed_, settings_.config.pose_latency, settings_.trees.explore);
+    to_goal_->setFollowerParams(settings_.config.follower);
+    ROS_INFO("roomba_bt: mapping from (%.2f, %.2f) with %s; goals are planned on that map", pose.x,
+             pose.y, scan_sub_.getTopic().c_str());
+  }
+
   /// ~unknown: a scan into the map, with its frame's pose in the global frame at its stamp.
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-    if (!explore_) return;  // no pose yet: nowhere to start the map
+    if (!explore_ && !to_goal_) return;  // no pose yet: nowhere to start the map
     scans_.push(scan->header.frame_id, scan->header.stamp,
                 [this, scan](const geometry_msgs::Transform& transform) {
                   robot::Pose2D sensor;
                   std::string why = nodes::planarPose(transform, &sensor);
-                  if (why.empty()) why = explore_->addScan(sensor, nodes::scanView(*scan));
+                  if (why.empty()) {
+                    why = explore_ ? explore_->addScan(sensor, nodes::scanView(*scan))
+                                   : to_goal_->addScan(sensor, nodes::scanView(*scan));
+                  }
                   if (!why.empty())
                     ROS_WARN_THROTTLE(5.0, "roomba_bt: scan skipped: %s", why.c_str());
                 });
@@ -253,11 +278,20 @@ class NavBehavior final : public behavior::RoombaBehavior {
     }
   }
 
+  navigation::GoalOutcome goalOutcome() const {
+    return nav_ ? nav_->outcome() : to_goal_->outcome();
+  }
+  const std::string& goalMessage() const { return nav_ ? nav_->message() : to_goal_->message(); }
+  void cancelGoal() {
+    if (nav_) nav_->cancelGoal();
+    if (to_goal_) to_goal_->cancelGoal();
+  }
+
   /// The goal's outcome to the action client, or feedback while it runs.
   void report(const robot::Pose2D& pose) {
     if (!goal_open_) return;
     move_base_msgs::MoveBaseResult result;
-    switch (nav_->outcome()) {
+    switch (goalOutcome()) {
       case navigation::GoalOutcome::kSucceeded:
         goal_open_ = false;
         ROS_INFO("goal reached at (%.2f, %.2f)", pose.x, pose.y);
@@ -265,8 +299,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
         return;
       case navigation::GoalOutcome::kAborted:
         goal_open_ = false;
-        ROS_WARN("goal aborted: %s", nav_->message().c_str());
-        server_.setAborted(result, nav_->message());
+        ROS_WARN("goal aborted: %s", goalMessage().c_str());
+        server_.setAborted(result, goalMessage());
         return;
       case navigation::GoalOutcome::kNone:
       case navigation::GoalOutcome::kActive:
@@ -302,7 +336,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   void onGoal() {
     const auto goal = server_.acceptNewGoal();  // the goal that was active is preempted
-    if (!nav_) {
+    if (settings_.cleaning) {
       ROS_WARN("goal refused: roomba_bt explores and cleans on its own (~unknown)");
       server_.setAborted(move_base_msgs::MoveBaseResult(),
                          "roomba_bt explores and cleans on its own (~unknown): no goals");
@@ -310,11 +344,23 @@ class NavBehavior final : public behavior::RoombaBehavior {
     }
     robot::Pose2D target;
     std::string problem = toGlobal(goal->target_pose, target);
-    if (problem.empty()) {
+    if (problem.empty() && nav_) {
       problem = goalPlaceProblem(settings_.world, settings_.clearance, target.x, target.y);
     }
+    // ~unknown: where the goal lies is for the map to show; a goal far beyond it is refused.
+    if (problem.empty() && !nav_ && !to_goal_) {
+      problem = "no robot pose yet (tf " + settings_.global_frame + " -> " + settings_.robot_frame +
+                "): the map starts where the robot stands";
+    }
+    if (problem.empty() && to_goal_) {
+      try {
+        to_goal_->setGoal(target);
+      } catch (const std::invalid_argument& e) {
+        problem = e.what();
+      }
+    }
     if (!problem.empty()) {
-      nav_->cancelGoal();
+      cancelGoal();
       goal_open_ = false;
       stop();
       ROS_WARN("goal refused: %s", problem.c_str());
@@ -322,7 +368,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
       return;
     }
     ROS_INFO("goal (%.2f, %.2f, %.2f rad)", target.x, target.y, target.theta);
-    nav_->setGoal(target);
+    if (nav_) nav_->setGoal(target);
     goal_open_ = true;
     ticks_since_feedback_ = 0;
     // Tick at once so that planning starts now, not at the next timer event.
@@ -331,8 +377,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   void onPreempt() {
     if (server_.isNewGoalAvailable()) return;  // onGoal follows and replaces the goal
-    if (!nav_) return;                         // no goal was taken (~unknown)
-    nav_->cancelGoal();
+    if (!nav_ && !to_goal_) return;            // no goal was taken
+    cancelGoal();
     goal_open_ = false;
     stop();
     ROS_INFO("goal canceled");
@@ -392,6 +438,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
           next.xy_tolerance = c.xy_tolerance;
           next.yaw_tolerance = c.yaw_tolerance;
           if (nav_) nav_->setFollowerParams(next);
+          if (to_goal_) to_goal_->setFollowerParams(next);
           settings_.config.follower = next;
         });
   }
@@ -404,6 +451,8 @@ class NavBehavior final : public behavior::RoombaBehavior {
   std::unique_ptr<navigation::NavBt> nav_;  ///< null with ~unknown
   /// ~unknown: exploring and cleaning, from the first pose tf gives.
   std::unique_ptr<exploration::ExploreClean> explore_;
+  /// ~unknown with a navigation tree: goals on the map it builds, from the first pose tf gives.
+  std::unique_ptr<exploration::NavigateUnknown> to_goal_;
   ros::NodeHandle nh_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
@@ -472,9 +521,16 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
           "got '" +
           planner + "'");
     }
-    s.trees = {node_params.get<std::string>("explore_tree_file",
-                                            nodes::packageConfigFile("roomba_nav_tree.xml")),
-               tree_file};
+    // The tree says what the robot does: a cleaning tree explores, then cleans; a navigation
+    // tree takes goals.
+    s.cleaning = navigation::usesLeavesOf(tree_file, {coverage::coverageLeaves(nullptr)});
+    if (s.cleaning) {
+      s.trees = {node_params.get<std::string>("explore_tree_file",
+                                              nodes::packageConfigFile("roomba_nav_tree.xml")),
+                 tree_file};
+    } else {
+      s.trees.explore = tree_file;
+    }
     s.transform_timeout = node_params.get("transform_timeout", s.transform_timeout);
     util::requireInRange("~transform_timeout", s.transform_timeout, 0.0, 10.0, "s");
   } else if (planner == "in_process") {
@@ -515,6 +571,13 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   node_params.expect("follower/");  // the follower's dynamic_reconfigure (NavFollower.cfg)
   // Which of the planner's worlds the plans are asked in: a planner on another world answers
   // "start ... is outside the bounds" to every goal, so the user is told what it must have.
+  if (s.unknown && !s.cleaning) {
+    ROS_INFO(
+        "roomba_bt: navigation in a home it has never seen (~unknown): scans on %s, the robot "
+        "of %s, tree %s",
+        ros::NodeHandle().resolveName("scan").c_str(), world_file.c_str(), tree_file.c_str());
+    return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
+  }
   if (s.unknown) {
     ROS_INFO(
         "roomba_bt: exploring and cleaning a home it has never seen (~unknown): scans on "

@@ -38,6 +38,10 @@ class NavigateUnknown {
   /// not finite, "goal" when farther than kMaxGoalDistance from the robot's map).
   void setGoal(const robot::Pose2D& goal);
   void cancelGoal();
+  /// FollowPath's limits and tolerances for the tree driving and those made from now on
+  /// (validated first: util::InvalidInput naming the field, and nothing changes). `params.rate`
+  /// is ignored.
+  void setFollowerParams(const navigation::FollowerParams& params);
 
   /// One tick at simulated `time`: the bumper goes into the map, then the tree decides the
   /// command from `bumper` and `pose` (the robot's pose at `pose_stamp`: NavBt::observeTiming).
@@ -74,6 +78,7 @@ class NavigateUnknown {
 
   world::RobotSpec robot_;
   behavior::RoombaParams params_;
+  navigation::FollowerParams follower_;
   std::uint32_t seed_;
   double pose_latency_;
   std::string tree_file_;

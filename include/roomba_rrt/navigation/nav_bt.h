@@ -119,4 +119,8 @@ std::string treeNodesModel(const std::vector<LeafRegistrar>& more = {});
 bool usesNavigationLeaves(const std::string& tree_file,
                           const std::vector<LeafRegistrar>& more = {});
 
+/// Whether the tree file (or a file it includes) uses one of `more`'s leaves (with
+/// coverage::coverageLeaves: whether it is a cleaning tree; bt::TreeFileError as above).
+bool usesLeavesOf(const std::string& tree_file, const std::vector<LeafRegistrar>& more);
+
 }  // namespace roomba_rrt::navigation
