@@ -31,22 +31,6 @@ navigation::Path ahead(const navigation::Path& path, const geometry::Point2& at)
   return rest;
 }
 
-/// Every cell of `grid` the disc of `radius` at `at` reaches into made free: the robot stands
-/// there without touching anything, and a plan starts from where it is (a cell is a 5 cm square
-/// round what a ray hit: the disc may reach into one that holds an obstacle's edge).
-void freeUnder(geometry::OccupancyGrid& grid, const geometry::Point2& at, double radius) {
-  const int r = static_cast<int>(std::ceil(radius / grid.resolution)) + 1;
-  const int ci = grid.column(at.x), cj = grid.row(at.y);
-  for (int j = cj - r; j <= cj + r; ++j) {
-    for (int i = ci - r; i <= ci + r; ++i) {
-      if (!grid.inside(i, j)) continue;
-      if (geometry::distance(grid.square(i, j), at) < radius) {
-        grid.cells[static_cast<std::size_t>(j) * grid.width + i] = geometry::OccupancyGrid::kFree;
-      }
-    }
-  }
-}
-
 }  // namespace
 
 NavigateUnknown::NavigateUnknown(const world::RobotSpec& robot,
@@ -144,9 +128,8 @@ void NavigateUnknown::look(double time, const robot::Pose2D& pose) {
     last_footprint_ = at;
   }
   if (nav_ && !nav_->path()) return;  // its first plan is still to come
-  geometry::OccupancyGrid now = map_.grid(BuiltMap::Unknown::kFree, {at, {goal_.x, goal_.y}});
-  freeUnder(now, at, robot_.radius);
-  const auto grid = std::make_shared<const geometry::OccupancyGrid>(std::move(now));
+  const auto grid = std::make_shared<const geometry::OccupancyGrid>(
+      map_.grid(BuiltMap::Unknown::kFree, {at, {goal_.x, goal_.y}}));
   planning::Problem problem = world_planning::roomProblem(map_.world(grid, pose));
   problem.clearance = navigation::kDefaultClearance;  // as roomba_bt's ~clearance
   if (nav_ && nav_->path() &&

@@ -34,7 +34,7 @@ const char* const kUsage =
     "  --pose     where the robot starts (m, rad); default the world's (a map's (0, 0))\n"
     "  --tree     navigation tree (default config/roomba_nav_tree.xml)\n"
     "  --json     print one JSON object: goals, reached_pct, bumps, mean_time_s,\n"
-    "             mean_length_ratio, planning_ms_p50\n"
+    "             mean_length_ratio, planning_ms_p50 (0 with --unknown: not timed)\n"
     "  --csv      per goal: goal,start_x,start_y,goal_x,goal_y,goal_theta,reached,bumps,time_s,\n"
     "             driven_m,shortest_m,message\n"
     "  --png      picture: room, traces (green reached, red not), goals as arrows\n"
