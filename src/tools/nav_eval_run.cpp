@@ -163,6 +163,37 @@ double shortestDiscPathLength(const world::World& world, const robot::Pose2D& st
   return length;
 }
 
+namespace {
+
+/// Drives the simulator's robot towards `run.goal` with `command(bumper, pose)` until `nav`'s goal
+/// is no longer active or `timeout_s` robot seconds pass: what a user notices goes into `run`
+/// (bumps, time, length driven, a pose every 6th tick, and "timeout" or nav's message when it
+/// was not reached).
+template <class Nav, class Command>
+void driveGoal(sim::Simulator& simulator, const Nav& nav, double timeout_s, GoalRun& run,
+               Command command) {
+  const double step = simulator.world().step;
+  const long max_ticks = std::lround(timeout_s / step);
+  long tick = 0;
+  for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
+    const robot::BumperState bumper = simulator.senseContact();
+    run.bumps += bumper.pressed ? 1 : 0;
+    const robot::Pose2D before = simulator.pose();
+    simulator.move(command(bumper, before));
+    run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
+    if (tick % 6 == 0) run.trace.push_back(simulator.pose());
+  }
+  run.time_s = static_cast<double>(tick) * step;
+  run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
+  if (nav.outcome() == navigation::GoalOutcome::kActive) {
+    run.message = "timeout";
+  } else if (!run.reached) {
+    run.message = nav.message();
+  }
+}
+
+}  // namespace
+
 GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
                      const std::string& tree_file, const robot::Pose2D& goal, std::uint32_t seed,
                      double timeout_s, double& clock) {
@@ -177,30 +208,19 @@ GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
   GoalRun run;
   run.start = robot.initial_pose;
   run.goal = goal;
-  const long max_ticks = std::lround(timeout_s / world.step);
   std::vector<robot::Pose2D> poses(1);
-  long tick = 0;
-  for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
-    const robot::BumperState bumper = simulator.senseContact();
-    run.bumps += bumper.pressed ? 1 : 0;
-    const robot::Pose2D before = simulator.pose();
-    poses[0] = before;
-    for (const sensors::Scan& scan : scanner.scan(clock, poses)) {
-      const sensors::RangeSensorSpec& spec = robot.sensors[scan.sensor];
-      nav.addScan(mapping::mountedPose(before, spec.mount), mapping::scanView(spec, scan.ranges));
-    }
-    simulator.move(nav.tick(clock, bumper, before, clock));
-    clock += world.step;
-    run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
-    if (tick % 6 == 0) run.trace.push_back(simulator.pose());
-  }
-  run.time_s = static_cast<double>(tick) * world.step;
-  run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
-  if (nav.outcome() == navigation::GoalOutcome::kActive) {
-    run.message = "timeout";
-  } else if (!run.reached) {
-    run.message = nav.message();
-  }
+  driveGoal(simulator, nav, timeout_s, run,
+            [&](const robot::BumperState& bumper, const robot::Pose2D& pose) {
+              poses[0] = pose;
+              for (const sensors::Scan& scan : scanner.scan(clock, poses)) {
+                const sensors::RangeSensorSpec& spec = robot.sensors[scan.sensor];
+                nav.addScan(mapping::mountedPose(pose, spec.mount),
+                            mapping::scanView(spec, scan.ranges));
+              }
+              const robot::Velocity cmd = nav.tick(clock, bumper, pose, clock);
+              clock += world.step;
+              return cmd;
+            });
   run.plans = nav.plans();
   return run;
 }
@@ -242,7 +262,6 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
                                             world.room.origin.x + world.room.width),
       uy(world.room.origin.y, world.room.origin.y + world.room.height), ut(-M_PI, M_PI);
   const double margin = world.robot().radius + options.clearance;
-  const long max_ticks = std::lround(options.timeout_s / world.step);
 
   for (int n = 0; n < options.goals; ++n) {
     GoalRun run;
@@ -267,23 +286,11 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
       run = std::move(driven);
     } else {
       nav.setGoal(run.goal);
-      long tick = 0;
-      for (; tick < max_ticks && nav.outcome() == navigation::GoalOutcome::kActive; ++tick) {
-        const robot::BumperState bumper = simulator.senseContact();
-        run.bumps += bumper.pressed ? 1 : 0;
-        const robot::Pose2D before = simulator.pose();
-        simulator.move(nav.tick(bumper, before));
-        run.driven_m += std::hypot(simulator.pose().x - before.x, simulator.pose().y - before.y);
-        if (tick % 6 == 0) run.trace.push_back(simulator.pose());
-      }
-      run.time_s = static_cast<double>(tick) * world.step;
-      run.reached = nav.outcome() == navigation::GoalOutcome::kSucceeded;
-      if (nav.outcome() == navigation::GoalOutcome::kActive) {
-        nav.cancelGoal();
-        run.message = "timeout";
-      } else if (!run.reached) {
-        run.message = nav.message();
-      }
+      driveGoal(simulator, nav, options.timeout_s, run,
+                [&](const robot::BumperState& bumper, const robot::Pose2D& pose) {
+                  return nav.tick(bumper, pose);
+                });
+      if (nav.outcome() == navigation::GoalOutcome::kActive) nav.cancelGoal();
     }
     report.runs.push_back(std::move(run));
     if (progress) progress(n + 1, options.goals);
