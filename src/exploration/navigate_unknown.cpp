@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <utility>
 
@@ -18,12 +17,7 @@ const std::string kNoGoal = "Idle";
 /// The part of `path` still ahead of a robot at `at`: `at`, then every point after the segment
 /// nearest to it.
 navigation::Path ahead(const navigation::Path& path, const geometry::Point2& at) {
-  std::size_t nearest = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k + 1 < path.size(); ++k) {
-    const double d = geometry::distance(at, geometry::closestPoint({path[k], path[k + 1]}, at));
-    if (d < best) best = d, nearest = k;
-  }
+  const std::size_t nearest = navigation::nearestSegment(path, at);
   navigation::Path rest{{at.x, at.y}};
   rest.insert(rest.end(),
               path.begin() + static_cast<std::ptrdiff_t>(std::min(nearest + 1, path.size())),

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "roomba_rrt/behavior/motion_leaf.h"
 #include "roomba_rrt/geometry/geometry.h"
@@ -125,18 +124,10 @@ class ComputePath final : public NavLeaf {
     if (!goal || current.back().x != goal->x || current.back().y != goal->y) return false;
     const planning::Point2 robot = reply_.path.front();
     // What is left of the current path: from the robot's projection on its nearest segment on.
-    std::size_t nearest = 0;
-    double best = std::numeric_limits<double>::infinity(), left = 0;
-    for (std::size_t i = 0; i + 1 < current.size(); ++i) {
-      const planning::Point2 p =
-          geometry::closestPoint(planning::Segment{current[i], current[i + 1]}, robot);
-      const double d = planning::distance(robot, p);
-      if (d < best) {
-        best = d;
-        nearest = i;
-        left = d + planning::distance(p, current[i + 1]);
-      }
-    }
+    const std::size_t nearest = nearestSegment(current, robot);
+    const planning::Point2 p =
+        geometry::closestPoint(planning::Segment{current[nearest], current[nearest + 1]}, robot);
+    double left = planning::distance(robot, p) + planning::distance(p, current[nearest + 1]);
     for (std::size_t i = nearest + 1; i + 1 < current.size(); ++i) {
       left += planning::distance(current[i], current[i + 1]);
     }

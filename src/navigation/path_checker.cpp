@@ -1,11 +1,26 @@
 #include "roomba_rrt/navigation/path_checker.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace roomba_rrt::navigation {
 
 using planning::Point2;
+
+std::size_t nearestSegment(const Path& path, const Point2& p) {
+  std::size_t nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const double d =
+        planning::distance(p, geometry::closestPoint(planning::Segment{path[i], path[i + 1]}, p));
+    if (d < best) {
+      best = d;
+      nearest = i;
+    }
+  }
+  return nearest;
+}
 
 PathChecker::PathChecker(planning::Problem world)
     : world_(std::move(world)),

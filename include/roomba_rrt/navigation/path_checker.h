@@ -13,6 +13,11 @@ namespace roomba_rrt::navigation {
 /// The clearance navigation keeps on top of the robot's radius by default (m).
 constexpr double kDefaultClearance = 0.05;
 
+/// The index k of the segment path[k]-path[k + 1] nearest to `p` (the first of equally near
+/// ones; 0 for a path of fewer than two points): where a robot at `p` is along the path, for
+/// what is left of it.
+std::size_t nearestSegment(const Path& path, const planning::Point2& p);
+
 /// The world of a planning::Problem without its start and goal (bounds = the walls, circles and
 /// rectangles = the furniture, robot_radius + clearance = the disc kept clear of both: circles
 /// grown, rectangles rounded by that margin, bounds shrunk by it). A robot hugging furniture
