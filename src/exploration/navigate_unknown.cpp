@@ -50,7 +50,10 @@ void NavigateUnknown::setGoal(const robot::Pose2D& goal) {
   if (!std::isfinite(goal.x)) throw util::InvalidInput("goal.x", "is not finite");
   if (!std::isfinite(goal.y)) throw util::InvalidInput("goal.y", "is not finite");
   if (!std::isfinite(goal.theta)) throw util::InvalidInput("goal.theta", "is not finite");
-  const geometry::Rectangle known = map_.mapper().grid().extent();
+  const mapping::OccupancyMapper& mapper = map_.mapper();
+  const geometry::Point2 low = mapper.origin();
+  const geometry::Rectangle known{low.x, low.y, low.x + mapper.width() * mapper.resolution(),
+                                  low.y + mapper.height() * mapper.resolution()};
   const double dx = std::max({known.min_x - goal.x, 0.0, goal.x - known.max_x});
   const double dy = std::max({known.min_y - goal.y, 0.0, goal.y - known.max_y});
   if (std::hypot(dx, dy) > kMaxGoalDistance) {
