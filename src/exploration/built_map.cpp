@@ -9,9 +9,9 @@
 namespace roomba_rrt::exploration {
 namespace {
 
-mapping::MapperOptions mapperOptions(const robot::Pose2D& start) {
+mapping::MapperOptions mapperOptions(const robot::Pose2D& start, double resolution) {
   mapping::MapperOptions options;
-  options.resolution = 0.05;
+  options.resolution = resolution;
   options.xmin = start.x - 5;
   options.xmax = start.x + 5;
   options.ymin = start.y - 5;
@@ -21,26 +21,44 @@ mapping::MapperOptions mapperOptions(const robot::Pose2D& start) {
 
 }  // namespace
 
-BuiltMap::BuiltMap(const world::RobotSpec& robot)
-    : robot_(robot), mapper_(mapperOptions(robot.initial_pose)), lattice_(mapper_.origin()) {
+BuiltMap::BuiltMap(const world::RobotSpec& robot, int fine_split)
+    : robot_(robot),
+      mapper_(mapperOptions(robot.initial_pose, kResolution)),
+      lattice_(mapper_.origin()) {
   footprints_.push_back({robot_.initial_pose.x, robot_.initial_pose.y});
+  if (fine_split > 1) {
+    fine_ = std::make_unique<mapping::OccupancyMapper>(
+        mapperOptions(robot.initial_pose, kResolution / fine_split));
+  }
 }
 
 std::string BuiltMap::addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
   std::string why = mapper_.addScan(sensor, scan);
-  if (why.empty()) markHits(sensor, scan);
+  if (why.empty()) {
+    if (fine_) fine_->addScan(sensor, scan);
+    markHits(sensor, scan);
+  }
   return why;
 }
 
 void BuiltMap::addBump(const robot::Pose2D& pose, const robot::BumperState& bumper) {
   mapper_.addBump(pose, robot_.radius, bumper);
+  if (fine_) fine_->addBump(pose, robot_.radius, bumper);
 }
 
 void BuiltMap::markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
-  const double resolution = mapper_.resolution();
-  auto mark = [&](const geometry::Point2& p) {
-    hits_.insert(cellKey(static_cast<std::int64_t>(std::floor((p.x - lattice_.x) / resolution)),
-                         static_cast<std::int64_t>(std::floor((p.y - lattice_.y) / resolution))));
+  // The cells of `cell` m holding the points from a to b (sampled every fifth of a cell) into
+  // `hits`.
+  auto mark = [&](const geometry::Point2& a, const geometry::Point2& b, double cell,
+                  std::unordered_set<std::int64_t>& hits) {
+    const int samples =
+        std::max(1, static_cast<int>(std::ceil(geometry::distance(a, b) / (0.2 * cell))));
+    for (int s = 1; s <= samples; ++s) {
+      const double t = static_cast<double>(s) / samples;
+      hits.insert(cellKey(
+          static_cast<std::int64_t>(std::floor((a.x + t * (b.x - a.x) - lattice_.x) / cell)),
+          static_cast<std::int64_t>(std::floor((a.y + t * (b.y - a.y) - lattice_.y) / cell))));
+    }
   };
   bool previous_hit = false;
   geometry::Point2 previous;
@@ -57,18 +75,13 @@ void BuiltMap::markHits(const robot::Pose2D& sensor, const mapping::ScanView& sc
     const double angle = first + static_cast<double>(k) * scan.angle_increment;
     const double r = range + kInside;
     const geometry::Point2 hit{sensor.x + r * std::cos(angle), sensor.y + r * std::sin(angle)};
-    mark(hit);
     // Two neighbouring returns close together lie on one obstacle: the chord between them
     // lies inside it (on a wall, along it), and so does every cell it crosses, among them the
     // cells the obstacle's edge crosses between the two returns, where no ray ended.
-    const double chord = geometry::distance(previous, hit);
-    if (previous_hit && chord <= kChord) {
-      const int samples = static_cast<int>(std::ceil(chord / (0.2 * resolution)));
-      for (int s = 1; s < samples; ++s) {
-        const double t = static_cast<double>(s) / samples;
-        mark({previous.x + t * (hit.x - previous.x), previous.y + t * (hit.y - previous.y)});
-      }
-    }
+    const geometry::Point2 from =
+        previous_hit && geometry::distance(previous, hit) <= kChord ? previous : hit;
+    mark(from, hit, mapper_.resolution(), hits_);
+    if (fine_) mark(from, hit, fine_->resolution(), fine_hits_);
     previous = hit;
     previous_hit = true;
   }
@@ -93,16 +106,7 @@ void BuiltMap::markGrid(geometry::OccupancyGrid& grid, bool strict) const {
   }
 }
 
-geometry::OccupancyGrid BuiltMap::seenGrid() const {
-  geometry::OccupancyGrid grid = mapper_.grid();
-  markGrid(grid, false);
-  return grid;
-}
-
-geometry::OccupancyGrid BuiltMap::grid(Unknown unknown,
-                                       const std::vector<geometry::Point2>& include) const {
-  geometry::OccupancyGrid grid = mapper_.grid();
-  markGrid(grid, unknown == Unknown::kWall);
+void BuiltMap::markFootprints(geometry::OccupancyGrid& grid) const {
   // Where the robot stood is floor: every cell wholly under its disc, whatever the map says
   // (the cells it marked while it was seen from afar), and the unknown cells its disc reaches
   // into (its lidar starts range_min from its centre).
@@ -125,6 +129,19 @@ geometry::OccupancyGrid BuiltMap::grid(Unknown unknown,
       }
     }
   }
+}
+
+geometry::OccupancyGrid BuiltMap::seenGrid() const {
+  geometry::OccupancyGrid grid = mapper_.grid();
+  markGrid(grid, false);
+  return grid;
+}
+
+geometry::OccupancyGrid BuiltMap::grid(Unknown unknown,
+                                       const std::vector<geometry::Point2>& include) const {
+  geometry::OccupancyGrid grid = mapper_.grid();
+  markGrid(grid, unknown == Unknown::kWall);
+  markFootprints(grid);
   if (unknown == Unknown::kFree) {
     // Grown on the mapper's lattice to take in `include` with a metre round each point; every
     // cell not known occupied is floor.
@@ -158,6 +175,32 @@ geometry::OccupancyGrid BuiltMap::grid(Unknown unknown,
     }
     return grown;
   }
+  return grid;
+}
+
+geometry::OccupancyGrid BuiltMap::fineGrid() const {
+  const geometry::OccupancyGrid coarse = grid(Unknown::kWall);
+  if (!fine_) return coarse;
+  geometry::OccupancyGrid grid = fine_->grid();
+  const double cell = grid.resolution;
+  for (int j = 0; j < grid.height; ++j) {
+    for (int i = 0; i < grid.width; ++i) {
+      std::int8_t& value = grid.cells[static_cast<std::size_t>(j) * grid.width + i];
+      const std::int64_t gi = std::llround((grid.origin.x - lattice_.x) / cell) + i;
+      const std::int64_t gj = std::llround((grid.origin.y - lattice_.y) / cell) + j;
+      if (fine_hits_.count(cellKey(gi, gj))) {
+        value = geometry::OccupancyGrid::kOccupied;  // a return ended in it
+      } else if (!fine_->observed(i, j) || fine_->logOdds(i, j) >= 0) {
+        // Not crossed more than hit (not seen at this size, or the bumper's): as its 0.05 m cell.
+        const int ci = coarse.column(grid.origin.x + (i + 0.5) * cell);
+        const int cj = coarse.row(grid.origin.y + (j + 0.5) * cell);
+        value = coarse.inside(ci, cj) ? coarse.at(ci, cj) : geometry::OccupancyGrid::kUnknown;
+      } else {
+        value = geometry::OccupancyGrid::kFree;
+      }
+    }
+  }
+  markFootprints(grid);
   return grid;
 }
 

@@ -33,7 +33,7 @@ ExploreClean::ExploreClean(const world::RobotSpec& robot, double coverage_cell_s
       params_(params),
       seed_(seed),
       pose_latency_(pose_latency),
-      map_(robot),
+      map_(robot, kFineSplit),
       trees_(std::move(trees)) {
   frontier_options_.robot_radius = robot_.radius + kGoalMargin;
   frontier_options_.view_distance = kViewDistance;
@@ -54,6 +54,12 @@ void ExploreClean::setParams(const behavior::RoombaParams& params) {
 robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper,
                                    const robot::Pose2D& pose, double pose_stamp) {
   if (bumper.pressed) map_.addBump(pose, bumper);
+  if (swept_at_.empty() || geometry::distance(swept_at_.back(), {pose.x, pose.y}) >= kSweptStep) {
+    swept_at_.push_back({pose.x, pose.y});
+  }
+  if (clean_ && clean_->idle() && rounds_ < kTouchUpRounds && !trees_.touch_up.empty()) {
+    startTouchUp(pose);
+  }
   if (clean_) {
     clean_->observeTiming(time, pose_stamp);
     return clean_->tick(bumper, pose);
@@ -119,6 +125,9 @@ void ExploreClean::nextGoal(double time, const robot::Pose2D& pose, bool arrived
       problem, navigation::navPlannerOptions(problem), navigation::InProcessPlanner::Mode::kInline);
   config.params = params_;
   config.follower.rate = params_.rate;
+  // At the cleaning's transit speed, and any heading at the frontier: the lidar sees all round.
+  config.follower.max_linear_speed = std::min(kExploreSpeed, robot_.max_linear_speed);
+  config.follower.yaw_tolerance = navigation::FollowerLimits::kMaxYawTolerance;
   config.pose_latency = pose_latency_;
   explore_ = std::make_unique<navigation::NavBt>(config, seed_, trees_.explore);
   goal_ = goal->goal;
@@ -155,18 +164,38 @@ world::World ExploreClean::builtWorld(std::shared_ptr<const geometry::OccupancyG
   return world;
 }
 
+navigation::NavLeafConfig ExploreClean::cleaningOnMap(
+    const robot::Pose2D& pose, double cell_size,
+    std::shared_ptr<const coverage::CoveragePlanner>& planner) {
+  map_.stoodAt({pose.x, pose.y});
+  const auto grid = std::make_shared<const geometry::OccupancyGrid>(map_.fineGrid());
+  world::World world = builtWorld(grid, pose);
+  world.coverage_cell_size = cell_size;
+  planner =
+      std::make_shared<const coverage::CoveragePlanner>(world, coverage::cleaningOptions(world));
+  navigation::NavLeafConfig config = cleaningConfig(world, params_, planner);
+  config.pose_latency = pose_latency_;
+  return config;
+}
+
 void ExploreClean::startCleaning(double time, const robot::Pose2D& pose) {
   explored_at_ = time;
   explore_.reset();
-  map_.stoodAt({pose.x, pose.y});
-  const auto grid =
-      std::make_shared<const geometry::OccupancyGrid>(map_.grid(BuiltMap::Unknown::kWall));
-  const world::World world = builtWorld(grid, pose);
-  navigation::NavLeafConfig config = cleaningConfig(
-      world, params_,
-      std::make_shared<const coverage::CoveragePlanner>(world, coverage::cleaningOptions(world)));
-  config.pose_latency = pose_latency_;
-  clean_ = std::make_unique<navigation::NavBt>(config, seed_, trees_.clean);
+  std::shared_ptr<const coverage::CoveragePlanner> planner;
+  clean_ = std::make_unique<navigation::NavBt>(cleaningOnMap(pose, coverage_cell_size_, planner),
+                                               seed_, trees_.clean);
+}
+
+void ExploreClean::startTouchUp(const robot::Pose2D& pose) {
+  ++rounds_;
+  std::shared_ptr<const coverage::CoveragePlanner> planner;
+  const navigation::NavLeafConfig config =
+      cleaningOnMap(pose, coverage_cell_size_ / kTouchUpSplit, planner);
+  // Nothing planned yet, and the floor swept so far on the new map's lattice.
+  coverage::CoverageProgress progress;
+  for (const geometry::Point2& p : swept_at_) planner->markSwept(progress.swept, p);
+  clean_ = std::make_unique<navigation::NavBt>(config, seed_, trees_.touch_up);
+  clean_->tree().blackboard().set("coverage", progress);
 }
 
 const std::string& ExploreClean::stateName() const {

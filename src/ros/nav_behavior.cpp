@@ -527,7 +527,9 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
     if (s.cleaning) {
       s.trees = {node_params.get<std::string>("explore_tree_file",
                                               nodes::packageConfigFile("roomba_nav_tree.xml")),
-                 tree_file};
+                 tree_file,
+                 node_params.get<std::string>(
+                     "touch_up_tree_file", nodes::packageConfigFile("roomba_touch_up_tree.xml"))};
     } else {
       s.trees.explore = tree_file;
     }

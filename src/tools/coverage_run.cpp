@@ -36,7 +36,8 @@ class Driver {
       explore_ = std::make_unique<exploration::ExploreClean>(
           robot_, world.coverage_cell_size, params, seed, o.predictTicks() / params.rate,
           exploration::ExploreCleanTrees{ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml",
-                                         ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml"});
+                                         ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml",
+                                         ROOMBA_RRT_CONFIG_DIR "/roomba_touch_up_tree.xml"});
       return;
     }
     if (o.behavior != "coverage") {

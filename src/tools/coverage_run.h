@@ -31,7 +31,7 @@ bool finalIsCheckpoint(double duration, double step);
 /// Fractions of the reachable floor whose time a run reports (time to 90 / 95 / 99 %), and the
 /// multiples of the ideal time at which it reports the coverage.
 inline constexpr double kTargets[] = {0.90, 0.95, 0.99};
-inline constexpr double kIdealMultiples[] = {1.5, 2.0};
+inline constexpr double kIdealMultiples[] = {1.5, 2.0, 2.5};
 
 /// The FSM or the BT (the lab's tree, or --tree's) with the rotation angle's seed.
 std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageArguments& o,

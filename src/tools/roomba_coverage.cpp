@@ -237,8 +237,8 @@ struct ReachableStatistics {
 
 /// --behavior coverage (one column) or --compare (fsm, bt and coverage): the coverage of the
 /// reachable floor (the floor cells the disc swept, over the coverage planner's reachable area)
-/// at the checkpoints and at 1.5× and 2× the ideal time, the time to 90 / 95 / 99 % of it and the
-/// bumps per run, one column per behaviour; coverage's CSV and picture; --plot: the curves.
+/// at the checkpoints and at 1.5×, 2× and 2.5× the ideal time, the time to 90 / 95 / 99 % of it and
+/// the bumps per run, one column per behaviour; coverage's CSV and picture; --plot: the curves.
 int runReachable(const CoverageArguments& options, const world::World& world,
                  const RoombaParams& params, const std::vector<std::string>& behaviors) {
   std::ofstream csv;

@@ -38,7 +38,28 @@ TEST(ExploreClean, cleans_a_furnished_room_it_has_never_seen_without_bumping) {
   const Outcome out = cleanUnknown(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml", 500);
   EXPECT_TRUE(std::isfinite(out.run.explored_at)) << "it never finished exploring";
   EXPECT_LT(out.run.explored_at, out.ideal_time) << "exploring took longer than cleaning should";
-  EXPECT_GE(out.run.reachable_final, 0.98);
+  // The corridor below the cupboard (0.4 m wide) shows as wide as it is only once the robot
+  // drove by it: the touch-up round on the map as it is by then cleans it (98.6 % without).
+  EXPECT_GE(out.run.reachable_final, 0.99);
+  EXPECT_LE(out.run.bumps, 2);
+}
+
+TEST(ExploreClean, cleans_up_to_walls_that_lie_anywhere_in_the_maps_cells) {
+  // The walls and the box lie 4 cm into the 5 cm cells of the map: planning on those cells
+  // leaves a band along each of them (95.4 %); on the fine map the rows reach as close as on
+  // a known map.
+  const Outcome out = cleanUnknown(ROOMBA_RRT_TEST_DIR "/tools/worlds/off_lattice_room.yaml", 300);
+  EXPECT_GE(out.run.reachable_final, 0.99);
+  EXPECT_LE(out.run.bumps, 2);
+}
+
+TEST(ExploreClean, explores_an_office_fast_enough_to_clean_95_percent_by_twice_the_ideal_time) {
+  // Issue 43's target. Ten frontiers among the desks: at the follower's 0.3 m/s, turning to
+  // each frontier at the end, exploring took 104 s and 95 % came at 2.3x the ideal time.
+  const Outcome out = cleanUnknown(ROOMBA_RRT_TEST_DIR "/navigation/worlds/office.yaml", 400);
+  EXPECT_LT(out.run.explored_at, 0.55 * out.ideal_time);
+  ASSERT_FALSE(out.run.time_to.empty());
+  EXPECT_LE(out.run.time_to[1], 2.0 * out.ideal_time) << "95 % at " << out.run.time_to[1] << " s";
   EXPECT_LE(out.run.bumps, 2);
 }
 

@@ -19,8 +19,9 @@ namespace roomba_rrt::exploration {
 class BuiltMap {
  public:
   /// For `robot` (its radius, sensors and initial_pose): a map of 0.05 m cells (gmapping's
-  /// default), 10 m round the initial pose, growing as the scans reach farther.
-  explicit BuiltMap(const world::RobotSpec& robot);
+  /// default), 10 m round the initial pose, growing as the scans reach farther. With
+  /// `fine_split` > 1 also a map of cells `fine_split` times smaller (fineGrid()).
+  explicit BuiltMap(const world::RobotSpec& robot, int fine_split = 0);
 
   /// A scan taken from `sensor` (the sensor's pose in the map): into the map. "" or why it was
   /// refused (mapping::checkScan), naming the field.
@@ -45,6 +46,14 @@ class BuiltMap {
                                const std::vector<geometry::Point2>& include = {}) const;
   /// The mapper's grid with the returns' cells occupied: the map frontiers are found on.
   geometry::OccupancyGrid seenGrid() const;
+  /// grid(Unknown::kWall) in cells fine_split times smaller (the constructor's; the strict grid
+  /// itself without it), for cleaning along the walls. A wall lies anywhere in the 0.05 m cell
+  /// its returns end in, and the strict grid blocks all of that cell: a band 2.5 cm wide on
+  /// average along every wall and piece of furniture that no row may sweep, 1–2 % of a room's
+  /// floor. In the fine grid a cell is occupied where a return (or the chord between two
+  /// neighbouring ones) ended in it, free where more rays crossed it than ended in it, and
+  /// otherwise what its 0.05 m cell is in the strict grid; free under where the robot stood.
+  geometry::OccupancyGrid fineGrid() const;
   /// `grid` as a world (its unknown and occupied cells as walls) with the robot at `pose`.
   world::World world(std::shared_ptr<const geometry::OccupancyGrid> grid,
                      const robot::Pose2D& pose) const;
@@ -52,6 +61,7 @@ class BuiltMap {
   const mapping::OccupancyMapper& mapper() const { return mapper_; }
   const world::RobotSpec& robot() const { return robot_; }
 
+  static constexpr double kResolution = 0.05;  ///< m: the map's cells (gmapping's delta)
   /// A cell the robot plans over as floor (Unknown::kWall) has log-odds below this (p < 0.27:
   /// more rays passed it than ended in it, by three free observations).
   static constexpr double kClearlyFree = -1.0;
@@ -61,10 +71,12 @@ class BuiltMap {
   static constexpr double kInside = 1e-3;
 
  private:
-  /// Remembers the cells the scan's returns end in (hits_).
+  /// Remembers the cells the scan's returns end in (hits_, fine_hits_).
   void markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan);
   /// The returns' cells occupied; cells clearly free only (`strict`).
   void markGrid(geometry::OccupancyGrid& grid, bool strict) const;
+  /// Free where the robot stood (see grid()).
+  void markFootprints(geometry::OccupancyGrid& grid) const;
   static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
     return (i << 32) ^ (j & 0xffffffff);
   }
@@ -75,6 +87,10 @@ class BuiltMap {
   geometry::Point2 lattice_;
   /// Every cell a return ended in (cellKey of its column and row from lattice_).
   std::unordered_set<std::int64_t> hits_;
+  /// fineGrid()'s: the mapper at fine_split times the resolution, and its hits (on the same
+  /// lattice, cells fine_split times smaller); none without fine_split.
+  std::unique_ptr<mapping::OccupancyMapper> fine_;
+  std::unordered_set<std::int64_t> fine_hits_;
   std::vector<geometry::Point2> footprints_;  ///< where the robot stood (stoodAt)
 };
 

@@ -3,15 +3,21 @@
 //
 // The robot starts with an empty map and a range sensor:
 //   1. mapping: every scan (addScan) and every bump goes into a log-odds map
-//      (mapping::OccupancyMapper), as roomba_mapper builds /map over ROS;
+//      (mapping::OccupancyMapper), as roomba_mapper builds /map over ROS, and into one of
+//      cells four times smaller for the cleaning (BuiltMap::fineGrid);
 //   2. exploring: it drives to the nearest frontier it can reach (exploration::nearestFrontier:
 //      unknown cells are walls until seen) with the navigation tree (config/roomba_nav_tree.xml)
-//      planning on the map as built so far; it looks again every kReplanPeriod and turns to a
+//      planning on the map as built so far, at the cleaning's transit speed and without turning
+//      at the goal (the lidar sees all round); it looks again every kReplanPeriod and turns to a
 //      nearer frontier when one appears; a frontier it arrived at but still sees, or could not
 //      reach, is given up (with every frontier cell it could see from there);
 //   3. cleaning: once no frontier it can reach is left, the cleaning tree (config/roomba_coverage_
-//      tree.xml) plans its rows on the map it built (unknown and occupied cells as walls) and
-//      drives them, as on a known map.
+//      tree.xml) plans its rows on the fine map it built (unknown and occupied cells as walls) and
+//      drives them, as on a known map;
+//   4. touching up: once that tree is done, the touch-up tree (config/roomba_touch_up_tree.xml)
+//      goes back for the spots the map as it is by then shows missed (the robot saw the floor
+//      beside walls and furniture better from the rows than from where it explored), from every
+//      pose the robot was at.
 // Exploring first and cleaning after keeps the cleaning's plan whole (rows across each room, no
 // row cut where the map ended when it was planned); the lidar sees a room from its doorway, so
 // exploring is short beside cleaning (the benchmark rows measure both).
@@ -41,6 +47,9 @@ navigation::NavLeafConfig cleaningConfig(const world::World& world,
 struct ExploreCleanTrees {
   std::string explore;  ///< drives to a frontier (navigation leaves)
   std::string clean;    ///< cleans the built map (coverage leaves)
+  /// Goes back for the spots missed on the map as it is once the cleaning is done (coverage
+  /// leaves without PlanCoverage: config/roomba_touch_up_tree.xml); "": no such round.
+  std::string touch_up;
 };
 
 class ExploreClean {
@@ -67,8 +76,11 @@ class ExploreClean {
   bool cleaning() const { return clean_ != nullptr; }
   /// The tree driving now (to a frontier, or cleaning); null while the robot stands and looks.
   navigation::NavBt* activeTree() { return clean_ ? clean_.get() : explore_.get(); }
-  /// Cleaning, and the cleaning tree is done: the robot stands for good.
-  bool done() const { return clean_ && clean_->idle(); }
+  /// Cleaning, the cleaning tree is done and so are the touch-up rounds: the robot stands for
+  /// good.
+  bool done() const {
+    return clean_ && clean_->idle() && (rounds_ >= kTouchUpRounds || trees_.touch_up.empty());
+  }
   /// The lab's constants for the trees made from now on and the one driving.
   void setParams(const behavior::RoombaParams& params);
   /// Simulated s when exploring ended (the cleaning began); negative while exploring.
@@ -86,8 +98,25 @@ class ExploreClean {
   static constexpr double kGiveUpMargin = 0.05;
   static constexpr double kGoalTimeout = 60.0;  ///< s to reach a frontier before giving it up
   static constexpr double kSameGoal = 0.3;      ///< m: a goal this close to the current is kept
+  /// m/s on the way to a frontier (the cleaning tree's transit_speed; at most the robot's
+  /// max_linear_speed): the follower's default 0.3 m/s made exploring a third of the cleaning.
+  static constexpr double kExploreSpeed = 1.0;
   /// s the robot stands and looks with no frontier in reach before it starts cleaning.
   static constexpr double kConfirmDone = 1.0;
+  /// The cleaning plans on the map in cells this many times smaller than the exploring's
+  /// (BuiltMap::fineGrid: 1.25 cm), so that its rows reach as close to the walls as on a known
+  /// map.
+  static constexpr int kFineSplit = 4;
+  /// Touch-up rounds on the map as it is once the cleaning (and the previous round) is done: the
+  /// plan was made on the map of the end of exploring, and the robot saw the floor beside the
+  /// walls and furniture better as it drove the rows (trees_.touch_up).
+  static constexpr int kTouchUpRounds = 1;
+  /// m the robot moves between two of the poses it remembers (swept_at_).
+  static constexpr double kSweptStep = 0.01;
+  /// The touch-up round plans on a lattice this many times finer than the cleaning's: the
+  /// cleaning's 2.5 cm lattice counts as floor only the squares whose centre is free, and
+  /// where a wall lies anywhere in them it leaves up to 2.5 cm along it for no row to reach.
+  static constexpr double kTouchUpSplit = 2;
 
  private:
   /// Looks for the nearest frontier from `pose` and drives there (`arrived`: the previous goal
@@ -101,6 +130,13 @@ class ExploreClean {
   world::World builtWorld(std::shared_ptr<const geometry::OccupancyGrid> grid,
                           const robot::Pose2D& pose) const;
   void startCleaning(double time, const robot::Pose2D& pose);
+  /// A touch-up round (trees_.touch_up) on the map as it is, from the floor swept so far.
+  void startTouchUp(const robot::Pose2D& pose);
+  /// The cleaning tree's configuration on the fine grid of the map as it is, the robot at `pose`,
+  /// on a lattice of `cell_size`; its planner in `planner`.
+  navigation::NavLeafConfig cleaningOnMap(
+      const robot::Pose2D& pose, double cell_size,
+      std::shared_ptr<const coverage::CoveragePlanner>& planner);
 
   world::RobotSpec robot_;
   double coverage_cell_size_;
@@ -119,6 +155,9 @@ class ExploreClean {
   ExploreCleanTrees trees_;
   std::unique_ptr<navigation::NavBt> clean_;
   double explored_at_ = -1;
+  int rounds_ = 0;  ///< touch-up rounds started
+  /// Where the robot's centre was, every kSweptStep: the floor it swept, for the touch-ups.
+  std::vector<geometry::Point2> swept_at_;
   robot::Velocity stop_;
 };
 
