@@ -29,6 +29,7 @@ figures). A missing or failed piece becomes "n/a" with the reason; the other row
     fairness.json  fairness_probe --json (rrt_planner, 8 hostile clients)
     mem_mc.json, mem_plan_ours.json, mem_plan_ompl.json   bench/peak_rss.py
     startup.json   bench/startup_probe.py (the tools' start-up)
+    node_startup.json  bench/node_startup_probe.py (the nodes' start-up over ROS)
     unknown_clean.json  bench/unknown_cleaning.py --json (cleaning a home it has never seen,
                    beside the known map and the lab's FSM: roomba_coverage --compare --unknown)
 """
@@ -673,6 +674,19 @@ def startup_rows(t, results):
               tool["median_ms"], ours_text=f"{tool['median_ms']:.1f} ms · {tool['libraries']} libraries")
 
 
+def node_startup_rows(t, results):
+    try:
+        data = load(results, "node_startup")
+    except Missing as e:
+        t.missing("node_startup", "Start-up of the nodes: process start to first answer", str(e))
+        return
+    for node in data["nodes"]:
+        t.add(f"node_startup_{node['name']}", f"Start-up: `{node['name']}`, process start to the "
+              f"{node['answer']} (median wall time over ROS); shared libraries loaded",
+              node["median_ms"],
+              ours_text=f"{node['median_ms']:.1f} ms · {node['libraries']} libraries")
+
+
 def memory_rows(t, results):
     what = "Peak RSS: rrt_monte_carlo --scenario all --runs 200"
     try:
@@ -768,7 +782,8 @@ def main(argv):
     for rows in (rrt_rows, room_rows, map_rows, grid_rows, map_load_rows, huge_map_rows,
                  planning_rows, behavior_rows, groot2_rows, sim_rows, sim_robot_rows, sensor_rows,
                  mapping_rows, unknown_clean_rows,
-                 rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows, memory_rows):
+                 rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows,
+                 node_startup_rows, memory_rows):
         try:
             rows(t, results)
         except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:  # a changed format

@@ -238,6 +238,7 @@ for delay in 0.5 1.5 2.5; do
   wait "$early" || rc=$?
   check "Ctrl-C $delay s into start-up: exit 0 ($rc)" [ "$rc" = 0 ]
   check "... without a traceback" bash -c "! grep -q 'Traceback\|pop_var_context' '$work/early'"
+  grep -q 'Traceback\|pop_var_context' "$work/early" && cat "$work/early" # which one, and where
   # Within 20 s: beside a fresh-debian build, one stop took longer than 10 s to end everything.
   for _ in $(seq 200); do [ -z "$(leftovers)" ] && break; sleep 0.1; done
   check "... and nothing of it left running" [ -z "$(leftovers)" ]
