@@ -6,7 +6,6 @@
 
 #include "roomba_rrt/coverage/coverage_leaves.h"
 #include "roomba_rrt/exploration/explore_clean.h"
-#include "roomba_rrt/geometry/clearance_map.h"
 #include "roomba_rrt/navigation/path_checker.h"
 
 namespace roomba_rrt::exploration {
@@ -71,23 +70,23 @@ robot::Velocity CleanKnownMap::tick(double time, const robot::BumperState& bumpe
     map_.stoodAt(at);
     last_footprint_ = at;
   }
-  // Not while the bumper is pressed or the tree backs off: it resumes first, then is looked at.
+  // After each scan; not while the bumper is pressed or the tree backs off: it resumes first,
+  // then is looked at.
   const bool backing_up = clean_ && clean_->state() == behavior::RoombaState::kGoBack;
-  if (!clean_ ||
-      (time - last_check_ >= kCheckPeriod && !bumper.pressed && !backing_up && !clean_->idle())) {
-    last_check_ = time;
+  if (!clean_ || (map_.mapper().scans() != checked_scans_ && !bumper.pressed && !backing_up &&
+                  !clean_->idle())) {
+    checked_scans_ = map_.mapper().scans();
     auto grid =
         std::make_shared<const geometry::OccupancyGrid>(map_.grid(BuiltMap::Unknown::kWall));
-    if (!clean_ || restBlocked(grid, pose)) plan(std::move(grid), pose);
+    if (!clean_ || restChanged(*grid, pose)) plan(std::move(grid), pose);
   }
   clean_->observeTiming(time, pose_stamp);
   return clean_->tick(bumper, pose);
 }
 
-bool CleanKnownMap::restBlocked(std::shared_ptr<const geometry::OccupancyGrid> grid,
-                                const robot::Pose2D& pose) {
+bool CleanKnownMap::restChanged(const geometry::OccupancyGrid& grid, const robot::Pose2D& pose) {
   const coverage::CoverageProgress* progress = coverage::findProgress(clean_->tree().blackboard());
-  if (!progress) return false;
+  if (!progress || !planned_) return false;
   coverage::Polyline rest = coverage::remainingPath(*progress);
   if (rest.size() < 2) return false;
   const geometry::Point2 at{pose.x, pose.y};
@@ -95,8 +94,30 @@ bool CleanKnownMap::restBlocked(std::shared_ptr<const geometry::OccupancyGrid> g
   const std::size_t from = navigation::nearestSegment(rest, at);
   rest.erase(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(from));
   rest.front() = geometry::closestPoint({rest[0], rest[1]}, at);
-  const geometry::ClearanceMap clearance(std::move(grid));
-  const geometry::ClearanceMap::Disc disc = clearance.disc(robot_.radius - kCheckSlack);
+  const geometry::OccupancyGrid& before = *planned_;
+  // Whether a cell of `grid` whose square comes within `reach` of p is blocked now and was
+  // floor in the map the tree plans and guards on.
+  auto changedNear = [&](const geometry::Point2& p, double reach) {
+    const int n = static_cast<int>(std::ceil(reach / grid.resolution));
+    const int ci = grid.column(p.x), cj = grid.row(p.y);
+    for (int j = cj - n; j <= cj + n; ++j) {
+      for (int i = ci - n; i <= ci + n; ++i) {
+        if (!grid.inside(i, j) || grid.at(i, j) == geometry::OccupancyGrid::kFree) continue;
+        const geometry::Rectangle s = grid.square(i, j);
+        if (geometry::squaredDistance(s, p) >= reach * reach) continue;
+        const geometry::Point2 c{(s.min_x + s.max_x) / 2, (s.min_y + s.max_y) / 2};
+        const int bi = before.column(c.x), bj = before.row(c.y);
+        if (before.inside(bi, bj) && before.at(bi, bj) == geometry::OccupancyGrid::kFree) {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+  // A robot whose own disc meets what changed (it bumped, or saw it late beside it) is not
+  // stopped by where it stands: the rest is looked at from kAroundRobot on.
+  const double reach = robot_.radius + kGuardMargin;
+  const double skip = changedNear(at, robot_.radius) ? kAroundRobot : 0.0;
   double ahead = 0;  // m of the rest looked at so far
   for (std::size_t k = 0; k + 1 < rest.size() && ahead < kCheckAhead; ++k) {
     const double length = geometry::distance(rest[k], rest[k + 1]);
@@ -106,8 +127,8 @@ bool CleanKnownMap::restBlocked(std::shared_ptr<const geometry::OccupancyGrid> g
       const double t = static_cast<double>(s) / samples;
       const geometry::Point2 p{rest[k].x + t * (rest[k + 1].x - rest[k].x),
                                rest[k].y + t * (rest[k + 1].y - rest[k].y)};
-      if (geometry::distance(p, at) < kAroundRobot) continue;
-      if (!clearance.discFree(p, disc)) return true;
+      if (geometry::distance(p, at) < skip) continue;
+      if (changedNear(p, reach)) return true;
     }
   }
   return false;
@@ -116,6 +137,7 @@ bool CleanKnownMap::restBlocked(std::shared_ptr<const geometry::OccupancyGrid> g
 void CleanKnownMap::plan(std::shared_ptr<const geometry::OccupancyGrid> grid,
                          const robot::Pose2D& pose) {
   map_.stoodAt({pose.x, pose.y});
+  planned_ = grid;
   world::World world = map_.world(std::move(grid), pose);
   world.coverage_cell_size = coverage_cell_size_;
   world.coverage_cell_size_given = true;

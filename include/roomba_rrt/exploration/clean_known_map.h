@@ -8,9 +8,10 @@
 //      and the first scan (the known walls are walls; the known floor is floor unless seen
 //      otherwise), and drives them with the cleaning tree (config/roomba_coverage_tree.xml), as
 //      on a map it knows;
-//   2. every kCheckPeriod it looks at the next kCheckAhead of the plan on the map as it is now:
-//      when the robot's disc along it meets a cell that is no longer free (furniture the map
-//      lacks, seen by the lidar; a bump's cell), the rows left are made free on that map
+//   2. after every scan it looks at the next kCheckAhead of the plan on the map as it is now:
+//      when a cell that was floor when the plan was made is blocked now within kGuardMargin of
+//      the robot's disc along it (furniture the map lacks, seen by the lidar; a bump's cell),
+//      the rows left are made free on that map
 //      (CoveragePlanner::repair: each row cut round what stands in it, new transits, the order
 //      kept) and a new tree drives them from where the robot is; the floor swept so far goes
 //      with it, for the touch-up, which then sweeps what the cut rows left;
@@ -50,8 +51,8 @@ class CleanKnownMap {
   /// refused (mapping::checkScan), naming the field.
   std::string addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan);
 
-  /// One tick at simulated `time`: the bumper goes into the map, the plan is looked at (every
-  /// kCheckPeriod) and made again when blocked, then the cleaning tree decides the command from
+  /// One tick at simulated `time`: the bumper goes into the map, the plan is looked at (after a
+  /// new scan) and made free again when blocked, then the cleaning tree decides the command from
   /// `bumper` and `pose` (the robot's pose at `pose_stamp`: NavBt::observeTiming).
   robot::Velocity tick(double time, const robot::BumperState& bumper, const robot::Pose2D& pose,
                        double pose_stamp);
@@ -69,24 +70,29 @@ class CleanKnownMap {
   const BuiltMap& map() const { return map_; }
   const mapping::OccupancyMapper& mapper() const { return map_.mapper(); }
 
-  static constexpr double kCheckPeriod = 0.2;  ///< s between two looks at the rest of the plan
   /// m of the rest of the plan looked at, from where the robot is: what lies beyond is made free
   /// when the robot comes near it, once the lidar has seen it from closer (the furnished room
   /// planned 44 times looking at all of it, 12 times looking 3 m ahead, as fast to 95 %).
   static constexpr double kCheckAhead = 3.0;
   /// m between two points of the rest of the plan where the robot's disc is looked at.
   static constexpr double kCheckStep = 0.02;
-  /// m round the robot where the rest of the plan is not looked at: it stands there already
-  /// (perhaps touching what it bumped into, or what it saw late beside it).
+  /// m round the robot where the rest of the plan is not looked at when the robot's own disc is
+  /// not free: it stands there already (touching what it bumped into, or what it saw late
+  /// beside it).
   static constexpr double kAroundRobot = 0.1;
-  /// m the disc looked at is smaller than the robot's: rows along a wall keep 3 mm from it.
-  static constexpr double kCheckSlack = 0.002;
+  /// m beyond the robot's disc along the plan where a cell that became blocked makes a new tree:
+  /// its motion guard then knows it too (the tree's guard keeps the robot off what was known when
+  /// it was made). A row planned 1 cm from a desk whose top the first scan had not seen, driven
+  /// 2.5 cm off after a turn in place, touched the desk's corner with a guard that did not know
+  /// it.
+  static constexpr double kGuardMargin = 0.05;
   /// m the robot moves before where it stands is remembered as floor again.
   static constexpr double kFootprintSpacing = 0.1;
 
  private:
-  /// Whether the rest of the tree's plan meets a cell of `grid` that is not free.
-  bool restBlocked(std::shared_ptr<const geometry::OccupancyGrid> grid, const robot::Pose2D& pose);
+  /// Whether a cell of `grid` within kGuardMargin of the robot's disc along the next
+  /// kCheckAhead of the tree's plan is blocked now and was floor when the tree was made.
+  bool restChanged(const geometry::OccupancyGrid& grid, const robot::Pose2D& pose);
   /// A new tree on the map as it is now, going on with the floor swept so far.
   void plan(std::shared_ptr<const geometry::OccupancyGrid> grid, const robot::Pose2D& pose);
 
@@ -100,8 +106,9 @@ class CleanKnownMap {
   geometry::Point2 last_footprint_;
 
   std::shared_ptr<const coverage::CoveragePlanner> planner_;  ///< the tree's
+  std::shared_ptr<const geometry::OccupancyGrid> planned_;    ///< the map the tree's world is
   std::unique_ptr<navigation::NavBt> clean_;
-  double last_check_ = -1e9;
+  std::size_t checked_scans_ = 0;  ///< the mapper's scans when the plan was last looked at
   int plans_ = 0;
   robot::Velocity stop_;
 };
