@@ -20,4 +20,7 @@ if(CATKIN_ENABLE_TESTING)
   # Goals in a home the robot has never seen, through roomba_nav_eval's loop (--unknown).
   roomba_rrt_gtest(navigate_unknown_test test/exploration/navigate_unknown_test.cpp
     LINK roomba_nav_eval_run)
+  # A stale map of the home (--known-map): cleaning and goals with its walls, its bad inputs.
+  roomba_rrt_gtest(clean_known_map_test test/exploration/clean_known_map_test.cpp
+    LINK roomba_coverage_run roomba_nav_eval_run)
 endif()
