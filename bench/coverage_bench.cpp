@@ -5,6 +5,7 @@
 // the plan achieves: the rows' share of the reachable floor and the plan's length against the
 // ideal (the reachable floor swept once by the robot's diameter). BM_CoveragePlanWillowFull and
 // BM_CoverageTouchUpWillowFull are a whole shared map (skipped when ../shared/maps is not there).
+// BM_CoverageRepairFurnished is a replan of the stale map's cleaning (issue 43).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -42,6 +43,32 @@ void BM_CoveragePlanFurnished(benchmark::State& state) {
   planAndReport(state, world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml"));
 }
 BENCHMARK(BM_CoveragePlanFurnished)->Unit(benchmark::kMillisecond);
+
+// What a robot given the furnished room's map without its furniture (config/maps/
+// furnished_walls.yaml) pays when its lidar shows the furniture across its rows
+// (exploration/clean_known_map.h): a planner on the map as it is now (here the walls' map with
+// the five pieces of furniture) and the rows left cut round them (CoveragePlanner::repair).
+void BM_CoverageRepairFurnished(benchmark::State& state) {
+  const world::World walls = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/furnished_walls.yaml",
+                                              world::PoseSource::kElsewhere);
+  const world::World furnished =
+      world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
+  world::World now = walls;
+  now.room.circles = furnished.room.circles;
+  now.room.rectangles = furnished.room.rectangles;
+  const coverage::Point2 start{furnished.robot().initial_pose.x, furnished.robot().initial_pose.y};
+  const coverage::CoveragePlan plan =
+      coverage::CoveragePlanner(walls, coverage::cleaningOptions(furnished)).plan(start);
+  coverage::CoveragePlan rest;
+  for (auto _ : state) {
+    const coverage::CoveragePlanner planner(now, coverage::cleaningOptions(furnished));
+    rest = planner.repair(plan, 0, start);
+    benchmark::DoNotOptimize(rest.legs.data());
+  }
+  state.counters["legs_before"] = static_cast<double>(plan.legs.size());
+  state.counters["legs_after"] = static_cast<double>(rest.legs.size());
+}
+BENCHMARK(BM_CoverageRepairFurnished)->Unit(benchmark::kMillisecond);
 
 void BM_CoveragePlanApartmentMap(benchmark::State& state) {
   planAndReport(state, world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/maps/apartment.yaml"));

@@ -502,6 +502,37 @@ def unknown_clean_rows(t, results):
                         f"{f['at_2x']:.1f} / {f['at_2_5x']:.1f} % ({f['bumps']:.0f} bumps)")
     for e in d.get("errors", []):
         t.missing(f"unknown_clean_{e['world']}", what.format(e["label"]), e["error"], target)
+def stale_map_rows(t, results):
+    """A stale map of the home (bench/stale_map.py): cleaning's time to 95 % with the map without
+    its furniture against the known world's, and navigation's 200 goals with it."""
+    clean_target, nav_target = "≤ 1.15× the known map's, ≤ 2 bumps", "≥ 99 %, 0 bumps"
+    try:
+        d = load(results, "stale_map")
+    except Missing as e:
+        t.missing("stale_map_clean", "Cleaning with a stale map (walls, no furniture): time to 95 %",
+                  str(e), clean_target)
+        t.missing("stale_map_nav", "Navigation with a stale map: random goals reached", str(e),
+                  nav_target)
+        return
+    for row in d["worlds"]:
+        key = row["world"].split()[0]
+        ours, peer = row["stale_s"], row["known_s"]
+        ratio = ours / peer if ours is not None and peer else None
+        t.add(f"stale_map_clean_{key}",
+              f"Cleaning with a stale map ({row['world']}: config/maps/*_walls, the lidar finds "
+              "the furniture): time to 95 % of the true reachable floor, s; peer: the same "
+              "cleaning knowing the furniture",
+              ours, peer, ratio, clean_target,
+              ratio is not None and ratio <= 1.15 and row["bumps"] <= 2,
+              ("— (not reached)" if ours is None else f"{ours:.0f} s") +
+              f" ({row['bumps']:.0f} bumps, {row['plans']:.0f} plans)",
+              "—" if peer is None else f"{peer:.0f} s")
+        t.add(f"stale_map_nav_{key}",
+              f"Navigation with a stale map ({row['world']}, roomba_nav_eval --unknown "
+              f"--known-map, {row['goals']} random goals): reached",
+              row["reached_pct"], None, None, nav_target,
+              row["reached_pct"] >= 99 and row["nav_bumps"] == 0,
+              f"{row['reached_pct']:.1f} % ({row['nav_bumps']} bumps)")
 
 
 def sim_rows(t, results):
@@ -781,7 +812,7 @@ def main(argv):
     t = Table()
     for rows in (rrt_rows, room_rows, map_rows, grid_rows, map_load_rows, huge_map_rows,
                  planning_rows, behavior_rows, groot2_rows, sim_rows, sim_robot_rows, sensor_rows,
-                 mapping_rows, unknown_clean_rows,
+                 mapping_rows, unknown_clean_rows, stale_map_rows,
                  rtf_rows, service_rows, nav_latency_rows, fairness_rows, startup_rows,
                  node_startup_rows, memory_rows):
         try:

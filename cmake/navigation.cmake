@@ -70,6 +70,9 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/clean_unknown.test DEPENDENCIES nav_rostest)
   # And navigation there: roomba_bt ~unknown with the navigation tree takes goals on that map.
   add_rostest(test/navigation/nav_unknown.test DEPENDENCIES nav_rostest)
+  # With a stale map of the home (~known_map: its walls, not its furniture): goals, cleaning.
+  add_rostest(test/navigation/nav_known_map.test DEPENDENCIES nav_rostest)
+  add_rostest(test/navigation/clean_known_map.test DEPENDENCIES nav_rostest)
   if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/maps/willow_full.yaml)
     add_rostest(test/navigation/nav_map_willow.test DEPENDENCIES nav_rostest)
   elseif("$ENV{CI}" STREQUAL "true")

@@ -2,7 +2,9 @@
 """Draws the package's own map: a small apartment (10 m x 7 m, 5 cm cells) with a living room,
 a kitchen, a bedroom and a bathroom, doors between them and some furniture, as map_server's PGM
 and YAML (config/maps/apartment.pgm, .yaml). The map's (0, 0) is the hallway's centre, free
-floor, where the robot starts by default. Run it again after changing the plan below.
+floor, where the robot starts by default. Also the same apartment without its furniture
+(apartment_walls.pgm, .yaml): the stale map a robot is given with --known-map, which finds the
+furniture with its lidar. Run it again after changing the plan below.
 
 usage: draw_apartment.py OUT_DIR"""
 import os
@@ -32,8 +34,7 @@ FURNITURE = [
 ]
 
 
-def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "config/maps"
+def draw(out, name, furniture, title):
     columns, rows = round(WIDTH / RESOLUTION), round(HEIGHT / RESOLUTION)
     margin = 0.25
     grid = [[UNKNOWN] * columns for _ in range(rows)]
@@ -50,17 +51,26 @@ def main():
                     grid[j][i] = value
 
     fill(0.0, 0.0, 10.0, 7.0, FREE)
-    for rect in WALLS + FURNITURE:
+    for rect in WALLS + furniture:
         fill(*rect, WALL)
     os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "apartment.pgm"), "wb") as f:
+    with open(os.path.join(out, name + ".pgm"), "wb") as f:
         f.write(b"P5\n# roomba_rrt: scripts/lib/draw_apartment.py\n%d %d\n255\n" % (columns, rows))
         for j in reversed(range(rows)):  # the image's first row is the top (largest y)
             f.write(bytes(grid[j]))
-    with open(os.path.join(out, "apartment.yaml"), "w", encoding="utf-8") as f:
-        f.write("# The package's own map (scripts/lib/draw_apartment.py): a 10 m x 7 m apartment.\n"
-                "image: apartment.pgm\nresolution: %g\norigin: [%g, %g, 0.0]\nnegate: 0\n"
-                "occupied_thresh: 0.65\nfree_thresh: 0.196\n" % (RESOLUTION, *ORIGIN))
+    with open(os.path.join(out, name + ".yaml"), "w", encoding="utf-8") as f:
+        f.write("# %s\n"
+                "image: %s.pgm\nresolution: %g\norigin: [%g, %g, 0.0]\nnegate: 0\n"
+                "occupied_thresh: 0.65\nfree_thresh: 0.196\n" % (title, name, RESOLUTION, *ORIGIN))
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "config/maps"
+    draw(out, "apartment", FURNITURE,
+         "The package's own map (scripts/lib/draw_apartment.py): a 10 m x 7 m apartment.")
+    draw(out, "apartment_walls", [],
+         "The apartment without its furniture (scripts/lib/draw_apartment.py): a stale map for\n"
+         "# --known-map / ~known_map, its walls and doors only.")
 
 
 if __name__ == "__main__":

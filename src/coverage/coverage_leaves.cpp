@@ -119,12 +119,15 @@ class PlanCoverage final : public bt::LeafNode {
             outputPort<CoverageProgress>("coverage", "the new plan, nothing cleaned yet"),
             errorOutput("why there is nothing to clean")};
   }
-  PlanCoverage(const NodeSpec& spec, std::shared_ptr<const CoveragePlanner> planner)
+  /// `given`: the progress to go on with instead of a plan (null: plan).
+  PlanCoverage(const NodeSpec& spec, std::shared_ptr<const CoveragePlanner> planner,
+               std::shared_ptr<const CoverageProgress> given)
       : LeafNode(spec.name),
         start_(spec.input<robot::Pose2D>("start")),
         coverage_(spec.output<CoverageProgress>("coverage")),
         error_(spec.output<std::string>("error")),
-        planner_(std::move(planner)) {}
+        planner_(std::move(planner)),
+        given_(std::move(given)) {}
 
  private:
   Status onTick() override {
@@ -134,6 +137,15 @@ class PlanCoverage final : public bt::LeafNode {
       return Status::kFailure;
     }
     CoverageProgress& progress = coverage_.value();
+    if (given_) {  // going on where another tree stopped
+      progress = *given_;
+      coverage_.commit();
+      if (progress.done()) {
+        error_.set("nothing left to clean");
+        return Status::kFailure;
+      }
+      return Status::kSuccess;
+    }
     progress = CoverageProgress{};
     progress.plan = planner_->plan({start->x, start->y});
     if (progress.plan.legs.empty()) {  // nothing to touch up either: done
@@ -151,6 +163,7 @@ class PlanCoverage final : public bt::LeafNode {
   OutputPort<CoverageProgress> coverage_;
   OutputPort<std::string> error_;
   std::shared_ptr<const CoveragePlanner> planner_;
+  std::shared_ptr<const CoverageProgress> given_;
 };
 
 class FollowCoverage final : public bt::LeafNode {
@@ -434,12 +447,13 @@ class CoverageDone final : public bt::ConditionNode {
   InputPort<CoverageProgress> coverage_;
 };
 
-navigation::LeafRegistrar registrar(std::shared_ptr<LazyPlanner> planner) {
-  return [planner](bt::TreeFactory& factory, const navigation::NavLeafConfig& config,
-                   NavContext& context) {
+navigation::LeafRegistrar registrar(std::shared_ptr<LazyPlanner> planner,
+                                    std::shared_ptr<const CoverageProgress> given) {
+  return [planner, given](bt::TreeFactory& factory, const navigation::NavLeafConfig& config,
+                          NavContext& context) {
     NavContext* ctx = &context;
-    factory.registerNodeType<PlanCoverage>("PlanCoverage", [planner](const NodeSpec& spec) {
-      return std::make_unique<PlanCoverage>(spec, planner->get());
+    factory.registerNodeType<PlanCoverage>("PlanCoverage", [planner, given](const NodeSpec& spec) {
+      return std::make_unique<PlanCoverage>(spec, planner->get(), given);
     });
     // The rows keep the clearance exactly: the guard keeps half of it, so that it catches a
     // follower that drifts towards the furniture but lets one on the row through. Rows along a
@@ -473,11 +487,17 @@ navigation::LeafRegistrar registrar(std::shared_ptr<LazyPlanner> planner) {
 
 navigation::LeafRegistrar coverageLeaves(const world::World& world,
                                          const CoverageOptions& options) {
-  return registrar(std::make_shared<LazyPlanner>(world, options));
+  return registrar(std::make_shared<LazyPlanner>(world, options), nullptr);
 }
 
 navigation::LeafRegistrar coverageLeaves(std::shared_ptr<const CoveragePlanner> planner) {
-  return registrar(std::make_shared<LazyPlanner>(std::move(planner)));
+  return registrar(std::make_shared<LazyPlanner>(std::move(planner)), nullptr);
+}
+
+navigation::LeafRegistrar coverageLeaves(std::shared_ptr<const CoveragePlanner> planner,
+                                         CoverageProgress progress) {
+  return registrar(std::make_shared<LazyPlanner>(std::move(planner)),
+                   std::make_shared<const CoverageProgress>(std::move(progress)));
 }
 
 }  // namespace roomba_rrt::coverage

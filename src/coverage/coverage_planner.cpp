@@ -194,30 +194,27 @@ double CoveragePlanner::sweptFraction(const std::vector<std::uint8_t>& swept) co
   return floor > 0 ? static_cast<double>(marked) / static_cast<double>(floor) : 0.0;
 }
 
-std::vector<std::pair<Point2, Point2>> CoveragePlanner::freePieces(const Point2& a,
-                                                                   const Point2& b) const {
-  if (!open_ || space_.segmentFree(a, b)) return {{a, b}};
+std::vector<std::pair<Point2, Point2>> CoveragePlanner::freePieces(const Point2& a, const Point2& b,
+                                                                   double radius) const {
+  if (space_.segmentFree(a, b, radius)) return {{a, b}};
   // Samples half a lattice step apart; each run of free ones is a piece, its ends moved out to
   // the island as far as they stay free (exactly), then kIslandBackOff back.
   const double length = geometry::distance(a, b);
   const int n = std::max(1, static_cast<int>(std::ceil(2 * length / space_.resolution())));
   auto at = [&](double t) { return Point2{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; };
-  auto freeAt = [&](int k) { return space_.segmentFree(at(double(k) / n), at(double(k) / n)); };
+  auto free = [&](const Point2& p, const Point2& q) { return space_.segmentFree(p, q, radius); };
+  auto freeAt = [&](int k) { return free(at(double(k) / n), at(double(k) / n)); };
   std::vector<std::pair<Point2, Point2>> out;
   for (int k = 0; k <= n; ++k) {
     if (!freeAt(k)) continue;
     const int first = k;
     while (k < n && freeAt(k + 1)) ++k;
     double t0 = double(first) / n, t1 = double(k) / n;
-    if (first > 0) {
-      t0 -= farthestFree(1.0 / n, [&](double d) { return space_.segmentFree(at(t0 - d), at(t0)); });
-    }
-    if (k < n) {
-      t1 += farthestFree(1.0 / n, [&](double d) { return space_.segmentFree(at(t1), at(t1 + d)); });
-    }
+    if (first > 0) t0 -= farthestFree(1.0 / n, [&](double d) { return free(at(t0 - d), at(t0)); });
+    if (k < n) t1 += farthestFree(1.0 / n, [&](double d) { return free(at(t1), at(t1 + d)); });
     if (first > 0) t0 += kIslandBackOff / length;
     if (k < n) t1 -= kIslandBackOff / length;
-    if ((t1 - t0) * length > kMinLegLength && space_.segmentFree(at(t0), at(t1))) {
+    if ((t1 - t0) * length > kMinLegLength && free(at(t0), at(t1))) {
       out.push_back({at(t0), at(t1)});
     }
   }
@@ -253,7 +250,10 @@ CoveragePlan CoveragePlanner::plan(const Point2& start) const {
   }
   for (const CellVisit& visit : orderCells(sweeps, start)) {
     for (auto [row_start, row_end] : sweeps[visit.cell][visit.way]) {
-      for (auto [piece_start, piece_end] : freePieces(row_start, row_end)) {
+      const std::vector<std::pair<Point2, Point2>> pieces =
+          open_ ? freePieces(row_start, row_end, space_.planningRadius())
+                : std::vector<std::pair<Point2, Point2>>{{row_start, row_end}};
+      for (auto [piece_start, piece_end] : pieces) {
         const std::optional<Polyline> path = transit(at, piece_start);
         if (!path) continue;  // cannot happen in one connected region; never assumed
         if (geometry::pathLength(*path) > kMinLegLength) {
@@ -332,6 +332,51 @@ CoveragePlan CoveragePlanner::resume(const CoveragePlan& plan, std::size_t leg,
     }
     rest.legs.insert(rest.legs.end(), todo.begin() + static_cast<std::ptrdiff_t>(next), todo.end());
     break;
+  }
+  return rest;
+}
+
+CoveragePlan CoveragePlanner::repair(const CoveragePlan& plan, std::size_t leg,
+                                     const Point2& at) const {
+  CoveragePlan rest = plan;
+  rest.legs.clear();
+  Point2 from = at;
+  // Appends `row` (cut to its free pieces) after a transit from where the last one ended.
+  auto add = [&](const Leg& row) {
+    const double radius =
+        space_.robotRadius() + (row.along_wall ? options_.edge_clearance : options_.clearance);
+    std::vector<Polyline> pieces;
+    if (row.points.size() == 2) {
+      for (auto [a, b] : freePieces(row.points.front(), row.points.back(), radius)) {
+        pieces.push_back({a, b});
+      }
+    } else {  // a polyline (a row along a wall, ramping in and out): whole or not at all
+      bool free = !row.points.empty();
+      for (std::size_t k = 0; free && k + 1 < row.points.size(); ++k) {
+        free = space_.segmentFree(row.points[k], row.points[k + 1], radius);
+      }
+      if (free) pieces.push_back(row.points);
+    }
+    for (Polyline& piece : pieces) {
+      const std::optional<Polyline> path = transit(from, piece.front());
+      if (!path) continue;  // cannot be reached from here any more
+      if (geometry::pathLength(*path) > kMinLegLength) {
+        rest.legs.push_back(Leg{Leg::Kind::kTransit, *path});
+      }
+      from = piece.back();
+      rest.legs.push_back(Leg{Leg::Kind::kRow, std::move(piece), row.along_wall});
+    }
+  };
+  for (std::size_t k = leg; k < plan.legs.size(); ++k) {
+    const Leg& row = plan.legs[k];
+    if (row.kind != Leg::Kind::kRow || row.points.empty()) continue;
+    if (k == leg && row.points.size() == 2) {  // the rest of the row the robot is in
+      const Point2 closest = geometry::closestPoint({row.points.front(), row.points.back()}, at);
+      if (geometry::distance(closest, row.points.back()) <= kMinLegLength) continue;
+      add(Leg{Leg::Kind::kRow, {closest, row.points.back()}, row.along_wall});
+      continue;
+    }
+    add(row);
   }
   return rest;
 }

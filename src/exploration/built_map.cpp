@@ -9,27 +9,86 @@
 namespace roomba_rrt::exploration {
 namespace {
 
-mapping::MapperOptions mapperOptions(const robot::Pose2D& start, double resolution) {
+/// Cells of `resolution` 10 m round the start, or over the known map's extent (its lattice from
+/// its corner).
+mapping::MapperOptions mapperOptions(const robot::Pose2D& start, double resolution,
+                                     const geometry::OccupancyGrid* known) {
   mapping::MapperOptions options;
   options.resolution = resolution;
   options.xmin = start.x - 5;
   options.xmax = start.x + 5;
   options.ymin = start.y - 5;
   options.ymax = start.y + 5;
+  if (known) {
+    const geometry::Rectangle extent = known->extent();
+    options.xmin = extent.min_x;
+    options.xmax = extent.max_x;
+    options.ymin = extent.min_y;
+    options.ymax = extent.max_y;
+  }
   return options;
+}
+
+/// The value of `known` over the square `s`: occupied where an occupied cell's interior meets
+/// it, free where only free cells' do, else unknown (off the map too).
+std::int8_t knownOver(const geometry::OccupancyGrid& known, const geometry::Rectangle& s) {
+  const double r = known.resolution;
+  const int i0 = static_cast<int>(std::floor((s.min_x - known.origin.x) / r + 1e-9));
+  const int j0 = static_cast<int>(std::floor((s.min_y - known.origin.y) / r + 1e-9));
+  const int i1 = static_cast<int>(std::ceil((s.max_x - known.origin.x) / r - 1e-9)) - 1;
+  const int j1 = static_cast<int>(std::ceil((s.max_y - known.origin.y) / r - 1e-9)) - 1;
+  bool all_free = true;
+  for (int j = j0; j <= j1; ++j) {
+    for (int i = i0; i <= i1; ++i) {
+      if (!known.inside(i, j)) {
+        all_free = false;
+        continue;
+      }
+      const std::int8_t v = known.at(i, j);
+      if (v == geometry::OccupancyGrid::kOccupied) return v;
+      all_free = all_free && v == geometry::OccupancyGrid::kFree;
+    }
+  }
+  return all_free ? geometry::OccupancyGrid::kFree : geometry::OccupancyGrid::kUnknown;
 }
 
 }  // namespace
 
-BuiltMap::BuiltMap(const world::RobotSpec& robot, int fine_split)
+BuiltMap::BuiltMap(const world::RobotSpec& robot,
+                   std::shared_ptr<const geometry::OccupancyGrid> known, int fine_split)
     : robot_(robot),
-      mapper_(mapperOptions(robot.initial_pose, kResolution)),
+      mapper_(mapperOptions(robot.initial_pose, kResolution, known.get())),
       lattice_(mapper_.origin()) {
   footprints_.push_back({robot_.initial_pose.x, robot_.initial_pose.y});
   if (fine_split > 1) {
     fine_ = std::make_unique<mapping::OccupancyMapper>(
-        mapperOptions(robot.initial_pose, kResolution / fine_split));
+        mapperOptions(robot.initial_pose, kResolution / fine_split, known.get()));
   }
+  if (!known) return;
+  prior_width_ = mapper_.width();
+  prior_height_ = mapper_.height();
+  prior_.resize(static_cast<std::size_t>(prior_width_) * prior_height_);
+  const geometry::OccupancyGrid lattice = mapper_.grid();  // for its cells' squares
+  for (int j = 0; j < prior_height_; ++j) {
+    for (int i = 0; i < prior_width_; ++i) {
+      prior_[static_cast<std::size_t>(j) * prior_width_ + i] =
+          knownOver(*known, lattice.square(i, j));
+    }
+  }
+}
+
+std::int8_t BuiltMap::prior(std::int64_t gi, std::int64_t gj) const {
+  if (gi < 0 || gj < 0 || gi >= prior_width_ || gj >= prior_height_) {
+    return geometry::OccupancyGrid::kUnknown;
+  }
+  return prior_[static_cast<std::size_t>(gj) * prior_width_ + gi];
+}
+
+bool BuiltMap::seenOccupied(const geometry::Point2& p) const {
+  const double resolution = mapper_.resolution();
+  return hits_.count(
+      cellKey(static_cast<std::int64_t>(std::floor((p.x - lattice_.x) / resolution)),
+              static_cast<std::int64_t>(std::floor((p.y - lattice_.y) / resolution))));
 }
 
 std::string BuiltMap::addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
@@ -44,6 +103,16 @@ std::string BuiltMap::addScan(const robot::Pose2D& sensor, const mapping::ScanVi
 void BuiltMap::addBump(const robot::Pose2D& pose, const robot::BumperState& bumper) {
   mapper_.addBump(pose, robot_.radius, bumper);
   if (fine_) fine_->addBump(pose, robot_.radius, bumper);
+  if (prior_.empty() || !bumper.pressed) return;
+  // On a known map the bumped cell is a hit (what it pressed, a hair inside it), so that the
+  // known floor there is not floor any more.
+  const double side = bumper.left == bumper.right ? 0.0 : bumper.left ? M_PI / 4 : -M_PI / 4;
+  const double r = robot_.radius + kInside;
+  const double resolution = mapper_.resolution();
+  const double x = pose.x + r * std::cos(pose.theta + side);
+  const double y = pose.y + r * std::sin(pose.theta + side);
+  hits_.insert(cellKey(static_cast<std::int64_t>(std::floor((x - lattice_.x) / resolution)),
+                       static_cast<std::int64_t>(std::floor((y - lattice_.y) / resolution))));
 }
 
 void BuiltMap::markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan) {
@@ -98,9 +167,16 @@ void BuiltMap::markGrid(geometry::OccupancyGrid& grid, bool strict) const {
           mapper_.logOdds(i, j) > kClearlyFree) {
         cell = geometry::OccupancyGrid::kOccupied;
       }
-      // A ray ended in it: an obstacle's edge crosses it, however many rays passed its free part.
       const std::int64_t gi = std::llround((grid.origin.x - lattice_.x) / grid.resolution) + i;
       const std::int64_t gj = std::llround((grid.origin.y - lattice_.y) / grid.resolution) + j;
+      if (!prior_.empty()) {
+        // The known map: its floor is floor unless the mapper holds the cell more likely
+        // occupied than not; its walls are walls.
+        const std::int8_t known = prior(gi, gj);
+        if (known == geometry::OccupancyGrid::kFree) cell = geometry::OccupancyGrid::kFree;
+        if (known == geometry::OccupancyGrid::kOccupied) cell = geometry::OccupancyGrid::kOccupied;
+      }
+      // A ray ended in it: an obstacle's edge crosses it, however many rays passed its free part.
       if (hits_.count(cellKey(gi, gj))) cell = geometry::OccupancyGrid::kOccupied;
     }
   }

@@ -33,7 +33,7 @@ ExploreClean::ExploreClean(const world::RobotSpec& robot, double coverage_cell_s
       params_(params),
       seed_(seed),
       pose_latency_(pose_latency),
-      map_(robot, kFineSplit),
+      map_(robot, nullptr, kFineSplit),
       trees_(std::move(trees)) {
   frontier_options_.robot_radius = robot_.radius + kGoalMargin;
   frontier_options_.view_distance = kViewDistance;

@@ -29,13 +29,13 @@ navigation::Path ahead(const navigation::Path& path, const geometry::Point2& at)
 
 NavigateUnknown::NavigateUnknown(const world::RobotSpec& robot,
                                  const behavior::RoombaParams& params, std::uint32_t seed,
-                                 double pose_latency, std::string tree_file)
+                                 double pose_latency, std::string tree_file, const KnownMap* known)
     : robot_(robot),
       params_(params),
       seed_(seed),
       pose_latency_(pose_latency),
       tree_file_(std::move(tree_file)),
-      map_(robot),
+      map_(robot, known ? checkKnownMap(*known, robot) : nullptr),
       last_footprint_{robot.initial_pose.x, robot.initial_pose.y} {
   follower_.rate = params_.rate;
 }

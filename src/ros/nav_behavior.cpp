@@ -2,6 +2,7 @@
 
 #include <actionlib/server/simple_action_server.h>
 #include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <roomba_rrt/CoverageReport.h>
 #include <roomba_rrt/NavFollowerConfig.h>
@@ -15,11 +16,13 @@
 #include <stdexcept>
 
 #include "behavior_node.h"
+#include "map_messages.h"
 #include "message_parts.h"
 #include "nav_ros.h"
 #include "planner_ros.h"
 #include "reconfigure.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/clean_known_map.h"
 #include "roomba_rrt/exploration/explore_clean.h"
 #include "roomba_rrt/exploration/navigate_unknown.h"
 #include "roomba_rrt/navigation/nav_bt.h"
@@ -50,6 +53,10 @@ struct Settings {
   bool unknown = false;
   bool cleaning = false;  ///< ~unknown with a cleaning tree (one with coverage leaves)
   exploration::ExploreCleanTrees trees;  ///< cleaning: both; navigation: explore is the tree
+  /// ~known_map: the map of the home the robot is given with ~unknown (perhaps stale: its walls,
+  /// not its furniture); null without one. Cleaning plans on it at once
+  /// (exploration::CleanKnownMap), navigation starts its map from it.
+  std::shared_ptr<const exploration::KnownMap> known;
   double transform_timeout = 0.2;  ///< s a scan waits for tf (roomba_mapper's ~transform_timeout)
 };
 
@@ -95,6 +102,11 @@ class NavBehavior final : public behavior::RoombaBehavior {
         scans_(buffer_, settings_.global_frame, settings_.transform_timeout, "roomba_bt") {
     if (settings_.unknown) {
       scan_sub_ = nh_.subscribe("scan", 5, &NavBehavior::onScan, this);
+      if (settings_.known) {  // as map_server serves it: for rviz, beside the map being built
+        known_map_pub_ = ros::NodeHandle("~").advertise<nav_msgs::OccupancyGrid>("known_map", 1,
+                                                                                 /*latch=*/true);
+        known_map_pub_.publish(nodes::toMapMessage(*settings_.known->grid, ros::Time::now()));
+      }
     } else {
       nav_ = std::make_unique<navigation::NavBt>(settings_.config, seed, tree_file);
     }
@@ -121,6 +133,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
   void setParams(const behavior::RoombaParams& params) override {
     if (nav_) nav_->setRoombaParams(params);
     if (explore_) explore_->setParams(params);
+    if (known_) known_->setParams(params);
     RoombaBehavior::setParams(params);
   }
 
@@ -159,6 +172,12 @@ class NavBehavior final : public behavior::RoombaBehavior {
       // tree keeps the last leaf's name, e.g. FollowPath at the goal): not between a back-up and
       // the resume (NavBt::idle).
       context_.state_name = nav_->idle() ? &kIdle : &nav_->stateName();
+    } else if (settings_.cleaning && settings_.known) {
+      if (!known_ && !startCleaningKnown(pose)) return {};
+      scans_.drain(ros::Time::now());
+      cmd = known_->tick(now, bumper_, pose, stamp);
+      context_.state_name = known_->done() ? &kIdle : &known_->stateName();
+      active = known_->activeTree();
     } else if (settings_.cleaning) {
       if (!explore_) startExploring(pose);
       scans_.drain(ros::Time::now());  // a scan that came before its tf: into the map now
@@ -166,7 +185,7 @@ class NavBehavior final : public behavior::RoombaBehavior {
       context_.state_name = explore_->done() ? &kIdle : &explore_->stateName();
       active = explore_->activeTree();
     } else {
-      if (!to_goal_) startNavigating(pose);
+      if (!to_goal_ && !startNavigating(pose)) return {};
       scans_.drain(ros::Time::now());
       cmd = to_goal_->tick(now, bumper_, pose, stamp);
       context_.state_name = &to_goal_->stateName();  // Idle without a goal
@@ -192,28 +211,63 @@ class NavBehavior final : public behavior::RoombaBehavior {
              scan_sub_.getTopic().c_str());
   }
 
-  /// ~unknown with a navigation tree: the map starts round the robot's first pose; goals are
-  /// taken from then on.
-  void startNavigating(const robot::Pose2D& pose) {
+  /// ~unknown with a navigation tree: the map starts round the robot's first pose (from
+  /// ~known_map when given); goals are taken from then on. False while the known map does not
+  /// fit the robot's pose (said, and the robot stands).
+  bool startNavigating(const robot::Pose2D& pose) {
     world::RobotSpec robot = settings_.world.robot();
     robot.initial_pose = pose;
-    to_goal_ = std::make_unique<exploration::NavigateUnknown>(
-        robot, params(), seed_, settings_.config.pose_latency, settings_.trees.explore);
+    try {
+      to_goal_ = std::make_unique<exploration::NavigateUnknown>(
+          robot, params(), seed_, settings_.config.pose_latency, settings_.trees.explore,
+          settings_.known.get());
+    } catch (const util::InvalidInput& e) {
+      knownMapRefused(pose, e);
+      return false;
+    }
     to_goal_->setFollowerParams(settings_.config.follower);
-    ROS_INFO("roomba_bt: mapping from (%.2f, %.2f) with %s; goals are planned on that map", pose.x,
-             pose.y, scan_sub_.getTopic().c_str());
+    ROS_INFO("roomba_bt: mapping from (%.2f, %.2f) with %s%s; goals are planned on that map",
+             pose.x, pose.y, scan_sub_.getTopic().c_str(),
+             settings_.known ? (", starting from " + settings_.known->file).c_str() : "");
+    return true;
+  }
+
+  /// ~unknown ~known_map with a cleaning tree: the rows planned on the known map at once. False
+  /// while the known map does not fit the robot's pose (said, and the robot stands).
+  bool startCleaningKnown(const robot::Pose2D& pose) {
+    world::RobotSpec robot = settings_.world.robot();
+    robot.initial_pose = pose;
+    try {
+      known_ = std::make_unique<exploration::CleanKnownMap>(
+          robot, *settings_.known, settings_.world.coverage_cell_size, params(), seed_,
+          settings_.config.pose_latency, settings_.trees.clean);
+    } catch (const util::InvalidInput& e) {
+      knownMapRefused(pose, e);
+      return false;
+    }
+    ROS_INFO("roomba_bt: cleaning from (%.2f, %.2f) on %s and the map built from %s", pose.x,
+             pose.y, settings_.known->file.c_str(), scan_sub_.getTopic().c_str());
+    return true;
+  }
+
+  /// The known map does not fit where tf puts the robot (a map of another home, another frame).
+  static void knownMapRefused(const robot::Pose2D& pose, const util::InvalidInput& e) {
+    ROS_ERROR_THROTTLE(5.0, "roomba_bt: ~known_map: %s (the robot at (%.2f, %.2f)); standing still",
+                       e.what(), pose.x, pose.y);
   }
 
   /// ~unknown: a scan into the map, with its frame's pose in the global frame at its stamp.
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-    if (!explore_ && !to_goal_) return;  // no pose yet: nowhere to start the map
+    if (!explore_ && !to_goal_ && !known_) return;  // no pose yet: nowhere to start the map
     scans_.push(scan->header.frame_id, scan->header.stamp,
                 [this, scan](const geometry_msgs::Transform& transform) {
                   robot::Pose2D sensor;
                   std::string why = nodes::planarPose(transform, &sensor);
                   if (why.empty()) {
-                    why = explore_ ? explore_->addScan(sensor, nodes::scanView(*scan))
-                                   : to_goal_->addScan(sensor, nodes::scanView(*scan));
+                    const mapping::ScanView view = nodes::scanView(*scan);
+                    why = explore_ ? explore_->addScan(sensor, view)
+                          : known_ ? known_->addScan(sensor, view)
+                                   : to_goal_->addScan(sensor, view);
                   }
                   if (!why.empty())
                     ROS_WARN_THROTTLE(5.0, "roomba_bt: scan skipped: %s", why.c_str());
@@ -451,6 +505,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
   std::unique_ptr<navigation::NavBt> nav_;  ///< null with ~unknown
   /// ~unknown: exploring and cleaning, from the first pose tf gives.
   std::unique_ptr<exploration::ExploreClean> explore_;
+  /// ~unknown ~known_map with a cleaning tree: cleaning on the known map, from the first pose.
+  std::unique_ptr<exploration::CleanKnownMap> known_;
+  ros::Publisher known_map_pub_;  ///< ~known_map: the map given, latched
   /// ~unknown with a navigation tree: goals on the map it builds, from the first pose tf gives.
   std::unique_ptr<exploration::NavigateUnknown> to_goal_;
   ros::NodeHandle nh_;
@@ -504,6 +561,12 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
   s.robot_frame = nodes::tfFrameId(
       node_params.get<std::string>("robot_frame", nodes::robotFrame(s.robot_frame)));
   s.unknown = node_params.get("unknown", false);
+  const std::string known_map = node_params.get<std::string>("known_map", "");
+  if (!known_map.empty() && !s.unknown) {
+    throw std::invalid_argument(
+        "~known_map is the map a robot that does not know the world is given: set ~unknown "
+        "true too (without it roomba_bt plans on ~world_file)");
+  }
   const std::string planner =
       node_params.get<std::string>("planner", s.unknown ? "in_process" : "service");
   const std::string service =
@@ -535,6 +598,14 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
     }
     s.transform_timeout = node_params.get("transform_timeout", s.transform_timeout);
     util::requireInRange("~transform_timeout", s.transform_timeout, 0.0, 10.0, "s");
+    if (!known_map.empty()) {
+      try {
+        s.known =
+            std::make_shared<const exploration::KnownMap>(exploration::loadKnownMap(known_map));
+      } catch (const util::InvalidInput& e) {
+        throw std::invalid_argument(std::string("~known_map: ") + e.what());
+      }
+    }
   } else if (planner == "in_process") {
     s.config = navigation::inProcessNavConfig(world, options);
   } else if (planner == "service") {
@@ -578,6 +649,14 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
         "roomba_bt: navigation in a home it has never seen (~unknown): scans on %s, the robot "
         "of %s, tree %s",
         ros::NodeHandle().resolveName("scan").c_str(), world_file.c_str(), tree_file.c_str());
+    return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
+  }
+  if (s.unknown && s.known && s.cleaning) {
+    ROS_INFO(
+        "roomba_bt: cleaning with the map it was given (~known_map %s, its walls trusted) and "
+        "scans on %s, the robot of %s, tree %s",
+        s.known->file.c_str(), ros::NodeHandle().resolveName("scan").c_str(), world_file.c_str(),
+        s.trees.clean.c_str());
     return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
   }
   if (s.unknown) {

@@ -13,10 +13,10 @@ const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
     "                       [--world FILE] [--pose X,Y[,THETA]] [--crop X0,Y0,X1,Y1]\n"
     "                       [--config FILE] [--tree FILE] [--lag N] [--predict N]\n"
-    "                       [--csv traj.csv] [--png map.png] [--unknown]\n"
+    "                       [--csv traj.csv] [--png map.png] [--unknown [--known-map FILE]]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
-    "                       [--crop ...] [--plot coverage.png] [--unknown]\n"
+    "                       [--crop ...] [--plot coverage.png] [--unknown [--known-map FILE]]\n"
     "  --behavior  fsm (state machine), bt (behavior tree) or coverage (the cleaning tree,\n"
     "              config/roomba_coverage_tree.xml: planned rows; reports the coverage of the\n"
     "              reachable floor, the time to 90 / 95 / 99 % of it and the bumps)\n"
@@ -24,6 +24,10 @@ const char* const kUsage =
     "  --unknown   with coverage: the robot does not know the world; it maps it with its lidar\n"
     "              (the world's sensors), explores to the nearest frontier until none is left,\n"
     "              then cleans the map it built; with --compare a fourth column, unknown\n"
+    "  --known-map with --unknown: the map the robot is given (a map_server YAML or a world\n"
+    "              file, e.g. config/maps/apartment_unfurnished.yaml: its walls, not its\n"
+    "              furniture): it plans its rows on it at once and plans the rest again when\n"
+    "              its lidar shows them blocked; the column is known-map\n"
     "  --duration  simulated seconds per run (default 600)\n"
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
@@ -133,6 +137,8 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
       (flag == "--lag" ? o.lag : o.predict) = static_cast<int>(ticks);
     } else if (flag == "--plot") {
       o.plot = value;
+    } else if (flag == "--known-map") {
+      o.known_map = value;
     } else {
       throw std::invalid_argument("unknown option " + flag);
     }
@@ -150,6 +156,10 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
   if (o.unknown && !o.compare && o.behavior != "coverage") {
     throw std::invalid_argument(
         "--unknown is the cleaning tree's: --behavior coverage or --compare");
+  }
+  if (!o.known_map.empty() && !o.unknown) {
+    throw std::invalid_argument(
+        "--known-map is the map a robot that does not know the world is given: add --unknown");
   }
   if (o.unknown && !o.tree.empty()) {
     throw std::invalid_argument(

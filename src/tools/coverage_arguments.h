@@ -30,6 +30,9 @@ struct CoverageArguments {
   /// --unknown: the cleaning tree starts with an empty map and its lidar (behaviour "unknown",
   /// explore_clean.h); with --compare a fourth column.
   bool unknown = false;
+  /// --known-map: with --unknown, the map the robot is given (a map_server YAML or a world file,
+  /// perhaps stale: clean_known_map.h; behaviour "known-map"); "" none.
+  std::string known_map;
   bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
 };
 

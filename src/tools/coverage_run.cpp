@@ -10,6 +10,7 @@
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/clean_known_map.h"
 #include "roomba_rrt/exploration/explore_clean.h"
 #include "roomba_rrt/mapping/sensor_scan.h"
 #include "roomba_rrt/navigation/nav_bt.h"
@@ -25,14 +26,21 @@ class Driver {
  public:
   Driver(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
          const world::World& world, const Cleaning* cleaning) {
-    if (o.behavior == "unknown") {
+    if (o.behavior == "unknown" || o.behavior == "known-map") {
       robot_ = world.robot();
       if (robot_.sensors.empty()) {
         throw util::InvalidInput("sensors",
                                  "exploring an unknown world needs a range sensor on the "
                                  "robot (a world file without `sensors:` has the lidar)");
       }
-      // The world's walls, furniture and map are never looked at: the robot and its start only.
+      // The world's walls, furniture and map are never looked at: the robot and its start only
+      // (and the map it is given).
+      if (o.behavior == "known-map") {
+        known_ = std::make_unique<exploration::CleanKnownMap>(
+            robot_, exploration::loadKnownMap(o.known_map), world.coverage_cell_size, params, seed,
+            o.predictTicks() / params.rate, ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml");
+        return;
+      }
       explore_ = std::make_unique<exploration::ExploreClean>(
           robot_, world.coverage_cell_size, params, seed, o.predictTicks() / params.rate,
           exploration::ExploreCleanTrees{ROOMBA_RRT_CONFIG_DIR "/roomba_nav_tree.xml",
@@ -51,33 +59,39 @@ class Driver {
         config, seed,
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
-  bool sees() const { return explore_ != nullptr; }
+  bool sees() const { return explore_ != nullptr || known_ != nullptr; }
   /// The trees are told the times as roomba_bt tells them: the tick's and the pose's.
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose, double now,
                        double pose_stamp, const std::vector<sensors::Scan>& scans,
                        const robot::Pose2D& scan_pose) {
-    if (explore_) {
+    if (sees()) {
       for (const sensors::Scan& scan : scans) {
         if (scan.robot != 0) continue;
         const sensors::RangeSensorSpec& spec = robot_.sensors[scan.sensor];
-        explore_->addScan(mapping::mountedPose(scan_pose, spec.mount),
-                          mapping::scanView(spec, scan.ranges));
+        const robot::Pose2D sensor = mapping::mountedPose(scan_pose, spec.mount);
+        const mapping::ScanView view = mapping::scanView(spec, scan.ranges);
+        explore_ ? explore_->addScan(sensor, view) : known_->addScan(sensor, view);
       }
-      return explore_->tick(now, bumper, pose, pose_stamp);
+      return explore_ ? explore_->tick(now, bumper, pose, pose_stamp)
+                      : known_->tick(now, bumper, pose, pose_stamp);
     }
     if (lab_) return lab_->tick(bumper);
     tree_->observeTiming(now, pose_stamp);
     return tree_->tick(bumper, pose);
   }
   const std::string& stateName() const {
+    if (known_) return known_->stateName();
     return explore_ ? explore_->stateName() : lab_ ? lab_->stateName() : tree_->stateName();
   }
   behavior::RoombaState state() const {
+    if (known_) return known_->state();
     return explore_ ? explore_->state() : lab_ ? lab_->state() : tree_->state();
   }
   double exploredAt() const { return explore_ ? explore_->exploredAt() : -1; }
+  int plans() const { return known_ ? known_->plans() : 0; }
 
  private:
+  std::unique_ptr<exploration::CleanKnownMap> known_;
   std::unique_ptr<behavior::RoombaBehavior> lab_;
   std::unique_ptr<navigation::NavBt> tree_;
   std::unique_ptr<exploration::ExploreClean> explore_;
@@ -188,6 +202,7 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
   run.final_coverage = simulator.coverage();
   if (cleaning) run.reachable_final = reachableCoverage(simulator, *cleaning);
   run.explored_at = behavior.exploredAt() >= 0 ? behavior.exploredAt() : std::nan("");
+  run.plans = behavior.plans();
   return run;
 }
 

@@ -77,6 +77,8 @@ struct Run {
   int bumps = 0;  ///< times the bumper was pressed (a press lasting several steps counts once)
   /// --unknown: simulated s when exploring ended and cleaning began (NaN: never, or not asked).
   double explored_at = 0;
+  /// --known-map: plans made (1 + the times the rest was seen blocked); 0 otherwise.
+  int plans = 0;
 };
 
 /// One run of one robot from the simulator's reset state; writes the CSV when `csv` is given and

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <random>
 
@@ -196,14 +197,14 @@ void driveGoal(sim::Simulator& simulator, const Nav& nav, double timeout_s, Goal
 
 GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
                      const std::string& tree_file, const robot::Pose2D& goal, std::uint32_t seed,
-                     double timeout_s, double& clock) {
+                     double timeout_s, double& clock, const exploration::KnownMap* known) {
   const world::World& world = simulator.world();
   world::RobotSpec robot = world.robot();
   robot.initial_pose = simulator.pose();
   behavior::RoombaParams params;
   params.rate = 1.0 / world.step;
   // No lag: the command of a pose moves the robot from that pose, as in the known world's runs.
-  exploration::NavigateUnknown nav(robot, params, seed, 0.0, tree_file);
+  exploration::NavigateUnknown nav(robot, params, seed, 0.0, tree_file, known);
   nav.setGoal(goal);
   GoalRun run;
   run.start = robot.initial_pose;
@@ -256,6 +257,14 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
     }
     scanner = std::make_unique<sensors::Scanner>(world);
   }
+  std::optional<exploration::KnownMap> known;
+  if (!options.known_map.empty()) {
+    if (!options.unknown) {
+      throw std::invalid_argument("a known map is for a robot that does not know the world");
+    }
+    known = exploration::loadKnownMap(options.known_map);
+    exploration::checkKnownMap(*known, world.robot());  // before any goal: at the start
+  }
   double clock = 0;  // robot s, on across the goals (the scanner's rate counts on it)
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> ux(world.room.origin.x,
@@ -279,9 +288,9 @@ NavEvalReport evaluateNavigation(const world::World& world, const std::string& t
       break;
     }
     if (options.unknown) {
-      GoalRun driven =
-          driveUnknown(simulator, *scanner, tree_file, run.goal,
-                       options.seed + static_cast<std::uint32_t>(n), options.timeout_s, clock);
+      GoalRun driven = driveUnknown(simulator, *scanner, tree_file, run.goal,
+                                    options.seed + static_cast<std::uint32_t>(n), options.timeout_s,
+                                    clock, known ? &*known : nullptr);
       driven.shortest_m = run.shortest_m;
       run = std::move(driven);
     } else {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "roomba_rrt/exploration/known_map.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sensors/scanner.h"
 #include "roomba_rrt/sim/simulator.h"
@@ -37,6 +38,9 @@ struct NavEvalOptions {
   /// drives with its lidar (exploration::NavigateUnknown); the world's walls and furniture are
   /// the simulator's only.
   bool unknown = false;
+  /// With `unknown`: the map the robot is given for each goal (a map_server YAML or a world file,
+  /// perhaps stale: exploration::KnownMap); "" none.
+  std::string known_map;
 };
 
 /// One goal's run.
@@ -65,10 +69,11 @@ struct NavEvalReport {
 /// One goal in a world the robot has never seen, from where `simulator`'s robot stands: a fresh
 /// map there (exploration::NavigateUnknown with the tree in `tree_file`), `scanner`'s scans of the
 /// lidar into it, until the goal ends or `timeout_s` robot seconds pass. `clock` (robot s, the
-/// scanner's time) goes on across goals. The run's shortest_m is left 0.
+/// scanner's time) goes on across goals. The run's shortest_m is left 0. With `known`, the map
+/// starts from that map of the home (perhaps stale: its walls, not its furniture).
 GoalRun driveUnknown(sim::Simulator& simulator, sensors::Scanner& scanner,
                      const std::string& tree_file, const robot::Pose2D& goal, std::uint32_t seed,
-                     double timeout_s, double& clock);
+                     double timeout_s, double& clock, const exploration::KnownMap* known = nullptr);
 
 /// Runs `options.goals` random reachable goals (a free pose for the robot's disc with a finite
 /// shortest path, at least min_goal_distance away) one after another from the world's initial

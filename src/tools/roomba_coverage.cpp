@@ -232,6 +232,7 @@ struct ReachableStatistics {
   std::vector<std::vector<double>> at, at_ideal, time_to;
   std::vector<double> finals, bumps;
   std::vector<double> explored;  ///< unknown: when exploring ended (s)
+  std::vector<double> plans;     ///< known-map: plans made per run
   std::vector<std::vector<double>> curves;
 };
 
@@ -277,6 +278,7 @@ int runReachable(const CoverageArguments& options, const world::World& world,
       column.finals.push_back(result.reachable_final);
       column.bumps.push_back(result.bumps);
       if (behavior == "unknown") column.explored.push_back(result.explored_at);
+      if (behavior == "known-map") column.plans.push_back(result.plans);
       column.curves.push_back(result.curve);
       progress.update(static_cast<int>(columns.size()) * o.seeds + i + 1);
     }
@@ -309,9 +311,14 @@ int runReachable(const CoverageArguments& options, const world::World& world,
   }
   std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n", names.c_str(),
               seeds.c_str(), options.duration, worldLabel(options, world).c_str());
-  if (options.unknown) {
+  if (options.unknown && options.known_map.empty()) {
     std::printf(
         "  unknown: the robot starts with an empty map and its lidar, explores, then cleans\n");
+  } else if (options.unknown) {
+    std::printf(
+        "  known-map: the robot is given %s and its lidar; it plans on the map at once and again\n"
+        "  when its scans show the rest blocked\n",
+        options.known_map.c_str());
   }
   std::printf(
       "  reachable floor %.2f m² of %.2f m² of floor (the coverage planner's, from the "
@@ -360,9 +367,13 @@ int runReachable(const CoverageArguments& options, const world::World& world,
     row(label, [t](const ReachableStatistics& s) { return secondsMeanStd(s.time_to[t]); });
   }
   row("bumps per run", [](const ReachableStatistics& s) { return countMeanStd(s.bumps); });
-  if (options.unknown) {
+  if (options.unknown && options.known_map.empty()) {
     row("explored by [s]", [](const ReachableStatistics& s) {
       return s.explored.empty() ? std::string("—") : secondsMeanStd(s.explored);
+    });
+  } else if (options.unknown) {
+    row("plans per run", [](const ReachableStatistics& s) {
+      return s.plans.empty() ? std::string("—") : countMeanStd(s.plans);
     });
   }
   std::printf("  simulated %zu × %d × %.0f s in %.3f s of wall time\n", behaviors.size(), n,
@@ -398,12 +409,13 @@ int run(int argc, char** argv) {
   const world::World world = loadToolWorld(o.world, o.pose, o.crop);
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
+  const std::string unknown = o.known_map.empty() ? "unknown" : "known-map";
   if (o.compare && o.unknown) {
-    return runReachable(o, world, params, {"fsm", "bt", "coverage", "unknown"});
+    return runReachable(o, world, params, {"fsm", "bt", "coverage", unknown});
   }
   if (o.compare) return runReachable(o, world, params, {"fsm", "bt", "coverage"});
   if (o.behavior == "coverage") {
-    return runReachable(o, world, params, {o.unknown ? "unknown" : "coverage"});
+    return runReachable(o, world, params, {o.unknown ? unknown : "coverage"});
   }
   if (!o.robots.empty() || world.namedRobots()) return runFleets(o, world, params);
   if (!o.plot.empty()) throw std::invalid_argument("--plot needs --robots");

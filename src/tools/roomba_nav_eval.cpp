@@ -25,7 +25,7 @@ namespace {
 
 const char* const kUsage =
     "usage: roomba_nav_eval [--goals 20] [--seed 1] [--world FILE] [--pose X,Y[,THETA]]\n"
-    "                       [--tree FILE] [--json] [--unknown]\n"
+    "                       [--tree FILE] [--json] [--unknown [--known-map FILE]]\n"
     "                       [--csv FILE] [--png FILE] [--timeout 120]\n"
     "  --goals    random reachable goals, one after another (default 20)\n"
     "  --seed     seed of the goals and the planner (default 1)\n"
@@ -41,7 +41,10 @@ const char* const kUsage =
     "  --timeout  robot seconds per goal before it counts as not reached (default 120)\n"
     "  --unknown  every goal in a home the robot has never seen: it starts a fresh map where\n"
     "             it stands, maps with its lidar (the world's sensors) and plans on that map,\n"
-    "             unknown cells as floor until seen, again whenever its path is blocked\n";
+    "             unknown cells as floor until seen, again whenever its path is blocked\n"
+    "  --known-map with --unknown: the map the robot is given for every goal (a map_server\n"
+    "             YAML or a world file, e.g. config/maps/furnished_walls.yaml: its walls, not\n"
+    "             its furniture); its walls stay walls, the lidar finds the rest\n";
 
 /// The room, every run's trace (green: reached, red: not) and each goal as an arrow.
 void drawPng(const std::string& file, const roomba_rrt::world::World& world,
@@ -129,12 +132,17 @@ int main(int argc, char** argv) {
       json = true;
     } else if (flag == "--unknown") {
       options.unknown = true;
+    } else if (flag == "--known-map") {
+      options.known_map = value();
     } else if (flag == "-h" || flag == "--help") {
       std::cout << kUsage;
       return 0;
     } else {
       usage("unknown argument '" + flag + "'");
     }
+  }
+  if (!options.known_map.empty() && !options.unknown) {
+    usage("--known-map is the map a robot that does not know the world is given: add --unknown");
   }
   try {
     const roomba_rrt::world::World world = roomba_rrt::tools::loadToolWorld(world_file, pose);

@@ -682,6 +682,57 @@ TEST(CoveragePlanner, resume_skips_a_row_it_cannot_reach) {
   EXPECT_TRUE(planner.resume(plan, 0, {-1.0, -1.0}).legs.empty());
 }
 
+TEST(CoveragePlanner, repair_cuts_the_rows_round_a_chair_the_plan_did_not_know_in_their_order) {
+  const World before = emptyRoom();
+  const CoveragePlan plan = CoveragePlanner(before).plan({3.2, 2.4});
+  // Nothing changed: the same rows, in the same order, from the robot's pose.
+  const CoveragePlanner same(before);
+  std::vector<Polyline> rows, repaired_rows;
+  for (const Leg& leg : plan.legs) {
+    if (leg.kind == Leg::Kind::kRow) rows.push_back(leg.points);
+  }
+  for (const Leg& leg : same.repair(plan, 0, {3.2, 2.4}).legs) {
+    if (leg.kind == Leg::Kind::kRow) repaired_rows.push_back(leg.points);
+  }
+  auto same_points = [](const Polyline& a, const Polyline& b) {
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(),
+                      [](Point2 p, Point2 q) { return p.x == q.x && p.y == q.y; });
+  };
+  ASSERT_EQ(repaired_rows.size(), rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_TRUE(same_points(repaired_rows[k], rows[k])) << "row " << k;
+  }
+  // A chair in the middle of the room, where rows run: cut round it, the rest unchanged, in
+  // order, the whole plan clear of it; the rows before the robot's leg are gone.
+  World after = before;
+  after.room.circles.push_back(Circle{{2.0, 2.4}, 0.25});
+  const CoveragePlanner planner(after);
+  std::size_t leg = 0;
+  while (plan.legs[leg].kind != Leg::Kind::kRow) ++leg;
+  const Point2 at = plan.legs[leg].points.front();
+  const CoveragePlan rest = planner.repair(plan, leg, at);
+  expectSafe(after, rest);
+  std::size_t next = 0, cut = 0;  // rows of `rest`, matched in order to the rows of `plan`
+  for (const Leg& piece : rest.legs) {
+    if (piece.kind != Leg::Kind::kRow) continue;
+    // Each piece lies on one of the plan's rows, at or after the one matched before.
+    while (next < rows.size() &&
+           !(piece.points.front().y == rows[next].front().y &&
+             std::min(rows[next].front().x, rows[next].back().x) - 1e-9 <=
+                 std::min(piece.points.front().x, piece.points.back().x) &&
+             std::max(piece.points.front().x, piece.points.back().x) <=
+                 std::max(rows[next].front().x, rows[next].back().x) + 1e-9)) {
+      ++next;
+    }
+    ASSERT_LT(next, rows.size()) << "a piece on no row, or out of order";
+    cut += !same_points(piece.points, rows[next]);
+  }
+  EXPECT_GE(cut, 2u) << "the rows through the chair were not cut";
+  EXPECT_EQ(rest.legs.front().points.front().x, at.x);
+  EXPECT_EQ(rest.legs.front().points.front().y, at.y);
+}
+
 TEST(CoveragePlanner, start_inside_furniture_plans_nothing_and_reaches_nothing) {
   World world = emptyRoom();
   world.room.circles.push_back(Circle{{3.2, 2.4}, 0.5});

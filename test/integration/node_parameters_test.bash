@@ -41,6 +41,18 @@ refuses "~transform_timeout: must be in [0, 10] s, got -1" roomba_bt _unknown:=t
 refuses "~log_file: cannot record with ~unknown" roomba_bt _unknown:=true \
   _log_file:=/tmp/unknown.btlog \
   _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+# A stale map of the home (~known_map): a missing file, a NaN in it, or without ~unknown.
+refuses "~known_map: /tmp/no_such_map.yaml" roomba_bt _unknown:=true \
+  _known_map:=/tmp/no_such_map.yaml \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+printf 'image: %s\nresolution: .nan\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' \
+  "$(rospack find roomba_rrt)/config/maps/furnished_walls.pgm" >"$work/nan_map.yaml"
+refuses "~known_map: $work/nan_map.yaml: resolution" roomba_bt _unknown:=true \
+  _known_map:="$work/nan_map.yaml" \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
+refuses "~known_map is the map a robot that does not know the world is given" roomba_bt \
+  _known_map:="$(rospack find roomba_rrt)/config/maps/furnished_walls.yaml" \
+  _tree_file:="$(rospack find roomba_rrt)/config/roomba_coverage_tree.xml"
 refuses "~animate_rate: must be in [0.1, 1000] Hz" rrt_planner _animate_rate:=1e-300
 refuses "~threads: must be in [1, 64]" rrt_planner _threads:=0
 refuses "~max_marker_nodes: must be in [0, 5000000]" rrt_planner _max_marker_nodes:=-1

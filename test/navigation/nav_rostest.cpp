@@ -26,6 +26,12 @@
 // builds /map, roomba_bt (~unknown, the navigation tree) plans on the map it builds from /scan:
 // three goals across the furnished room reached without a bump, and a goal a million metres
 // away refused naming it.
+//
+// NavKnownMap, CleanKnownMap (nav_known_map.test, clean_known_map.test, issue 43 items 3-5):
+// the same with ~known_map, a stale map of the home (its walls, not its furniture): a 2D Nav
+// Goal and an action goal in the apartment's other rooms reached through its doors without a
+// bump; the furnished room cleaned from its walls' map; the map given served latched on
+// /roomba_bt/known_map.
 #include <actionlib/client/simple_action_client.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
@@ -36,6 +42,7 @@
 #include <nav_msgs/Path.h>
 #include <roomba_rrt/Bumper.h>
 #include <ros/ros.h>
+#include <ros/topic.h>
 #include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 
@@ -574,6 +581,59 @@ TEST_F(NavUnknown, goals_across_a_room_it_has_never_seen_are_reached_without_a_b
   EXPECT_EQ(far, SimpleClientGoalState::ABORTED);
   EXPECT_NE(far.getText().find("goal"), std::string::npos) << far.getText();
   EXPECT_NE(far.getText().find("beyond the map"), std::string::npos) << far.getText();
+}
+
+/// The map roomba_bt serves on ~known_map (latched): what it was given, as map_server serves it.
+nav_msgs::OccupancyGrid::ConstPtr knownMapServed() {
+  return ros::topic::waitForMessage<nav_msgs::OccupancyGrid>("/roomba_bt/known_map",
+                                                             ros::Duration(30.0));
+}
+
+class NavKnownMap : public Nav {};
+
+TEST_F(NavKnownMap, goals_in_the_apartments_other_rooms_are_reached_through_its_doors) {
+  const nav_msgs::OccupancyGrid::ConstPtr known = knownMapServed();
+  ASSERT_TRUE(known) << "nothing latched on /roomba_bt/known_map";
+  EXPECT_EQ(known->header.frame_id, "map");
+  EXPECT_EQ(known->info.width, 210u);  // config/maps/apartment_walls.pgm: 10.5 m x 7.5 m
+  EXPECT_EQ(known->info.height, 150u);
+  // A 2D Nav Goal in the bedroom, behind the living room's wall (through the door at x = 1.05).
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/move_base_simple/goal", 1);
+  ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+  geometry_msgs::PoseStamped goal = goalAt(2.0, -2.0).target_pose;
+  goal.header.stamp = ros::Time::now();
+  const ros::Time start = ros::Time::now();
+  pub.publish(goal);
+  const bool arrived = waitFor(
+      [&] {
+        const Robot::Sample s = robot_.latest();
+        return std::hypot(s.x - 2.0, s.y + 2.0) < kXyTolerance + 0.1 + 0.01 && s.v == 0 &&
+               s.w == 0 && (s.stamp - start).toSec() > 1.0;
+      },
+      kWallTimeout);
+  EXPECT_TRUE(arrived) << "at " << robot_.latest().x << ", " << robot_.latest().y;
+  // The kitchen, through the living room's other door, as an action goal.
+  const SimpleClientGoalState state = run(*client_, goalAt(-3.5, 2.0));
+  EXPECT_EQ(state, SimpleClientGoalState::SUCCEEDED) << state.getText();
+  EXPECT_LT(distanceTo(robot_, -3.5, 2.0), kXyTolerance + 0.1 + 0.01);
+  EXPECT_EQ(robot_.bumps(), 0);
+}
+
+class CleanKnownMap : public Nav {};
+
+TEST_F(CleanKnownMap, cleans_the_furnished_room_from_the_map_of_its_walls) {
+  const nav_msgs::OccupancyGrid::ConstPtr known = knownMapServed();
+  ASSERT_TRUE(known) << "nothing latched on /roomba_bt/known_map";
+  EXPECT_EQ(known->info.width, 132u);  // config/maps/furnished_walls.pgm
+  // No exploring: the rows come at once, across the whole known floor.
+  const Cleaned cleaned = cleanUntilDone(robot_, 30.0, kCleanWallTimeout);
+  ASSERT_TRUE(cleaned.planned) << "no plan on ~coverage_path";
+  EXPECT_GT(cleaned.planned_points, 50u);
+  ASSERT_TRUE(cleaned.done) << "still " << robot_.state() << " at coverage " << cleaned.coverage;
+  EXPECT_GE(cleaned.coverage, 0.90);
+  EXPECT_LE(robot_.bumps(), 2);
+  expectStandingStill(robot_);
 }
 
 }  // namespace

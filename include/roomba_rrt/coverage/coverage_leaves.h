@@ -105,6 +105,13 @@ navigation::LeafRegistrar coverageLeaves(const world::World& world,
 /// used to measure the reachable floor). Null: the leaves are only described (treeNodesModel);
 /// building PlanCoverage or ResumeCoverage throws std::invalid_argument.
 navigation::LeafRegistrar coverageLeaves(std::shared_ptr<const CoveragePlanner> planner);
+/// The same leaves for a cleaning that goes on where another tree's stopped (a new planner on a
+/// world that changed under the plan: clean_known_map.h): PlanCoverage does not plan, it writes
+/// `progress` (the rest of the plan, made on `planner`; the floor swept so far on its lattice;
+/// the touch-up passes done) and succeeds, unless there is nothing left at all: then it fails as
+/// when nothing can be cleaned.
+navigation::LeafRegistrar coverageLeaves(std::shared_ptr<const CoveragePlanner> planner,
+                                         CoverageProgress progress);
 
 }  // namespace roomba_rrt::coverage
 

@@ -118,6 +118,19 @@ class CoveragePlanner {
   /// are those of `plan`.
   CoveragePlan resume(const CoveragePlan& plan, std::size_t leg, const Point2& at) const;
 
+  /// What is left of `plan`, made in another world (the same room as the robot saw it before:
+  /// furniture it did not know has appeared since), for a robot at `at` during leg `leg`, made
+  /// free in this planner's world: the rest of the current row (from its point closest to `at`)
+  /// and every later row in their order, each row cut to its pieces that keep the planning
+  /// radius here (a row along a wall: its own clearance, and whole or not at all; a row cut
+  /// where something now stands ends 2 cm before it, as round an island), and new transits to
+  /// each piece from where the previous one ended (from `at` first). A piece that cannot be
+  /// reached is left out. The areas are those of `plan`. It keeps the order the robot was
+  /// driving in: a robot that saw a chair where its rows ran goes on with the same rows (a new
+  /// plan of the floor left from where it stands took the furnished room's cleaning from 216 s
+  /// to 315 s to 95 %: clean_known_map.h).
+  CoveragePlan repair(const CoveragePlan& plan, std::size_t leg, const Point2& at) const;
+
   /// Marks in `swept` (one flag per lattice point of freeSpace(), sized on first use) the floor
   /// under the robot's disc at `at`: what a robot knows it has cleaned, from its own poses.
   void markSwept(std::vector<std::uint8_t>& swept, const Point2& at) const;
@@ -154,9 +167,11 @@ class CoveragePlanner {
   /// The floor reachable from `start` (one flag per lattice point), with the plan's areas set.
   std::vector<std::uint8_t> reachableFloor(CoveragePlan& plan, const Point2& start) const;
 
-  /// The pieces of the row a–b (planned in open_) that are free in space_, in order from a: the
-  /// row itself when no island is in its way.
-  std::vector<std::pair<Point2, Point2>> freePieces(const Point2& a, const Point2& b) const;
+  /// The pieces of the segment a–b that are free in space_ for a disc of `radius`, in order from
+  /// a: the segment itself when nothing is in its way (a row planned in open_ across an island;
+  /// a row of another world's plan, repair()).
+  std::vector<std::pair<Point2, Point2>> freePieces(const Point2& a, const Point2& b,
+                                                    double radius) const;
 
   CoverageOptions options_;
   FreeSpace space_;

@@ -1,7 +1,9 @@
 // The map a robot builds of a home it has never seen, as its planners need it: the log-odds map of
 // its scans and bumps (mapping::OccupancyMapper, as roomba_mapper publishes it), the cells its
 // returns ended in, and where it stood. ROS-free. Exploring and cleaning (explore_clean.h) and
-// navigating (navigate_unknown.h) plan on it.
+// navigating (navigate_unknown.h) plan on it. Given a map of the home (known_map.h, perhaps
+// stale), it starts from that: the map's walls stay walls, its floor is floor until seen
+// otherwise (clean_known_map.h, and navigate_unknown.h with a known map).
 #pragma once
 
 #include <cstdint>
@@ -19,13 +21,25 @@ namespace roomba_rrt::exploration {
 class BuiltMap {
  public:
   /// For `robot` (its radius, sensors and initial_pose): a map of 0.05 m cells (gmapping's
-  /// default), 10 m round the initial pose, growing as the scans reach farther. With
-  /// `fine_split` > 1 also a map of cells `fine_split` times smaller (fineGrid()).
-  explicit BuiltMap(const world::RobotSpec& robot, int fine_split = 0);
+  /// default), 10 m round the initial pose, growing as the scans reach farther. With `known`
+  /// (a map of the home in the same frame: known_map.h), the map covers it from the start and
+  /// takes it as the prior of every grid below: its occupied cells occupied for good, its free
+  /// cells free unless a return ended in them or the mapper holds them more likely occupied
+  /// than not (a cell of known map is resampled onto the 0.05 m cells: occupied where any
+  /// occupied cell meets it, free where only free ones do). With `fine_split` > 1 also a map of
+  /// cells `fine_split` times smaller (fineGrid()).
+  explicit BuiltMap(const world::RobotSpec& robot,
+                    std::shared_ptr<const geometry::OccupancyGrid> known = nullptr,
+                    int fine_split = 0);
 
   /// A scan taken from `sensor` (the sensor's pose in the map): into the map. "" or why it was
   /// refused (mapping::checkScan), naming the field.
   std::string addScan(const robot::Pose2D& sensor, const mapping::ScanView& scan);
+  /// Whether the map started from a known map.
+  bool hasPrior() const { return !prior_.empty(); }
+  /// Whether the cell holding `p` was seen occupied: a return ended in it (for good, whatever
+  /// rays pass it later), or the mapper holds it more likely occupied than not (a bump).
+  bool seenOccupied(const geometry::Point2& p) const;
   /// The cells the pressed bumper touches at `pose` become occupied.
   void addBump(const robot::Pose2D& pose, const robot::BumperState& bumper);
   /// The robot stands at `p`: its disc is floor in the strict grid, whatever the map says.
@@ -73,10 +87,13 @@ class BuiltMap {
  private:
   /// Remembers the cells the scan's returns end in (hits_, fine_hits_).
   void markHits(const robot::Pose2D& sensor, const mapping::ScanView& scan);
-  /// The returns' cells occupied; cells clearly free only (`strict`).
+  /// The returns' cells occupied; cells clearly free only (`strict`); the prior's walls
+  /// occupied and its floor free where nothing was seen there.
   void markGrid(geometry::OccupancyGrid& grid, bool strict) const;
   /// Free where the robot stood (see grid()).
   void markFootprints(geometry::OccupancyGrid& grid) const;
+  /// The prior's value of the cell (gi, gj) of the lattice from lattice_ (kUnknown off it).
+  std::int8_t prior(std::int64_t gi, std::int64_t gj) const;
   static std::int64_t cellKey(std::int64_t i, std::int64_t j) {
     return (i << 32) ^ (j & 0xffffffff);
   }
@@ -92,6 +109,10 @@ class BuiltMap {
   std::unique_ptr<mapping::OccupancyMapper> fine_;
   std::unordered_set<std::int64_t> fine_hits_;
   std::vector<geometry::Point2> footprints_;  ///< where the robot stood (stoodAt)
+  /// The known map resampled onto the mapper's first lattice (prior_width_ columns from
+  /// lattice_); empty without one.
+  std::vector<std::int8_t> prior_;
+  int prior_width_ = 0, prior_height_ = 0;
 };
 
 }  // namespace roomba_rrt::exploration

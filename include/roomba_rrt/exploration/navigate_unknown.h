@@ -8,7 +8,8 @@
 // robot's disc in it, a new tree plans on it from where the robot is. A goal the tree gives up
 // on (no way to the goal through what is known to be free or unknown, a goal now seen inside an
 // obstacle) is planned again on the map as it is then, kRetries times, and then ends aborted
-// with the tree's message.
+// with the tree's message. Given a map of the home (known_map.h), the robot starts from it: its
+// walls stay walls, so the plans go through its doorways (issue 43's stale map).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@
 
 #include "roomba_rrt/behavior/roomba_params.h"
 #include "roomba_rrt/exploration/built_map.h"
+#include "roomba_rrt/exploration/known_map.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/world/world.h"
 
@@ -25,9 +27,13 @@ namespace roomba_rrt::exploration {
 class NavigateUnknown {
  public:
   /// For `robot` (its radius and sensors) starting at its initial_pose, with the navigation tree
-  /// in `tree_file`; `pose_latency` as NavLeafConfig's.
+  /// in `tree_file`; `pose_latency` as NavLeafConfig's. With `known` (a map of the home that may
+  /// be stale: known_map.h, checked with checkKnownMap, which throws util::InvalidInput naming
+  /// its field), the map starts from it: its walls are walls for good, and the way to a goal
+  /// goes through its doorways rather than through walls the robot has not seen yet.
   NavigateUnknown(const world::RobotSpec& robot, const behavior::RoombaParams& params,
-                  std::uint32_t seed, double pose_latency, std::string tree_file);
+                  std::uint32_t seed, double pose_latency, std::string tree_file,
+                  const KnownMap* known = nullptr);
   ~NavigateUnknown();
 
   /// A scan taken from `sensor` (the sensor's pose in the map): into the map. "" or why it was
