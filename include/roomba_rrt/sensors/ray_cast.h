@@ -47,6 +47,8 @@ class RayCaster {
 
  private:
   double castMap(const Ray& ray, double max_range) const;
+  // The map walk, in cells (ray_cast.cpp): u is the ray's main axis (x when kAlongX), v the other;
+  // (pu, pv) the origin, (du, dv) the direction, kSu and kSv their signs; a..b cells of line v.
   template <bool kAlongX>
   double walk(const Ray& ray, double pu, double pv, double du, double dv, double limit) const;
   template <bool kAlongX, int kSu>
