@@ -1,6 +1,7 @@
 // Speed of the range sensors' core (Google Benchmark): rays cast per second by a 360-ray LDS
-// scan in the furnished room and on willow_full (target ≥ 10 M rays/s), and the cost of ten
-// robots' lidars (5 Hz) per simulator step. Numbers: doc/simulation.md, "Sensors".
+// scan in the furnished room and on willow_full (target ≥ 10 M rays/s), the caster's one-time
+// build on willow_full, and the cost of ten robots' lidars (5 Hz) per simulator step. Numbers:
+// doc/simulation.md, "Sensors".
 //   devel/lib/roomba_rrt/sensor_bench
 #include <benchmark/benchmark.h>
 
@@ -77,6 +78,22 @@ void BM_LdsScanWillowFull(benchmark::State& state) {
   scanRays(state, *world, static_cast<double>(state.range(0)) / 10);
 }
 BENCHMARK(BM_LdsScanWillowFull)->Arg(35)->Arg(300);
+
+/// What a simulator with sensors pays once when it loads willow_full: the caster's bits of the
+/// map's blocked cells, along its rows and its columns.
+void BM_BuildCasterWillowFull(benchmark::State& state) {
+  const auto world = willowFull();
+  if (!world) {
+    state.SkipWithError("needs ../shared/maps/willow_full.yaml");
+    return;
+  }
+  for (auto _ : state) {
+    const sensors::RayCaster caster(world->room);
+    benchmark::DoNotOptimize(&caster);
+  }
+  state.SetItemsProcessed(state.iterations() * world->room.map->cells.size());
+}
+BENCHMARK(BM_BuildCasterWillowFull)->Unit(benchmark::kMillisecond);
 
 /// Ten robots in the furnished room (spreadRobots) turning in place, each with the LDS at 5 Hz
 /// (arg 1) or none (arg 0): the simulator's step plus the scans due at it, per step.

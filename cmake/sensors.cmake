@@ -6,14 +6,15 @@
 add_library(roomba_sensor_spec src/sensors/range_sensor.cpp)
 target_include_directories(roomba_sensor_spec PUBLIC ${PROJECT_SOURCE_DIR}/include)
 
-add_library(roomba_sensors src/sensors/ray_cast.cpp src/sensors/scanner.cpp)
+add_library(roomba_sensors src/sensors/blocked_bits.cpp src/sensors/ray_cast.cpp
+  src/sensors/scanner.cpp)
 target_include_directories(roomba_sensors PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(roomba_sensors PUBLIC roomba_sensor_spec roomba_world)
 target_compile_options(roomba_sensors PRIVATE -fno-math-errno)
 
 if(CATKIN_ENABLE_TESTING)
-  roomba_rrt_gtest(sensors_test test/sensors/ray_cast_test.cpp test/sensors/sensor_spec_test.cpp
-    test/sensors/scanner_test.cpp LINK roomba_sensors)
+  roomba_rrt_gtest(sensors_test test/sensors/blocked_bits_test.cpp test/sensors/ray_cast_test.cpp
+    test/sensors/sensor_spec_test.cpp test/sensors/scanner_test.cpp LINK roomba_sensors)
 endif()
 
 # Google Benchmark (libbenchmark-dev): rays per second, the lidars' cost per simulator step.

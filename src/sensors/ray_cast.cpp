@@ -11,11 +11,22 @@ namespace roomba_rrt::sensors {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// Crossings of an x line and a y line nearer than this (m) pass (within rounding) through a
-/// cell corner: both cells beside it are tested.
-constexpr double kCornerSlack = 1e-9;
-/// The same near a corner where a jump lands, in cells.
-constexpr double kCornerCells = 1e-6;
+/// How far (in cells) the runs of cells tested against a ray reach beyond it on every side: far
+/// more than the rounding of the walk's arithmetic (about 1e-12 cell on a map of 10^4 cells),
+/// so that every square the ray touches is among them; a square it only comes this near is
+/// intersected and found not touched.
+constexpr double kSlackCells = 1e-9;
+constexpr int kPad = BlockedBits::kPadCells;
+/// Fixed point for the walk's u (cells): u · 2^32, exact to add.
+constexpr double kFixedOne = 4294967296.0;
+/// The slack of kSlackCells in fixed point, for a run's ends: 2^12 units (about 1e-6 cell), far
+/// more than the first crossing's rounding (one unit); each increment adds less than one more.
+constexpr std::int64_t kFixedSlack = std::int64_t{1} << 12;
+
+/// floor(x) for x > −kPad (a cast truncates towards zero; without SSE4.1 std::floor is a call).
+int floorAbove(double x) { return static_cast<int>(x + kPad) - kPad; }
+std::int64_t fixedPoint(double u) { return static_cast<std::int64_t>((u + kPad) * kFixedOne); }
+int cellOf(std::int64_t fixed) { return static_cast<int>(fixed >> 32) - kPad; }
 
 /// The ray parameters at which it crosses the box's far x side and far y side (+inf along an
 /// axis it does not move along): where a ray that is inside the box leaves it.
@@ -27,35 +38,6 @@ std::pair<double, double> exitTimes(const Ray& ray, const geometry::Rectangle& b
                     : ray.dy < 0 ? (box.min_y - ray.origin.y) / ray.dy
                                  : kInf;
   return {tx, ty};
-}
-
-/// The clearance of every cell (ray_cast.h): an exact Chebyshev distance transform in two
-/// passes over the 8-neighbourhood, cells outside the grid counting as blocked.
-std::vector<std::uint8_t> chebyshevClearance(const geometry::OccupancyGrid& g) {
-  const int w = g.width, h = g.height;
-  std::vector<std::uint8_t> d(static_cast<std::size_t>(w) * h);
-  const auto at = [&](int i, int j) -> int {
-    return (i < 0 || j < 0 || i >= w || j >= h) ? 0 : d[static_cast<std::size_t>(j) * w + i];
-  };
-  for (int j = 0; j < h; ++j) {
-    for (int i = 0; i < w; ++i) {
-      int v = g.blocked(i, j) ? 0 : 255;
-      if (v)
-        v = std::min(
-            {v, at(i - 1, j) + 1, at(i - 1, j - 1) + 1, at(i, j - 1) + 1, at(i + 1, j - 1) + 1});
-      d[static_cast<std::size_t>(j) * w + i] = static_cast<std::uint8_t>(v);
-    }
-  }
-  for (int j = h - 1; j >= 0; --j) {
-    for (int i = w - 1; i >= 0; --i) {
-      int v = d[static_cast<std::size_t>(j) * w + i];
-      if (v)
-        v = std::min(
-            {v, at(i + 1, j) + 1, at(i + 1, j + 1) + 1, at(i, j + 1) + 1, at(i - 1, j + 1) + 1});
-      d[static_cast<std::size_t>(j) * w + i] = static_cast<std::uint8_t>(v);
-    }
-  }
-  return d;
 }
 
 }  // namespace
@@ -99,7 +81,11 @@ RayCaster::RayCaster(const world::Room& room)
     : room_(room),
       walls_{room.origin.x, room.origin.y, room.origin.x + room.width,
              room.origin.y + room.height} {
-  if (room_.map) clearance_ = chebyshevClearance(*room_.map);
+  if (room_.map) {
+    rows_ = BlockedBits(*room_.map);
+    columns_ = rows_.transposed();
+    inv_resolution_ = 1 / room_.map->resolution;
+  }
 }
 
 double RayCaster::cast(const Ray& ray, double max_range,
@@ -120,91 +106,145 @@ double RayCaster::cast(const Ray& ray, double max_range,
   return found ? limit : kInf;
 }
 
+// The map walk. Cells are closed squares, so the blocked square the ray meets first is the least
+// of hitRectangle over every blocked square it touches. The walk finds that set line by line:
+// with u the ray's main axis (x when |dx| ≥ |dy|) and v the other, the cells of line v (a row for
+// u = x) that the ray touches are a run between where it crosses the lines v and v + 1, and one
+// word of BlockedBits holds the run's blocked cells (57 at a time). Runs are widened by a slack,
+// so that rounding never loses a square the ray touches (an extra one is intersected and
+// missed). Lines are visited in the ray's order and a line's cells in its order, so the first
+// square touched is the nearest: the ray enters a square no sooner than it leaves the one before
+// it, in hitRectangle's own rounding too (both times are the same quotient for their shared
+// side).
+
 double RayCaster::castMap(const Ray& ray, double limit) const {
   const geometry::OccupancyGrid& g = *room_.map;
-  const double res = g.resolution;
-  const int si = ray.dx > 0 ? 1 : (ray.dx < 0 ? -1 : 0);
-  const int sj = ray.dy > 0 ? 1 : (ray.dy < 0 ? -1 : 0);
-  // Where the ray crosses the x (y) line that leaves column i (row j) in its direction, always
-  // from the ray's own origin: no error builds up along the walk.
-  // (Multiplied by the inverse: the order of the crossings is all the walk needs, within
-  // rounding, which the corner test below covers; the distance returned is the square's own.)
-  const double inv_x = 1 / ray.dx, inv_y = 1 / ray.dy;
-  const double ox = g.origin.x + (si > 0) * res - ray.origin.x;
-  const double oy = g.origin.y + (sj > 0) * res - ray.origin.y;
-  const auto cross_x = [&](int i) { return si == 0 ? kInf : (ox + i * res) * inv_x; };
-  const auto cross_y = [&](int j) { return sj == 0 ? kInf : (oy + j * res) * inv_y; };
-  // A cell's clearance, 0 when it is blocked (outside the grid too): the walk reads this array
-  // alone, not the grid's cells as well (one cache miss per new place, not two).
-  const auto clearance = [&](int i, int j) {
-    return g.inside(i, j) ? clearance_[static_cast<std::size_t>(j) * g.width + i] : 0;
-  };
-  // A blocked cell the ray touches (its closed square), or +inf: rounding in the cell a jump
-  // lands in may name a neighbour the ray only passes by.
-  const auto touch = [&](int i, int j) {
-    return clearance(i, j) == 0 ? hitRectangle(ray, g.square(i, j)) : kInf;
-  };
-  // The squares round cell (i, j), which may touch the ray where it is: at the origin, or where
-  // a jump lands, a point that rounding may have put in any of the cells that share it.
-  const auto touch_around = [&](int i, int j) {
-    double t = kInf;
-    if (clearance(i, j) >= 2) return t;  // all nine are free
-    for (int b = j - 1; b <= j + 1; ++b) {
-      for (int a = i - 1; a <= i + 1; ++a) t = std::min(t, touch(a, b));
-    }
-    return t;
-  };
-  const double inv_res = 1 / res;
-  int i = g.column(ray.origin.x), j = g.row(ray.origin.y);
-  double best = touch_around(i, j);
-  for (;;) {
-    const int k = clearance(i, j);
-    if (k == 0) {
-      best = std::min(best, touch(i, j));
-      if (best < kInf) return best <= limit ? best : kInf;
-    } else if (k >= 3) {
-      // Every cell within k − 1 of (i, j) is free: leave that block in one step, to the cell of
-      // the block where the ray leaves it (worth it from two cells on).
-      const int ei = i + si * (k - 1), ej = j + sj * (k - 1);  // its last column and row
-      const double tx = cross_x(ei), ty = cross_y(ej);
-      const double t = std::min(tx, ty);
-      if (best <= t || t > limit) return best <= limit ? best : kInf;
-      // The landing point's other coordinate, in cells: near a whole number, the point is near
-      // a cell corner, where rounding may have picked the wrong one of the cells that share it.
-      const double cells = tx <= ty ? (ray.origin.y + t * ray.dy - g.origin.y) * inv_res
-                                    : (ray.origin.x + t * ray.dx - g.origin.x) * inv_res;
-      const int across = std::clamp(static_cast<int>(std::floor(cells)), (tx <= ty ? j : i) - k + 1,
-                                    (tx <= ty ? j : i) + k - 1);
-      const int ni = tx <= ty ? ei : across;
-      const int nj = tx <= ty ? (ty <= tx ? ej : across) : ej;
-      if (ni != i || nj != j) {
-        i = ni;
-        j = nj;
-        // Away from a corner the walk's next crossing reaches the one square the point touches.
-        if (tx == ty || std::abs(cells - std::round(cells)) < kCornerCells) {
-          best = std::min(best, touch_around(i, j));
-        }
-        continue;
-      }
-    }
-    // A ray along a grid line touches the squares on both sides of it.
-    if (sj == 0) best = std::min({best, touch(i, j - 1), touch(i, j + 1)});
-    if (si == 0) best = std::min({best, touch(i - 1, j), touch(i + 1, j)});
-    const double tx = cross_x(i), ty = cross_y(j);
-    const double t = std::min(tx, ty);
-    if (best <= t) return best <= limit ? best : kInf;
-    if (t > limit) return kInf;
-    if (std::abs(tx - ty) <= kCornerSlack) {
-      // Through a corner (or within rounding of one): the two squares that may only touch the
-      // ray there count too, as far as the square's own test says they touch it.
-      best = std::min({best, touch(i + si, j), touch(i, j + sj)});
-    }
-    // One cell at a time, through a corner too (the cell beside it is then visited, which the
-    // ray touches there); without a branch: the order of crossings is hard to predict.
-    const bool step_x = tx <= ty;
-    i += step_x ? si : 0;
-    j += step_x ? 0 : sj;
+  // The origin in cells.
+  const double px = (ray.origin.x - g.origin.x) * inv_resolution_;
+  const double py = (ray.origin.y - g.origin.y) * inv_resolution_;
+  // On the grid's edge or beyond it, the origin is in a square beyond the grid (blocked).
+  if (!(px > 0 && px < g.width && py > 0 && py < g.height)) return 0;
+  if (!(std::isfinite(ray.dx) && std::isfinite(ray.dy) && limit >= 0)) return kInf;
+  if (std::abs(ray.dx) >= std::abs(ray.dy)) return walk<true>(ray, px, py, ray.dx, ray.dy, limit);
+  return walk<false>(ray, py, px, ray.dy, ray.dx, limit);
+}
+
+template <bool kAlongX>
+double RayCaster::walk(const Ray& ray, double pu, double pv, double du, double dv,
+                       double limit) const {
+  // One version per direction: the steps' signs are constants in the loop.
+  if (dv == 0) {
+    return du > 0 ? walkAlongLine<kAlongX, 1>(ray, pu, pv, limit)
+                  : walkAlongLine<kAlongX, -1>(ray, pu, pv, limit);
   }
+  if (du > 0) {
+    return dv > 0 ? walkAcrossLines<kAlongX, 1, 1>(ray, pu, pv, du, dv, limit)
+                  : walkAcrossLines<kAlongX, 1, -1>(ray, pu, pv, du, dv, limit);
+  }
+  return dv > 0 ? walkAcrossLines<kAlongX, -1, 1>(ray, pu, pv, du, dv, limit)
+                : walkAcrossLines<kAlongX, -1, -1>(ray, pu, pv, du, dv, limit);
+}
+
+template <bool kAlongX, int kSu>
+double RayCaster::walkAlongLine(const Ray& ray, double pu, double pv, double limit) const {
+  const BlockedBits& bits = kAlongX ? rows_ : columns_;
+  // The ray's cells along u, as far as one cell into the border.
+  const double cells = std::min(limit * inv_resolution_, bits.length() + 2.0);
+  const double end = pu + kSu * cells;
+  const int a = floorAbove(std::max(std::min(pu, end), -1.0) - kSlackCells);
+  const int b = floorAbove(std::min(std::max(pu, end), bits.length() + 1.0) + kSlackCells);
+  // On the line between two rows it touches the cells of both.
+  double best = kInf;
+  for (int v = floorAbove(pv - kSlackCells); v <= floorAbove(pv + kSlackCells); ++v) {
+    best = std::min(best, firstInRun<kAlongX, kSu>(ray, v, a, b));
+  }
+  return best <= limit ? best : kInf;
+}
+
+template <bool kAlongX, int kSu, int kSv>
+double RayCaster::walkAcrossLines(const Ray& ray, double pu, double pv, double du, double dv,
+                                  double limit) const {
+  const BlockedBits& bits = kAlongX ? rows_ : columns_;
+  // The ray's length in cells, no farther along u than one cell into the border.
+  const double cells =
+      std::min(limit * inv_resolution_, (kSu > 0 ? bits.length() + 1 - pu : pu + 1) / std::abs(du));
+  const double u_end = pu + cells * du, v_end = pv + cells * dv;
+  // The lines it crosses, first to last: with the slack, the one behind a line it starts on and
+  // one it only just reaches; the border's last line at most.
+  const int v0 = floorAbove(pv - kSv * kSlackCells);
+  const int v1 = kSv > 0 ? std::min(floorAbove(v_end + kSlackCells), bits.lines() + 1)
+                         : std::max(floorAbove(v_end - kSlackCells), -2);
+  // Where it crosses the lines between them, in fixed point: the first from the origin, the next
+  // ones by adding `step` (exact; the step's rounding is less than a unit per line). A step longer
+  // than the line has no second crossing on the ray and is capped.
+  const std::int64_t start = fixedPoint(pu), end = fixedPoint(u_end);
+  const double u_per_v = du / dv;
+  const std::int64_t step =
+      kSu * static_cast<std::int64_t>(std::min(std::abs(u_per_v), bits.length() + 4.0) * kFixedOne);
+  const std::int64_t slack = kFixedSlack + (v1 - v0) * kSv;
+  const auto within = [&](std::int64_t u) {
+    return kSu > 0 ? std::clamp(u, start, end) : std::clamp(u, end, start);
+  };
+  const std::uint8_t* line = bits.line(v0);
+  const std::ptrdiff_t stride = kSv * bits.stride();
+  // The nearest square the ray touches in the run of line v from u = in to u = out.
+  const auto hit = [&](int v, std::int64_t in, std::int64_t out) {
+    const int a = cellOf((kSu > 0 ? in : out) - slack), b = cellOf((kSu > 0 ? out : in) + slack);
+    if (b - a > 56) return firstInRun<kAlongX, kSu>(ray, v, a, b);
+    const std::uint64_t blocked = BlockedBits::cells(line, a, b - a + 1);
+    return blocked ? firstOfBits<kAlongX, kSu>(ray, v, a, blocked) : kInf;
+  };
+  int v = v0;
+  std::int64_t in = start;
+  double t = kInf;
+  if (v0 != v1) {
+    const double first = pu + ((kSv > 0 ? v0 + 1 : v0) - pv) * u_per_v;
+    std::int64_t cross = fixedPoint(std::clamp(first, -1.0, bits.length() + 1.0));
+    const std::int64_t out = within(cross);
+    t = hit(v, in, out);
+    in = out;
+    for (v += kSv, line += stride; t == kInf && v != v1; v += kSv, line += stride) {
+      cross += step;
+      t = hit(v, in, cross);
+      in = cross;
+    }
+    in = within(in);
+  }
+  if (t == kInf) t = hit(v, in, end);
+  return t <= limit ? t : kInf;
+}
+
+template <bool kAlongX, int kSu>
+double RayCaster::firstInRun(const Ray& ray, int v, int a, int b) const {
+  // 57 cells at a time (what one word holds after its shift), in the ray's order.
+  const std::uint8_t* line = (kAlongX ? rows_ : columns_).line(v);
+  for (;;) {
+    const int lo = kSu > 0 ? a : std::max(a, b - 56), hi = kSu > 0 ? std::min(b, a + 56) : b;
+    const std::uint64_t blocked = BlockedBits::cells(line, lo, hi - lo + 1);
+    if (blocked) {
+      const double t = firstOfBits<kAlongX, kSu>(ray, v, lo, blocked);
+      if (t < kInf) return t;
+    }
+    if (kSu > 0 ? hi == b : lo == a) return kInf;
+    (kSu > 0 ? a : b) = kSu > 0 ? hi + 1 : lo - 1;
+  }
+}
+
+template <bool kAlongX, int kSu>
+double RayCaster::firstOfBits(const Ray& ray, int v, int u0, std::uint64_t blocked) const {
+  // In the ray's order: the first square it touches is the nearest.
+  while (blocked) {
+    const int k = kSu > 0 ? __builtin_ctzll(blocked) : 63 - __builtin_clzll(blocked);
+    blocked &= ~(std::uint64_t{1} << k);
+    const double t = hitCell<kAlongX>(ray, u0 + k, v);
+    if (t < kInf) return t;
+  }
+  return kInf;
+}
+
+template <bool kAlongX>
+double RayCaster::hitCell(const Ray& ray, int u, int v) const {
+  return hitRectangle(ray, kAlongX ? room_.map->square(u, v) : room_.map->square(v, u));
 }
 
 }  // namespace roomba_rrt::sensors

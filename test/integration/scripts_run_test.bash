@@ -139,8 +139,8 @@ kill -TERM "$first"
 wait "$first" 2>/dev/null || true
 for _ in $(seq 100); do rosnode list 2>/dev/null | grep -q roomba_fsm || break; sleep 0.1; done
 
-# Several robots in a map: placed on its free floor, each with its own state machine, and the
-# simulator serves the map.
+# Several robots in a map: placed on its free floor, each with its own state machine and lidar,
+# and the simulator serves the map.
 "$run" --world apartment --robots 2 fsm >"$work/map" 2>&1 &
 map_run=$!
 started+=("$map_run")
@@ -150,6 +150,11 @@ check "... with robot1 and robot2 driving" bash -c \
   "rosnode list | grep -q /robot1/roomba_fsm && rosnode list | grep -q /robot2/roomba_fsm"
 check "... and the apartment on /map" bash -c \
   "timeout 10 rostopic echo -n 1 /map/info/width | grep -q 210"
+# Each robot's lidar under its namespace, in its own frame (the world's LDS preset).
+for k in 1 2; do
+  check "... robot$k's scan on /robot$k/scan in robot$k/base_scan" bash -c \
+    "timeout 10 rostopic echo -n 1 /robot$k/scan/header/frame_id | grep -q robot$k/base_scan"
+done
 kill -TERM "$map_run"
 wait "$map_run" 2>/dev/null || true
 stop_master

@@ -265,5 +265,60 @@ TEST(RayCast, willow_full_matches_every_blocked_square) {
   compareOnMap(room, rng, 300, 30);
 }
 
+TEST(RayCast, rays_through_lattice_points_at_other_slopes_touch_the_corners_they_pass) {
+  // From every lattice point along (p, q) for small whole p, q: the ray passes exactly through
+  // further lattice points (cell corners), where rounding may put it on either side.
+  std::mt19937 rng(5);
+  for (int m = 0; m < 6; ++m) {
+    const world::Room r = mapRoom(randomMap(rng, 0.2));
+    const OccupancyGrid& grid = *r.map;
+    const RayCaster c(r);
+    for (int j = 1; j < grid.height; j += 2) {
+      for (int i = 1; i < grid.width; i += 2) {
+        const Point2 o{grid.origin.x + i * grid.resolution, grid.origin.y + j * grid.resolution};
+        if (geometry::distanceToBlocked(grid, o, grid.resolution) == 0) continue;
+        for (int p = -3; p <= 3; ++p) {
+          for (int q = -3; q <= 3; ++q) {
+            if (std::abs(p) + std::abs(q) < 3 || std::abs(p) == std::abs(q)) continue;
+            const double n = std::hypot(p, q);
+            const Ray ray{o, p / n, q / n};
+            const double oracle = bruteMapHit(r, ray, 2.5), t = c.cast(ray, 2.5);
+            if (oracle == kInf) {
+              ASSERT_EQ(t, kInf) << i << ", " << j << " along " << p << ", " << q;
+            } else {
+              ASSERT_NEAR(t, oracle, kExact) << i << ", " << j << " along " << p << ", " << q;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(RayCast, beyond_the_maps_edge_is_a_wall_even_in_a_larger_room) {
+  // A room reaching past its map (a hand-made Room): the squares beyond the grid are blocked, as
+  // for contact; an origin beyond the grid is in one.
+  std::mt19937 rng(9);
+  for (int m = 0; m < 6; ++m) {
+    world::Room room = mapRoom(randomMap(rng, 0.01));
+    const OccupancyGrid& g = *room.map;
+    room.origin = {g.origin.x - 1, g.origin.y - 1};
+    room.width = g.width * g.resolution + 2;
+    room.height = g.height * g.resolution + 2;
+    const RayCaster caster(room);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double reach = std::hypot(room.width, room.height);  // every ray ends in the room
+    for (int r = 0; r < 100; ++r) {
+      const Point2 o{g.origin.x + g.width * g.resolution * u(rng),
+                     g.origin.y + g.height * g.resolution * u(rng)};
+      const Ray ray = rayAt(o, 2 * M_PI * u(rng));
+      const double oracle = bruteMapHit(room, ray, reach), t = caster.cast(ray, reach);
+      ASSERT_LT(oracle, kInf);
+      ASSERT_NEAR(t, oracle, kExact) << "map " << m << " ray " << r;
+    }
+    EXPECT_EQ(caster.cast(rayAt({g.origin.x - 0.5, g.origin.y + 0.5}, 0), 10), 0);
+  }
+}
+
 }  // namespace
 }  // namespace roomba_rrt::sensors

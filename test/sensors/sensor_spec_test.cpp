@@ -40,6 +40,8 @@ TEST(SensorSpec, a_world_naming_no_sensors_gets_the_lds_preset) {
   EXPECT_DOUBLE_EQ(lds.range_max, 3.5);
   EXPECT_DOUBLE_EQ(lds.rate, 5);
   EXPECT_DOUBLE_EQ(lds.angleIncrement(), M_PI / 180);
+  EXPECT_EQ(lds.angle_min, 0);  // straight ahead, as hls_lfcd_lds_driver's first sample
+  EXPECT_DOUBLE_EQ(lds.angle_max, 2 * M_PI * 359 / 360);
   EXPECT_EQ(lds.noise_stddev, 0);
 }
 
@@ -68,6 +70,10 @@ TEST(SensorSpec, presets_take_overrides_and_names_give_frames) {
   EXPECT_EQ(ir.samples, 6);
   EXPECT_DOUBLE_EQ(ir.range_max, 0.15);
   EXPECT_DOUBLE_EQ(ir.mount.x, 0.17);  // the front of the bumper
+  EXPECT_DOUBLE_EQ(ir.angle_min, -70 * M_PI / 180);
+  EXPECT_DOUBLE_EQ(ir.angle_max, 70 * M_PI / 180);
+  EXPECT_EQ(ir.range_min, 0);
+  EXPECT_DOUBLE_EQ(ir.rate, 20);
   const RangeSensorSpec& front = world.robot().sensors[1];
   EXPECT_EQ(front.name, "front");
   EXPECT_EQ(front.frame, "base_front");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "roomba_rrt/geometry/geometry.h"
+#include "roomba_rrt/sensors/blocked_bits.h"
 #include "roomba_rrt/world/world.h"
 
 namespace roomba_rrt::sensors {
@@ -27,16 +28,18 @@ double hitRectangle(const Ray& ray, const geometry::Rectangle& box);
 /// origin is on or outside its border.
 double leaveRectangle(const Ray& ray, const geometry::Rectangle& room);
 
-/// Casts rays into one room. Built once per room (the map's clearance is computed here: one
-/// byte per cell); cheap to query from many threads at once (const).
+/// Casts rays into one room. Built once per room (the map's blocked cells become bits here: a
+/// quarter of a byte per cell, along the rows and along the columns); cheap to query from many
+/// threads at once (const).
 class RayCaster {
  public:
   explicit RayCaster(const world::Room& room);
 
   /// The distance (m) from ray.origin to the first wall, piece of furniture, blocked map cell
   /// or disc of `others` (other robots) along the ray, if it is at most `max_range`; +inf
-  /// beyond. A map is walked cell by cell (a DDA), jumping over runs of free cells known from
-  /// each cell's clearance.
+  /// beyond. A map is walked line by line across the ray's main direction: the cells the ray
+  /// touches in one row (one column for a ray closer to the y axis) are a run that one word of
+  /// BlockedBits tests, and only a blocked square among them is intersected.
   double cast(const Ray& ray, double max_range,
               const std::vector<geometry::Circle>& others = {}) const;
 
@@ -44,12 +47,28 @@ class RayCaster {
 
  private:
   double castMap(const Ray& ray, double max_range) const;
+  // The map walk, in cells (ray_cast.cpp): u is the ray's main axis (x when kAlongX), v the other;
+  // (pu, pv) the origin, (du, dv) the direction, kSu and kSv their signs; a..b cells of line v.
+  template <bool kAlongX>
+  double walk(const Ray& ray, double pu, double pv, double du, double dv, double limit) const;
+  template <bool kAlongX, int kSu>
+  double walkAlongLine(const Ray& ray, double pu, double pv, double limit) const;
+  template <bool kAlongX, int kSu, int kSv>
+  double walkAcrossLines(const Ray& ray, double pu, double pv, double du, double dv,
+                         double limit) const;
+  template <bool kAlongX, int kSu>
+  double firstInRun(const Ray& ray, int v, int a, int b) const;
+  template <bool kAlongX, int kSu>
+  double firstOfBits(const Ray& ray, int v, int u0, std::uint64_t blocked) const;
+  template <bool kAlongX>
+  double hitCell(const Ray& ray, int u, int v) const;
 
   world::Room room_;
   geometry::Rectangle walls_;  ///< the room's rectangle
-  /// Per map cell: the Chebyshev distance (in cells, at most 255) to the nearest blocked cell,
-  /// 0 on a blocked one: the cells within clearance − 1 of it in both axes are all free.
-  std::vector<std::uint8_t> clearance_;
+  /// The map's blocked cells along its rows (for rays closer to the x axis) and along its
+  /// columns (the others).
+  BlockedBits rows_, columns_;
+  double inv_resolution_ = 0;
 };
 
 }  // namespace roomba_rrt::sensors
