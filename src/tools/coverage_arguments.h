@@ -2,6 +2,7 @@
 // what to write (CSV, picture, plot).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct CoverageArguments {
   /// --unknown: the cleaning tree starts with an empty map and its lidar (behaviour "unknown",
   /// explore_clean.h); with --compare a fourth column.
   bool unknown = false;
+  /// --sensors: the presets the robot carries instead of the world's sensors (lds, ir_bumper;
+  /// empty: none, the bumper alone); unset: the world's.
+  std::optional<std::vector<std::string>> sensors;
   bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
 };
 

@@ -31,7 +31,7 @@ bool finalIsCheckpoint(double duration, double step);
 /// Fractions of the reachable floor whose time a run reports (time to 90 / 95 / 99 %), and the
 /// multiples of the ideal time at which it reports the coverage.
 inline constexpr double kTargets[] = {0.90, 0.95, 0.99};
-inline constexpr double kIdealMultiples[] = {1.5, 2.0};
+inline constexpr double kIdealMultiples[] = {1.5, 2.0, 3.0};
 
 /// The FSM or the BT (the lab's tree, or --tree's) with the rotation angle's seed.
 std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageArguments& o,
@@ -77,6 +77,10 @@ struct Run {
   int bumps = 0;  ///< times the bumper was pressed (a press lasting several steps counts once)
   /// --unknown: simulated s when exploring ended and cleaning began (NaN: never, or not asked).
   double explored_at = 0;
+  /// --unknown without a lidar (exploration::BumpClean): simulated s when no move was left and
+  /// the robot stood for good (NaN: not within the run).
+  bool by_touch = false;
+  double done_at = 0;
 };
 
 /// One run of one robot from the simulator's reset state; writes the CSV when `csv` is given and

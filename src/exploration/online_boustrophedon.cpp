@@ -1,0 +1,316 @@
+#include "roomba_rrt/exploration/online_boustrophedon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <utility>
+
+#include "roomba_rrt/geometry/distance_transform.h"
+
+namespace roomba_rrt::exploration {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr Heading kHeadings[] = {Heading::kEast, Heading::kWest, Heading::kNorth, Heading::kSouth};
+/// m: a shift that cannot go this far is no shift.
+constexpr double kLeastShift = 0.01;
+/// m: a transit may begin at a safe centre this near the robot (straight from where it stands).
+constexpr double kLeaveRadius = 0.1;
+
+bool alongRows(Heading h) { return h == Heading::kEast || h == Heading::kWest; }
+
+}  // namespace
+
+geometry::Point2 unit(Heading heading) {
+  switch (heading) {
+    case Heading::kEast:
+      return {1, 0};
+    case Heading::kWest:
+      return {-1, 0};
+    case Heading::kNorth:
+      return {0, 1};
+    case Heading::kSouth:
+      return {0, -1};
+  }
+  return {1, 0};
+}
+
+double yaw(Heading heading) {
+  switch (heading) {
+    case Heading::kEast:
+      return 0;
+    case Heading::kWest:
+      return kPi;
+    case Heading::kNorth:
+      return kPi / 2;
+    case Heading::kSouth:
+      return -kPi / 2;
+  }
+  return 0;
+}
+
+Heading opposite(Heading heading) {
+  switch (heading) {
+    case Heading::kEast:
+      return Heading::kWest;
+    case Heading::kWest:
+      return Heading::kEast;
+    case Heading::kNorth:
+      return Heading::kSouth;
+    case Heading::kSouth:
+      return Heading::kNorth;
+  }
+  return heading;
+}
+
+const char* toString(Heading heading) {
+  switch (heading) {
+    case Heading::kEast:
+      return "east";
+    case Heading::kWest:
+      return "west";
+    case Heading::kNorth:
+      return "north";
+    case Heading::kSouth:
+      return "south";
+  }
+  return "?";
+}
+
+OnlineBoustrophedon::OnlineBoustrophedon(const geometry::Point2& start, double start_yaw,
+                                         const BoustrophedonOptions& options)
+    : options_(options),
+      line_y_(start.y),
+      // next() drives the row opposite to the last one first: the first row goes the way the
+      // robot faces.
+      row_heading_(std::cos(start_yaw) >= 0 ? Heading::kWest : Heading::kEast) {}
+
+double OnlineBoustrophedon::newFloor(const SweptMap& map, const geometry::Point2& from,
+                                     Heading heading, double length) {
+  const geometry::Point2 u = unit(heading);
+  const double l = map.freeLength(from, u, length);
+  if (l <= 0) return 0;
+  const geometry::Point2 to{from.x + l * u.x, from.y + l * u.y};
+  const double r = map.radius(), r2 = r * r;
+  const Cell lo = map.cellOf({std::min(from.x, to.x) - r, std::min(from.y, to.y) - r});
+  const Cell hi = map.cellOf({std::max(from.x, to.x) + r, std::max(from.y, to.y) + r});
+  long count = 0;
+  for (int j = lo.j; j <= hi.j; ++j) {
+    for (int i = lo.i; i <= hi.i; ++i) {
+      const Cell c{i, j};
+      if (!map.unknown(c)) continue;
+      const geometry::Point2 p = map.centre(c);
+      if (geometry::squaredDistance(p, from) <= r2) continue;  // under the disc already
+      const double along = std::clamp((p.x - from.x) * u.x + (p.y - from.y) * u.y, 0.0, l);
+      if (geometry::squaredDistance(p, {from.x + along * u.x, from.y + along * u.y}) <= r2) {
+        ++count;
+      }
+    }
+  }
+  return static_cast<double>(count) * map.resolution() * map.resolution();
+}
+
+double OnlineBoustrophedon::nextRowLine(double y, Heading side) const {
+  const double s = options_.swath;
+  if (side == Heading::kNorth) {
+    return line_y_ + std::ceil((y + options_.min_shift - line_y_) / s - 1e-9) * s;
+  }
+  return line_y_ + std::floor((y - options_.min_shift - line_y_) / s + 1e-9) * s;
+}
+
+bool OnlineBoustrophedon::triedOut(const SweptMap& map, const geometry::Point2& from,
+                                   Heading heading) const {
+  const Cell c = map.cellOf(from);
+  const auto it =
+      tries_.find((static_cast<std::int64_t>(c.i) * 1000003 + c.j) * 4 + static_cast<int>(heading));
+  return it != tries_.end() && it->second >= options_.max_tries;
+}
+
+Move OnlineBoustrophedon::chosen(const SweptMap& map, Move move) {
+  const Cell c = map.cellOf(move.start);
+  ++tries_[(static_cast<std::int64_t>(c.i) * 1000003 + c.j) * 4 + static_cast<int>(move.heading)];
+  last_ = move.kind;
+  (move.kind == Move::Kind::kRow ? row_heading_ : side_) = move.heading;
+  return move;
+}
+
+std::optional<Move> OnlineBoustrophedon::row(const SweptMap& map, const geometry::Point2& from,
+                                             Heading heading) {
+  if (triedOut(map, from, heading)) return std::nullopt;
+  Move move;
+  move.kind = Move::Kind::kRow;
+  move.start = from;
+  move.heading = heading;
+  move.gain = newFloor(map, from, heading, options_.lookahead);
+  if (move.gain < options_.min_gain) return std::nullopt;
+  return move;
+}
+
+std::optional<Move> OnlineBoustrophedon::shift(const SweptMap& map, const geometry::Point2& from,
+                                               Heading side) {
+  if (triedOut(map, from, side)) return std::nullopt;
+  const double wanted = std::abs(nextRowLine(from.y, side) - from.y);
+  const geometry::Point2 u = unit(side);
+  const double length = map.freeLength(from, u, wanted);
+  if (length < kLeastShift) return std::nullopt;
+  const geometry::Point2 end{from.x + length * u.x, from.y + length * u.y};
+  Move move;
+  move.kind = Move::Kind::kShift;
+  move.start = from;
+  move.heading = side;
+  move.length = wanted;  // the robot goes as far as it can: what it finds on the way may stop it
+  move.gain = newFloor(map, from, side, length) +
+              std::max(newFloor(map, end, Heading::kEast, options_.lookahead),
+                       newFloor(map, end, Heading::kWest, options_.lookahead));
+  if (move.gain < options_.min_gain) return std::nullopt;
+  return move;
+}
+
+std::optional<Move> OnlineBoustrophedon::next(const SweptMap& map, const geometry::Point2& at) {
+  // The boustrophedon from where the robot stands: after a shift (or at the start) the row back
+  // the way the last one came; after a row the shift towards the side the rows go, or the other.
+  if (!last_ || *last_ == Move::Kind::kShift) {
+    for (const Heading h : {opposite(row_heading_), row_heading_}) {
+      if (std::optional<Move> move = row(map, at, h)) return chosen(map, std::move(*move));
+    }
+  } else {
+    for (const Heading h : {side_, opposite(side_)}) {
+      if (std::optional<Move> move = shift(map, at, h)) return chosen(map, std::move(*move));
+    }
+  }
+  return backtrack(map, at);
+}
+
+std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
+                                                   const geometry::Point2& at) {
+  ++backtracks_;
+  const int width = map.columns(), height = map.rows();
+  const int i0 = map.minColumn(), j0 = map.minRow();
+  const double h = map.resolution();
+  auto index = [&](const Cell& c) { return (c.j - j0) * width + (c.i - i0); };
+  auto cellAt = [&](int k) { return Cell{i0 + k % width, j0 + k / width}; };
+
+  // Safe centres: swept, not blocked, and no centre that is not swept within radius − rim.
+  geometry::OccupancyGrid unswept;
+  unswept.width = width;
+  unswept.height = height;
+  unswept.resolution = h;
+  unswept.cells.resize(static_cast<std::size_t>(width) * height);
+  for (int k = 0; k < width * height; ++k) {
+    unswept.cells[k] =
+        map.swept(cellAt(k)) ? geometry::OccupancyGrid::kFree : geometry::OccupancyGrid::kOccupied;
+  }
+  const std::vector<std::int32_t> distance = geometry::squaredDistanceTransform(unswept);
+  const double inner = std::max(0.0, map.radius() - options_.safe_rim) / h;
+  std::vector<char> safe(static_cast<std::size_t>(width) * height, 0);
+  for (int k = 0; k < width * height; ++k) {
+    safe[k] = distance[k] > inner * inner && !map.blocked(cellAt(k));
+  }
+
+  const Cell source_cell = map.cellOf(at);
+  auto held = [&](const Cell& c) {
+    return c.i >= i0 && c.j >= j0 && c.i < i0 + width && c.j < j0 + height;
+  };
+  if (!held(source_cell)) return std::nullopt;
+  const int source = index(source_cell);
+
+  // A move from centre `from` worth starting: the one that promises most of the four.
+  auto bestFrom = [&](const geometry::Point2& from) {
+    std::optional<Move> best;
+    for (const Heading heading : kHeadings) {
+      // Only where the disc's leading edge touches floor it has not swept.
+      const geometry::Point2 u = unit(heading);
+      bool unswept_ahead = false;
+      for (const double a : {0.0, kPi / 6, -kPi / 6, kPi / 3, -kPi / 3}) {
+        const double reach = map.radius() + h;
+        const geometry::Point2 p{from.x + reach * (u.x * std::cos(a) - u.y * std::sin(a)),
+                                 from.y + reach * (u.x * std::sin(a) + u.y * std::cos(a))};
+        if (map.unknown(map.cellOf(p))) {
+          unswept_ahead = true;
+          break;
+        }
+      }
+      if (!unswept_ahead) continue;
+      std::optional<Move> move =
+          alongRows(heading) ? row(map, from, heading) : shift(map, from, heading);
+      if (move && (!best || move->gain > best->gain)) best = std::move(move);
+    }
+    return best;
+  };
+
+  std::vector<double> cost(static_cast<std::size_t>(width) * height,
+                           std::numeric_limits<double>::infinity());
+  std::vector<int> parent(static_cast<std::size_t>(width) * height, -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  cost[source] = 0;
+  open.push({0, source});
+  // The robot may stand where no centre is safe (pressed against what it bumped into, or nearer
+  // a wall than reach where it had found no point): the safe centres under its disc's middle are
+  // where its paths begin, straight from where it stands.
+  const int near = static_cast<int>(std::ceil(kLeaveRadius / h));
+  for (int dj = -near; dj <= near; ++dj) {
+    for (int di = -near; di <= near; ++di) {
+      const Cell c{source_cell.i + di, source_cell.j + dj};
+      if (!held(c) || !safe[index(c)]) continue;
+      const double d = geometry::distance(at, map.centre(c));
+      if (d > kLeaveRadius || d >= cost[index(c)]) continue;
+      cost[index(c)] = d;
+      parent[index(c)] = source;
+      open.push({d, index(c)});
+    }
+  }
+  while (!open.empty()) {
+    const auto [d, k] = open.top();
+    open.pop();
+    if (d > cost[k]) continue;
+    const Cell c = cellAt(k);
+    const geometry::Point2 from = k == source ? at : map.centre(c);
+    if (std::optional<Move> move = bestFrom(from)) {
+      if (k != source) {
+        std::vector<geometry::Point2> cells;
+        for (int p = k; p != source; p = parent[p]) cells.push_back(map.centre(cellAt(p)));
+        cells.push_back(at);
+        std::reverse(cells.begin(), cells.end());
+        // Shortcut: on from each corner to the farthest cell it sees over safe centres.
+        auto visible = [&](const geometry::Point2& a, const geometry::Point2& b) {
+          const int n = static_cast<int>(std::ceil(geometry::distance(a, b) / (h / 2)));
+          for (int s = 1; s < n; ++s) {
+            const double t = static_cast<double>(s) / n;
+            const Cell x = map.cellOf({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+            const int xi = index(x);
+            if (xi != source && !safe[xi]) return false;
+          }
+          return true;
+        };
+        move->transit.push_back(cells.front());
+        for (std::size_t p = 2; p < cells.size(); ++p) {
+          if (!visible(move->transit.back(), cells[p])) move->transit.push_back(cells[p - 1]);
+        }
+        move->transit.push_back(cells.back());
+      }
+      return chosen(map, std::move(*move));
+    }
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        if (di == 0 && dj == 0) continue;
+        const Cell n{c.i + di, c.j + dj};
+        if (!held(n)) continue;
+        const int nk = index(n);
+        if (!safe[nk]) continue;
+        // No corner cut past a centre that is not safe.
+        if (di != 0 && dj != 0 && (!safe[index({c.i + di, c.j})] || !safe[index({c.i, c.j + dj})]))
+          continue;
+        const double nd = d + h * (di != 0 && dj != 0 ? std::sqrt(2.0) : 1.0);
+        if (nd < cost[nk]) {
+          cost[nk] = nd;
+          parent[nk] = k;
+          open.push({nd, nk});
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace roomba_rrt::exploration
