@@ -104,6 +104,9 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
     if (phase_ == Phase::kBackUp) {
       plan(time, pose);  // backed into something as well: choose again from here
     } else {
+      std::fprintf(stderr, "%7.2f BUMP at (%.3f, %.3f, %.2f) %s%s in %s\n", time, pose.x, pose.y,
+                   pose.theta, bumper.left ? "L" : "", bumper.right ? "R" : "",
+                   stateName().c_str());
       phase_ = Phase::kBackUp;
       backup_from_ = at;
       move_since_ = time;
@@ -197,7 +200,11 @@ robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
   double left = free - kEndGap;
   bool end = left <= 0 || time - move_since_ > options_.move_timeout;
   if (move.kind == Move::Kind::kShift) {
-    left = std::min(left, move.length - along - kEndGap);
+    // On past the row line to what the robot found ahead when that is less than kSnapToWall
+    // beyond it: the row after it sweeps the strip along it (else a strip is left that only
+    // shifts of a few centimetres, one at a time, could sweep).
+    const double to_line = move.length - along;
+    if (free - to_line > OnlineBoustrophedon::kSnapToWall) left = to_line - kEndGap;
     end = end || left <= 0;
   } else {
     const geometry::Point2 on_line{move.start.x + along * u.x, move.start.y + along * u.y};
@@ -205,6 +212,8 @@ robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
           OnlineBoustrophedon::newFloor(map_, on_line, move.heading, kRowLookahead) < kRowMinGain;
   }
   if (end) {
+    std::fprintf(stderr, "%7.2f   end at (%.3f, %.3f) along %.3f free %.3f left %.3f\n", time,
+                 pose.x, pose.y, along, free, left);
     plan(time, pose);
     return {};
   }

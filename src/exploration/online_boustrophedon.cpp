@@ -16,6 +16,9 @@ constexpr Heading kHeadings[] = {Heading::kEast, Heading::kWest, Heading::kNorth
 constexpr double kLeastShift = 0.01;
 /// m: a transit may begin at a safe centre this near the robot (straight from where it stands).
 constexpr double kLeaveRadius = 0.1;
+/// m: two points found this near the same distance ahead, one on each side of the way, are
+/// taken for one straight wall across it.
+constexpr double kInLine = 0.03;
 
 bool alongRows(Heading h) { return h == Heading::kEast || h == Heading::kWest; }
 
@@ -112,10 +115,13 @@ double OnlineBoustrophedon::newFloor(const SweptMap& map, const geometry::Point2
 
 double OnlineBoustrophedon::nextRowLine(double y, Heading side) const {
   const double s = options_.swath;
-  if (side == Heading::kNorth) {
-    return line_y_ + std::ceil((y + options_.min_shift - line_y_) / s - 1e-9) * s;
-  }
-  return line_y_ + std::floor((y - options_.min_shift - line_y_) / s + 1e-9) * s;
+  const double line = side == Heading::kNorth
+                          ? line_y_ + std::ceil((y + options_.min_shift - line_y_) / s - 1e-9) * s
+                          : line_y_ + std::floor((y - options_.min_shift - line_y_) / s + 1e-9) * s;
+  // A row line nearer than half a swath (the robot is on a row along a wall, off the lines): a
+  // swath on, not a sliver.
+  if (std::abs(line - y) < s / 2) return side == Heading::kNorth ? y + s : y - s;
+  return line;
 }
 
 bool OnlineBoustrophedon::triedOut(const SweptMap& map, const geometry::Point2& from,
@@ -134,6 +140,42 @@ Move OnlineBoustrophedon::chosen(const SweptMap& map, Move move) {
   return move;
 }
 
+double OnlineBoustrophedon::guessedWall(const SweptMap& map, const geometry::Point2& from,
+                                        Heading heading, double max) const {
+  if (!guess_walls_) return std::numeric_limits<double>::infinity();
+  const geometry::Point2 u = unit(heading), v{-u.y, u.x};
+  const double w = options_.wall_gap;
+  // On each side of the way ahead, the point found nearest to it.
+  struct Nearest {
+    double across = std::numeric_limits<double>::infinity(), along = 0;
+    geometry::Point2 point;
+  } left, right;
+  const geometry::Point2 a{from.x + max * u.x - w * v.x, from.y + max * u.y - w * v.y};
+  const geometry::Point2 b{from.x + w * v.x, from.y + w * v.y};
+  map.forPointsNear({std::min(a.x, b.x), std::min(a.y, b.y)},
+                    {std::max(a.x, b.x), std::max(a.y, b.y)}, [&](const geometry::Point2& q) {
+                      const double along = (q.x - from.x) * u.x + (q.y - from.y) * u.y;
+                      const double across = (q.x - from.x) * v.x + (q.y - from.y) * v.y;
+                      if (along <= 0 || along > max || std::abs(across) > w) return;
+                      Nearest& side = across >= 0 ? left : right;
+                      if (std::abs(across) < side.across) side = {std::abs(across), along, q};
+                    });
+  if (std::isinf(left.across) || std::isinf(right.across) ||
+      std::abs(left.along - right.along) > kInLine) {
+    return std::numeric_limits<double>::infinity();
+  }
+  // No wall where the robot has been: the line between them crosses no swept floor.
+  const double h = map.resolution();
+  const int n = static_cast<int>(std::ceil(geometry::distance(left.point, right.point) / (h / 2)));
+  for (int k = 1; k < n; ++k) {
+    const double t = static_cast<double>(k) / n;
+    const geometry::Point2 p{left.point.x + t * (right.point.x - left.point.x),
+                             left.point.y + t * (right.point.y - left.point.y)};
+    if (map.swept(map.cellOf(p))) return std::numeric_limits<double>::infinity();
+  }
+  return std::min(left.along, right.along);
+}
+
 std::optional<Move> OnlineBoustrophedon::row(const SweptMap& map, const geometry::Point2& from,
                                              Heading heading) {
   if (triedOut(map, from, heading)) return std::nullopt;
@@ -141,7 +183,9 @@ std::optional<Move> OnlineBoustrophedon::row(const SweptMap& map, const geometry
   move.kind = Move::Kind::kRow;
   move.start = from;
   move.heading = heading;
-  move.gain = newFloor(map, from, heading, options_.lookahead);
+  const double wall =
+      guessedWall(map, from, heading, options_.lookahead + map.reach() + kInLine) - map.reach();
+  move.gain = newFloor(map, from, heading, std::min(options_.lookahead, wall));
   if (move.gain < options_.min_gain) return std::nullopt;
   return move;
 }
@@ -151,7 +195,10 @@ std::optional<Move> OnlineBoustrophedon::shift(const SweptMap& map, const geomet
   if (triedOut(map, from, side)) return std::nullopt;
   const double wanted = std::abs(nextRowLine(from.y, side) - from.y);
   const geometry::Point2 u = unit(side);
-  const double length = map.freeLength(from, u, wanted);
+  const double wall = guessedWall(map, from, side, wanted + map.reach() + kInLine) - map.reach();
+  // To the line, or on to what it found just beyond it (kSnapToWall).
+  double length = std::min(map.freeLength(from, u, wanted + kSnapToWall), wall);
+  if (length >= wanted + kSnapToWall) length = wanted;
   if (length < kLeastShift) return std::nullopt;
   const geometry::Point2 end{from.x + length * u.x, from.y + length * u.y};
   Move move;
@@ -167,18 +214,24 @@ std::optional<Move> OnlineBoustrophedon::shift(const SweptMap& map, const geomet
 }
 
 std::optional<Move> OnlineBoustrophedon::next(const SweptMap& map, const geometry::Point2& at) {
-  // The boustrophedon from where the robot stands: after a shift (or at the start) the row back
-  // the way the last one came; after a row the shift towards the side the rows go, or the other.
-  if (!last_ || *last_ == Move::Kind::kShift) {
-    for (const Heading h : {opposite(row_heading_), row_heading_}) {
-      if (std::optional<Move> move = row(map, at, h)) return chosen(map, std::move(*move));
+  // First with walls guessed straight, then (nothing left but the gaps) without.
+  for (const bool guess : {true, false}) {
+    guess_walls_ = guess;
+    // The boustrophedon from where the robot stands: after a shift (or at the start) the row
+    // back the way the last one came; after a row the shift towards the side the rows go, or the
+    // other.
+    if (!last_ || *last_ == Move::Kind::kShift) {
+      for (const Heading h : {opposite(row_heading_), row_heading_}) {
+        if (std::optional<Move> move = row(map, at, h)) return chosen(map, std::move(*move));
+      }
+    } else {
+      for (const Heading h : {side_, opposite(side_)}) {
+        if (std::optional<Move> move = shift(map, at, h)) return chosen(map, std::move(*move));
+      }
     }
-  } else {
-    for (const Heading h : {side_, opposite(side_)}) {
-      if (std::optional<Move> move = shift(map, at, h)) return chosen(map, std::move(*move));
-    }
+    if (std::optional<Move> move = backtrack(map, at)) return move;
   }
-  return backtrack(map, at);
+  return std::nullopt;
 }
 
 std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,

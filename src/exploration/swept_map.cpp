@@ -96,22 +96,18 @@ void SweptMap::markObstacle(const geometry::Point2& p) {
 double SweptMap::freeLength(const geometry::Point2& from, const geometry::Point2& d,
                             double max) const {
   const geometry::Point2 to{from.x + max * d.x, from.y + max * d.y};
-  const Cell lo = cellOf({std::min(from.x, to.x) - reach_, std::min(from.y, to.y) - reach_});
-  const Cell hi = cellOf({std::max(from.x, to.x) + reach_, std::max(from.y, to.y) + reach_});
   double best = max;
-  for (int j = std::max(lo.j, j0_); j <= std::min(hi.j, j0_ + height_ - 1); ++j) {
-    for (int i = std::max(lo.i, i0_); i <= std::min(hi.i, i0_ + width_ - 1); ++i) {
-      if (!(flags({i, j}) & kOccupied)) continue;
-      for (const geometry::Point2& q : points_.at(key({i, j}))) {
-        const double ux = q.x - from.x, uy = q.y - from.y;
-        const double along = ux * d.x + uy * d.y;                // ahead of the centre
-        const double across = d.x * uy - d.y * ux;               // beside its path
-        if (along <= 0 || std::abs(across) >= reach_) continue;  // never nearer by going on
-        const double t = along - std::sqrt(reach_ * reach_ - across * across);
-        best = std::min(best, std::max(0.0, t));
-      }
-    }
-  }
+  forPointsNear({std::min(from.x, to.x) - reach_, std::min(from.y, to.y) - reach_},
+                {std::max(from.x, to.x) + reach_, std::max(from.y, to.y) + reach_},
+                [&](const geometry::Point2& q) {
+                  const double ux = q.x - from.x, uy = q.y - from.y;
+                  const double along = ux * d.x + uy * d.y;   // ahead of the centre
+                  const double across = d.x * uy - d.y * ux;  // beside its path
+                  // Behind it or beside its path: never nearer by going on.
+                  if (along <= 0 || std::abs(across) >= reach_) return;
+                  const double t = along - std::sqrt(reach_ * reach_ - across * across);
+                  best = std::min(best, std::max(0.0, t));
+                });
   return best;
 }
 

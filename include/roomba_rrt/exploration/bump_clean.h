@@ -110,6 +110,7 @@ class BumpClean {
   bool started_ = false;
   robot::Velocity last_;
   int moves_ = 0;
+  long swept_before_ = 0;  ///< the map's swept cells when the move began
   double done_at_ = -1;
 };
 

@@ -10,8 +10,9 @@
 //     sweeps new floor ahead and nothing it has found is in its way; the floor it has not seen is
 //     taken as floor (optimistic), the IR light bumper or the bumper cuts the row short;
 //   - a shift: straight along y (north or south) to the next row line (the lines lie a swath
-//     apart through the start), or as far as it can go before something it found is in the way:
-//     the row after it runs along that obstacle, sweeping the strip beside it.
+//     apart through the start; a swath on from a row off the lines), or as far as it can go
+//     before something it found is in the way, and on to what it finds just beyond the line
+//     (kSnapToWall): the row after it runs along that obstacle, sweeping the strip beside it.
 // After a row the robot shifts to the side it sweeps towards (then the other); after a shift it
 // drives the row back the way the last row came (then the other way): boustrophedon. When
 // neither gives new floor (each move must promise `min_gain` of floor it has not swept within
@@ -51,6 +52,9 @@ struct BoustrophedonOptions {
   /// m: a centre is safe (a transit passes it) when its disc but for this rim is swept floor.
   double safe_rim = 0.03;
   int max_tries = 3;  ///< moves started from one cell in one heading
+  /// m: points found on both sides of a move's way, at most this far from it and as far ahead,
+  /// are guessed to be one straight wall across it (the move is left for last).
+  double wall_gap = 1.0;
 };
 
 /// One move: from `start`, in `heading`, with the transit that gets the robot there.
@@ -77,6 +81,10 @@ class OnlineBoustrophedon {
   /// is left to sweep, it is done.
   std::optional<Move> next(const SweptMap& map, const geometry::Point2& at);
 
+  /// `move` (the last next()'s) swept nothing: it is not started from its cell in its heading
+  /// again.
+  void sweptNothing(const SweptMap& map, const Move& move);
+
   /// The new floor (m², cells neither swept nor occupied) the disc sweeps going from `from` in
   /// `heading` for `length`, or less where it would come within reach of a point found on an
   /// obstacle; the floor under the disc at `from` does not count.
@@ -88,6 +96,11 @@ class OnlineBoustrophedon {
   const BoustrophedonOptions& options() const { return options_; }
   int backtracks() const { return backtracks_; }  ///< next() calls that had to backtrack
 
+  /// m: a shift goes on past its row line to a point found ahead less than this beyond it (the
+  /// IR light bumper sees 0.15 m beyond the bumper), so that the row after it runs along the
+  /// obstacle.
+  static constexpr double kSnapToWall = 0.1;
+
  private:
   /// A row from `from` in `heading`, if it promises enough and was not tried too often.
   std::optional<Move> row(const SweptMap& map, const geometry::Point2& from, Heading heading);
@@ -96,6 +109,11 @@ class OnlineBoustrophedon {
   std::optional<Move> shift(const SweptMap& map, const geometry::Point2& from, Heading side);
   /// The nearest move over safe centres, with its transit.
   std::optional<Move> backtrack(const SweptMap& map, const geometry::Point2& at);
+  /// While guessing walls: how far ahead of `from` (at most `max`) a straight wall crosses the way
+  /// in `heading`, guessed from the points found nearest to the way on each side, as far ahead of
+  /// `from` give or take kInLine; infinite without such points, or when not guessing.
+  double guessedWall(const SweptMap& map, const geometry::Point2& from, Heading heading,
+                     double max) const;
   /// Counts a try of `move`; returns it.
   Move chosen(const SweptMap& map, Move move);
   bool triedOut(const SweptMap& map, const geometry::Point2& from, Heading heading) const;
@@ -106,6 +124,7 @@ class OnlineBoustrophedon {
   Heading row_heading_;                          ///< the last row's
   Heading side_ = Heading::kNorth;               ///< the side the rows go towards
   std::unordered_map<std::int64_t, int> tries_;  ///< by cell and heading
+  bool guess_walls_ = true;  ///< next()'s first pass: walls between points found are guessed
   int backtracks_ = 0;
 };
 

@@ -15,6 +15,7 @@
 // one it missed.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -74,6 +75,18 @@ class SweptMap {
   std::size_t obstaclePoints() const { return point_count_; }
   /// Every point found on an obstacle (for tests and pictures; a copy).
   std::vector<geometry::Point2> points() const;
+  /// Calls `visit(point)` for the points found on obstacles in the cells that overlap the
+  /// rectangle [lo, hi] (some may lie a cell outside it).
+  template <class Visit>
+  void forPointsNear(const geometry::Point2& lo, const geometry::Point2& hi, Visit visit) const {
+    const Cell a = cellOf(lo), b = cellOf(hi);
+    for (int j = std::max(a.j, j0_); j <= std::min(b.j, j0_ + height_ - 1); ++j) {
+      for (int i = std::max(a.i, i0_); i <= std::min(b.i, i0_ + width_ - 1); ++i) {
+        if (!(flags({i, j}) & kOccupied)) continue;
+        for (const geometry::Point2& q : points_.at(key({i, j}))) visit(q);
+      }
+    }
+  }
 
   /// As nav_msgs/OccupancyGrid means it, over the cells held: swept cells free (0), occupied ones
   /// 100, the rest unknown (−1). What roomba_bt could publish, and what the tests look at.
