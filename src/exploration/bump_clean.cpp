@@ -12,7 +12,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// m beyond an IR return where it counts: a hair inside what it hit.
 constexpr double kInside = 1e-3;
 /// m: a drive ends this close to its end, or to a point found ahead.
-constexpr double kEndGap = 0.003;
+constexpr double kEndGap = OnlineBoustrophedon::kStopShort;
 /// rad: a turn before a drive ends this close to the move's heading.
 constexpr double kHeadingTolerance = 0.02;
 constexpr double kTurnGain = 8.0;     ///< 1/s: turning in place (as the cleaning tree)
@@ -104,9 +104,6 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
     if (phase_ == Phase::kBackUp) {
       plan(time, pose);  // backed into something as well: choose again from here
     } else {
-      std::fprintf(stderr, "%7.2f BUMP at (%.3f, %.3f, %.2f) %s%s in %s\n", time, pose.x, pose.y,
-                   pose.theta, bumper.left ? "L" : "", bumper.right ? "R" : "",
-                   stateName().c_str());
       phase_ = Phase::kBackUp;
       backup_from_ = at;
       move_since_ = time;
@@ -152,6 +149,8 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
 }
 
 void BumpClean::plan(double time, const robot::Pose2D& pose) {
+  if (move_ && map_.sweptCells() == swept_before_) planner_.sweptNothing(map_, *move_);
+  swept_before_ = map_.sweptCells();
   move_ = planner_.next(map_, {pose.x, pose.y});
   move_since_ = time;
   if (!move_) {
@@ -212,8 +211,6 @@ robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
           OnlineBoustrophedon::newFloor(map_, on_line, move.heading, kRowLookahead) < kRowMinGain;
   }
   if (end) {
-    std::fprintf(stderr, "%7.2f   end at (%.3f, %.3f) along %.3f free %.3f left %.3f\n", time,
-                 pose.x, pose.y, along, free, left);
     plan(time, pose);
     return {};
   }

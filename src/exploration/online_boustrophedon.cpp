@@ -14,6 +14,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr Heading kHeadings[] = {Heading::kEast, Heading::kWest, Heading::kNorth, Heading::kSouth};
 /// m: a shift that cannot go this far is no shift.
 constexpr double kLeastShift = 0.01;
+/// The centres a transit passes: safe ones, and (kBeenCost times as long, only where there is no
+/// other way) those the robot has been on but that lie within reach of what it found since.
+constexpr char kSafe = 1, kBeen = 2;
+constexpr double kBeenCost = 20;
 /// m: a transit may begin at a safe centre this near the robot (straight from where it stands).
 constexpr double kLeaveRadius = 0.1;
 /// m: two points found this near the same distance ahead, one on each side of the way, are
@@ -124,17 +128,25 @@ double OnlineBoustrophedon::nextRowLine(double y, Heading side) const {
   return line;
 }
 
+std::int64_t OnlineBoustrophedon::tryKey(const SweptMap& map, const geometry::Point2& from,
+                                         Heading heading) {
+  const Cell c = map.cellOf(from);
+  return (static_cast<std::int64_t>(c.i) * 1000003 + c.j) * 4 + static_cast<int>(heading);
+}
+
 bool OnlineBoustrophedon::triedOut(const SweptMap& map, const geometry::Point2& from,
                                    Heading heading) const {
-  const Cell c = map.cellOf(from);
-  const auto it =
-      tries_.find((static_cast<std::int64_t>(c.i) * 1000003 + c.j) * 4 + static_cast<int>(heading));
+  const auto it = tries_.find(tryKey(map, from, heading));
   return it != tries_.end() && it->second >= options_.max_tries;
 }
 
-Move OnlineBoustrophedon::chosen(const SweptMap& map, Move move) {
-  const Cell c = map.cellOf(move.start);
-  ++tries_[(static_cast<std::int64_t>(c.i) * 1000003 + c.j) * 4 + static_cast<int>(move.heading)];
+void OnlineBoustrophedon::sweptNothing(const SweptMap& map, const Move& move) {
+  tries_[tryKey(map, move.start, move.heading)] = options_.max_tries;
+}
+
+Move OnlineBoustrophedon::chosen(const SweptMap& map, Move move, double gain) {
+  move.gain = gain;
+  ++tries_[tryKey(map, move.start, move.heading)];
   last_ = move.kind;
   (move.kind == Move::Kind::kRow ? row_heading_ : side_) = move.heading;
   return move;
@@ -142,12 +154,12 @@ Move OnlineBoustrophedon::chosen(const SweptMap& map, Move move) {
 
 double OnlineBoustrophedon::guessedWall(const SweptMap& map, const geometry::Point2& from,
                                         Heading heading, double max) const {
-  if (!guess_walls_) return std::numeric_limits<double>::infinity();
+  constexpr double kNone = std::numeric_limits<double>::infinity();
   const geometry::Point2 u = unit(heading), v{-u.y, u.x};
   const double w = options_.wall_gap;
   // On each side of the way ahead, the point found nearest to it.
   struct Nearest {
-    double across = std::numeric_limits<double>::infinity(), along = 0;
+    double across = kNone, along = 0;
     geometry::Point2 point;
   } left, right;
   const geometry::Point2 a{from.x + max * u.x - w * v.x, from.y + max * u.y - w * v.y};
@@ -162,7 +174,7 @@ double OnlineBoustrophedon::guessedWall(const SweptMap& map, const geometry::Poi
                     });
   if (std::isinf(left.across) || std::isinf(right.across) ||
       std::abs(left.along - right.along) > kInLine) {
-    return std::numeric_limits<double>::infinity();
+    return kNone;
   }
   // No wall where the robot has been: the line between them crosses no swept floor.
   const double h = map.resolution();
@@ -171,79 +183,109 @@ double OnlineBoustrophedon::guessedWall(const SweptMap& map, const geometry::Poi
     const double t = static_cast<double>(k) / n;
     const geometry::Point2 p{left.point.x + t * (right.point.x - left.point.x),
                              left.point.y + t * (right.point.y - left.point.y)};
-    if (map.swept(map.cellOf(p))) return std::numeric_limits<double>::infinity();
+    if (map.swept(map.cellOf(p))) return kNone;
   }
   return std::min(left.along, right.along);
 }
 
-std::optional<Move> OnlineBoustrophedon::row(const SweptMap& map, const geometry::Point2& from,
-                                             Heading heading) {
+std::optional<OnlineBoustrophedon::Candidate> OnlineBoustrophedon::candidate(
+    const SweptMap& map, const geometry::Point2& from, Heading heading) const {
   if (triedOut(map, from, heading)) return std::nullopt;
-  Move move;
-  move.kind = Move::Kind::kRow;
-  move.start = from;
-  move.heading = heading;
-  const double wall =
-      guessedWall(map, from, heading, options_.lookahead + map.reach() + kInLine) - map.reach();
-  move.gain = newFloor(map, from, heading, std::min(options_.lookahead, wall));
-  if (move.gain < options_.min_gain) return std::nullopt;
-  return move;
+  const geometry::Point2 u = unit(heading);
+  Candidate c;
+  c.move.start = from;
+  c.move.heading = heading;
+  if (alongRows(heading)) {
+    c.move.kind = Move::Kind::kRow;
+    c.unguessed = c.guessed = newFloor(map, from, heading, options_.lookahead);
+    if (c.unguessed < options_.min_gain) return c;  // worth nothing, guess or not
+    const double wall =
+        guessedWall(map, from, heading, options_.lookahead + map.reach() + kInLine) - map.reach();
+    if (wall < options_.lookahead) c.guessed = newFloor(map, from, heading, wall);
+    return c;
+  }
+  c.move.kind = Move::Kind::kShift;
+  const double wanted = std::abs(nextRowLine(from.y, heading) - from.y);
+  c.move.length = wanted;  // the robot goes as far as it can: what it finds on the way may stop it
+  // To the line, or on to what it found just beyond it (kSnapToWall); the row after it counts.
+  auto promised = [&](double limit) {
+    double length = std::min(map.freeLength(from, u, wanted + kSnapToWall), limit);
+    // Stopped short of what it found, as the robot stops (a row along it is then not blocked
+    // by it, a hair nearer than reach).
+    length = length >= wanted + kSnapToWall ? wanted : length - kStopShort;
+    if (length < kLeastShift) return 0.0;
+    const geometry::Point2 end{from.x + length * u.x, from.y + length * u.y};
+    return newFloor(map, from, heading, length) +
+           std::max(newFloor(map, end, Heading::kEast, options_.lookahead),
+                    newFloor(map, end, Heading::kWest, options_.lookahead));
+  };
+  c.unguessed = c.guessed = promised(std::numeric_limits<double>::infinity());
+  if (c.unguessed < options_.min_gain) return c;  // worth nothing, guess or not
+  const double wall = guessedWall(map, from, heading, wanted + map.reach() + kInLine) - map.reach();
+  if (wall < wanted + kSnapToWall) c.guessed = promised(wall);
+  return c;
 }
 
-std::optional<Move> OnlineBoustrophedon::shift(const SweptMap& map, const geometry::Point2& from,
-                                               Heading side) {
-  if (triedOut(map, from, side)) return std::nullopt;
-  const double wanted = std::abs(nextRowLine(from.y, side) - from.y);
-  const geometry::Point2 u = unit(side);
-  const double wall = guessedWall(map, from, side, wanted + map.reach() + kInLine) - map.reach();
-  // To the line, or on to what it found just beyond it (kSnapToWall).
-  double length = std::min(map.freeLength(from, u, wanted + kSnapToWall), wall);
-  if (length >= wanted + kSnapToWall) length = wanted;
-  if (length < kLeastShift) return std::nullopt;
-  const geometry::Point2 end{from.x + length * u.x, from.y + length * u.y};
-  Move move;
-  move.kind = Move::Kind::kShift;
-  move.start = from;
-  move.heading = side;
-  move.length = wanted;  // the robot goes as far as it can: what it finds on the way may stop it
-  move.gain = newFloor(map, from, side, length) +
-              std::max(newFloor(map, end, Heading::kEast, options_.lookahead),
-                       newFloor(map, end, Heading::kWest, options_.lookahead));
-  if (move.gain < options_.min_gain) return std::nullopt;
-  return move;
+int OnlineBoustrophedon::tier(const Candidate& c) const {
+  if (c.guessed >= options_.first_gain) return 0;
+  if (c.guessed >= options_.min_gain) return 1;
+  if (c.unguessed >= options_.min_gain) return 2;
+  return kTiers;
 }
 
 std::optional<Move> OnlineBoustrophedon::next(const SweptMap& map, const geometry::Point2& at) {
-  // First with walls guessed straight, then (nothing left but the gaps) without.
-  for (const bool guess : {true, false}) {
-    guess_walls_ = guess;
-    // The boustrophedon from where the robot stands: after a shift (or at the start) the row
-    // back the way the last one came; after a row the shift towards the side the rows go, or the
-    // other.
-    if (!last_ || *last_ == Move::Kind::kShift) {
-      for (const Heading h : {opposite(row_heading_), row_heading_}) {
-        if (std::optional<Move> move = row(map, at, h)) return chosen(map, std::move(*move));
-      }
-    } else {
-      for (const Heading h : {side_, opposite(side_)}) {
-        if (std::optional<Move> move = shift(map, at, h)) return chosen(map, std::move(*move));
-      }
+  // The boustrophedon from where the robot stands. After a shift (or at the start) the row back
+  // the way the last one came, or the other way: the shift was chosen for it, so it need only
+  // promise half as much.
+  if (!last_ || *last_ == Move::Kind::kShift) {
+    const double least = last_ ? options_.min_gain / 2 : options_.min_gain;
+    for (const Heading h : {opposite(row_heading_), row_heading_}) {
+      std::optional<Candidate> c = candidate(map, at, h);
+      if (c && c->guessed >= least) return chosen(map, std::move(c->move), c->guessed);
     }
-    if (std::optional<Move> move = backtrack(map, at)) return move;
+  }
+  // After a row, the shift towards the side the rows go (or the other), and else backtracking,
+  // tier by tier: the moves that promise most first (walls guessed straight), then the rest, then
+  // (nothing left but the gaps between points found) without guessing.
+  std::optional<Candidate> shifts[2];
+  if (last_ && *last_ == Move::Kind::kRow) {
+    shifts[0] = candidate(map, at, side_);
+    shifts[1] = candidate(map, at, opposite(side_));
+  }
+  std::optional<Candidate> found[kTiers];
+  bool searched = false;
+  for (int t = 0; t < kTiers; ++t) {
+    for (std::optional<Candidate>& c : shifts) {
+      if (c && tier(*c) <= t) return chosen(map, std::move(c->move), gainOf(*c, t));
+    }
+    if (!searched) {
+      backtrack(map, at, found);
+      searched = true;
+    }
+    if (found[t]) {
+      ++backtracks_;
+      return chosen(map, std::move(found[t]->move), gainOf(*found[t], t));
+    }
   }
   return std::nullopt;
 }
 
-std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
-                                                   const geometry::Point2& at) {
-  ++backtracks_;
+void OnlineBoustrophedon::backtrack(const SweptMap& map, const geometry::Point2& at,
+                                    std::optional<Candidate> (&found)[kTiers]) const {
   const int width = map.columns(), height = map.rows();
   const int i0 = map.minColumn(), j0 = map.minRow();
   const double h = map.resolution();
   auto index = [&](const Cell& c) { return (c.j - j0) * width + (c.i - i0); };
   auto cellAt = [&](int k) { return Cell{i0 + k % width, j0 + k / width}; };
+  auto held = [&](const Cell& c) {
+    return c.i >= i0 && c.j >= j0 && c.i < i0 + width && c.j < j0 + height;
+  };
+  const Cell source_cell = map.cellOf(at);
+  if (!held(source_cell)) return;
+  const int source = index(source_cell);
 
-  // Safe centres: swept, not blocked, and no centre that is not swept within radius − rim.
+  // Safe centres: swept, not blocked, and no centre that is not swept within radius − rim; and
+  // (kBeen) every centre the robot has been on.
   geometry::OccupancyGrid unswept;
   unswept.width = width;
   unswept.height = height;
@@ -257,38 +299,41 @@ std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
   const double inner = std::max(0.0, map.radius() - options_.safe_rim) / h;
   std::vector<char> safe(static_cast<std::size_t>(width) * height, 0);
   for (int k = 0; k < width * height; ++k) {
-    safe[k] = distance[k] > inner * inner && !map.blocked(cellAt(k));
+    safe[k] = distance[k] > inner * inner && !map.blocked(cellAt(k)) ? kSafe
+              : map.visited(cellAt(k))                               ? kBeen
+                                                                     : 0;
   }
 
-  const Cell source_cell = map.cellOf(at);
-  auto held = [&](const Cell& c) {
-    return c.i >= i0 && c.j >= j0 && c.i < i0 + width && c.j < j0 + height;
-  };
-  if (!held(source_cell)) return std::nullopt;
-  const int source = index(source_cell);
-
-  // A move from centre `from` worth starting: the one that promises most of the four.
-  auto bestFrom = [&](const geometry::Point2& from) {
-    std::optional<Move> best;
-    for (const Heading heading : kHeadings) {
+  // Five points just beyond the disc's leading edge in each heading, ±60° round it.
+  geometry::Point2 edge[4][5];
+  for (int e = 0; e < 4; ++e) {
+    const geometry::Point2 u = unit(kHeadings[e]);
+    const double angles[] = {0.0, kPi / 6, -kPi / 6, kPi / 3, -kPi / 3};
+    for (int a = 0; a < 5; ++a) {
+      const double reach = map.radius() + h, c = std::cos(angles[a]), s = std::sin(angles[a]);
+      edge[e][a] = {reach * (u.x * c - u.y * s), reach * (u.x * s + u.y * c)};
+    }
+  }
+  // The moves from centre `from` worth starting, each kept in its tier when none nearer is.
+  auto consider = [&](const geometry::Point2& from, int k) {
+    for (int e = 0; e < 4; ++e) {
+      const Heading heading = kHeadings[e];
       // Only where the disc's leading edge touches floor it has not swept.
-      const geometry::Point2 u = unit(heading);
       bool unswept_ahead = false;
-      for (const double a : {0.0, kPi / 6, -kPi / 6, kPi / 3, -kPi / 3}) {
-        const double reach = map.radius() + h;
-        const geometry::Point2 p{from.x + reach * (u.x * std::cos(a) - u.y * std::sin(a)),
-                                 from.y + reach * (u.x * std::sin(a) + u.y * std::cos(a))};
-        if (map.unknown(map.cellOf(p))) {
-          unswept_ahead = true;
-          break;
-        }
+      for (const geometry::Point2& d : edge[e]) {
+        unswept_ahead = unswept_ahead || map.unknown(map.cellOf({from.x + d.x, from.y + d.y}));
       }
       if (!unswept_ahead) continue;
-      std::optional<Move> move =
-          alongRows(heading) ? row(map, from, heading) : shift(map, from, heading);
-      if (move && (!best || move->gain > best->gain)) best = std::move(move);
+      std::optional<Candidate> c = candidate(map, from, heading);
+      if (!c) continue;
+      const int t = tier(*c);
+      if (t == kTiers) continue;
+      // Nearer wins; at one centre, the one that promises most.
+      if (!found[t] || (found[t]->cell == k && gainOf(*c, t) > gainOf(*found[t], t))) {
+        c->cell = k;
+        found[t] = std::move(c);
+      }
     }
-    return best;
   };
 
   std::vector<double> cost(static_cast<std::size_t>(width) * height,
@@ -305,7 +350,7 @@ std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
   for (int dj = -near; dj <= near; ++dj) {
     for (int di = -near; di <= near; ++di) {
       const Cell c{source_cell.i + di, source_cell.j + dj};
-      if (!held(c) || !safe[index(c)]) continue;
+      if (!held(c) || safe[index(c)] != kSafe) continue;
       const double d = geometry::distance(at, map.centre(c));
       if (d > kLeaveRadius || d >= cost[index(c)]) continue;
       cost[index(c)] = d;
@@ -313,36 +358,16 @@ std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
       open.push({d, index(c)});
     }
   }
-  while (!open.empty()) {
+  while (!open.empty() && !found[0]) {
     const auto [d, k] = open.top();
     open.pop();
     if (d > cost[k]) continue;
     const Cell c = cellAt(k);
-    const geometry::Point2 from = k == source ? at : map.centre(c);
-    if (std::optional<Move> move = bestFrom(from)) {
-      if (k != source) {
-        std::vector<geometry::Point2> cells;
-        for (int p = k; p != source; p = parent[p]) cells.push_back(map.centre(cellAt(p)));
-        cells.push_back(at);
-        std::reverse(cells.begin(), cells.end());
-        // Shortcut: on from each corner to the farthest cell it sees over safe centres.
-        auto visible = [&](const geometry::Point2& a, const geometry::Point2& b) {
-          const int n = static_cast<int>(std::ceil(geometry::distance(a, b) / (h / 2)));
-          for (int s = 1; s < n; ++s) {
-            const double t = static_cast<double>(s) / n;
-            const Cell x = map.cellOf({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
-            const int xi = index(x);
-            if (xi != source && !safe[xi]) return false;
-          }
-          return true;
-        };
-        move->transit.push_back(cells.front());
-        for (std::size_t p = 2; p < cells.size(); ++p) {
-          if (!visible(move->transit.back(), cells[p])) move->transit.push_back(cells[p - 1]);
-        }
-        move->transit.push_back(cells.back());
-      }
-      return chosen(map, std::move(*move));
+    // A move starts on a safe centre, or where the robot stands.
+    if (k == source) {
+      consider(at, k);
+    } else if (safe[k] == kSafe) {
+      consider(map.centre(c), k);
     }
     for (int dj = -1; dj <= 1; ++dj) {
       for (int di = -1; di <= 1; ++di) {
@@ -354,7 +379,8 @@ std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
         // No corner cut past a centre that is not safe.
         if (di != 0 && dj != 0 && (!safe[index({c.i + di, c.j})] || !safe[index({c.i, c.j + dj})]))
           continue;
-        const double nd = d + h * (di != 0 && dj != 0 ? std::sqrt(2.0) : 1.0);
+        const double nd = d + h * (di != 0 && dj != 0 ? std::sqrt(2.0) : 1.0) *
+                                  (safe[nk] == kBeen ? kBeenCost : 1.0);
         if (nd < cost[nk]) {
           cost[nk] = nd;
           parent[nk] = k;
@@ -363,7 +389,31 @@ std::optional<Move> OnlineBoustrophedon::backtrack(const SweptMap& map,
       }
     }
   }
-  return std::nullopt;
+
+  // The transit to each: the cells' centres back to the robot, shortcut where a straight line
+  // crosses safe centres only.
+  auto visible = [&](const geometry::Point2& a, const geometry::Point2& b) {
+    const int n = static_cast<int>(std::ceil(geometry::distance(a, b) / (h / 2)));
+    for (int s = 1; s < n; ++s) {
+      const double t = static_cast<double>(s) / n;
+      const int x = index(map.cellOf({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}));
+      if (x != source && safe[x] != kSafe) return false;
+    }
+    return true;
+  };
+  for (std::optional<Candidate>& c : found) {
+    if (!c || c->cell == source) continue;
+    std::vector<geometry::Point2> cells;
+    for (int p = c->cell; p != source; p = parent[p]) cells.push_back(map.centre(cellAt(p)));
+    cells.push_back(at);
+    std::reverse(cells.begin(), cells.end());
+    std::vector<geometry::Point2>& transit = c->move.transit;
+    transit.push_back(cells.front());
+    for (std::size_t p = 2; p < cells.size(); ++p) {
+      if (!visible(transit.back(), cells[p])) transit.push_back(cells[p - 1]);
+    }
+    transit.push_back(cells.back());
+  }
 }
 
 }  // namespace roomba_rrt::exploration

@@ -22,8 +22,8 @@ SweptMap::SweptMap(const geometry::Point2& start, double radius, double clearanc
 }
 
 Cell SweptMap::cellOf(const geometry::Point2& p) const {
-  return {static_cast<int>(std::lround((p.x - start_.x) / resolution_)),
-          static_cast<int>(std::lround((p.y - start_.y) / resolution_))};
+  return {static_cast<int>(std::floor((p.x - start_.x) / resolution_ + 0.5)),
+          static_cast<int>(std::floor((p.y - start_.y) / resolution_ + 0.5))};
 }
 
 void SweptMap::hold(int i_lo, int j_lo, int i_hi, int j_hi) {
@@ -66,6 +66,7 @@ void SweptMap::sweep(const geometry::Point2& c) {
       }
     }
   }
+  at(cellOf(c)) |= kVisited;
 }
 
 void SweptMap::markObstacle(const geometry::Point2& p) {

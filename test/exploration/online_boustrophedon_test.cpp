@@ -134,7 +134,7 @@ TEST(OnlineBoustrophedon, first_row_goes_the_way_the_robot_faces_then_shifts_the
   EXPECT_EQ(move->heading, Heading::kWest);
 }
 
-TEST(OnlineBoustrophedon, a_shift_stopped_short_by_a_wall_is_followed_by_a_row_along_it) {
+TEST(OnlineBoustrophedon, a_shift_is_stopped_short_by_a_wall_it_found) {
   SweptMap map({1, 1}, kRadius, kClearance);
   OnlineBoustrophedon plan({1, 1}, 0.0);
   sweepAlong(map, {1, 1}, {3, 1});

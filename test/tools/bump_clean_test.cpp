@@ -79,7 +79,7 @@ TEST(BumpClean, finds_the_narrow_door_and_cleans_the_room_behind_it) {
   EXPECT_GE(out.run.reachable_final, 0.90);
 }
 
-TEST(BumpClean, finishes_and_stands_still_when_nothing_is_left) {
+TEST(BumpClean, finishes_when_no_floor_it_can_reach_is_left) {
   const world::World world = irOnly(ROOMBA_RRT_CONFIG_DIR "/roomba_world.yaml");  // the lab's
   const Outcome out = cleanByTouch(world, 1500);
   ASSERT_TRUE(std::isfinite(out.run.done_at)) << "still cleaning after 1500 s";

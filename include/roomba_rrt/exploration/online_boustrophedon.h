@@ -49,6 +49,8 @@ struct BoustrophedonOptions {
   double min_shift = 0.04;  ///< m: a shift to a line nearer than this goes to the next line
   double lookahead = 0.3;   ///< m of a move over which the new floor it promises is counted
   double min_gain = 0.02;   ///< m² of new floor a move must promise (a 0.34 m disc, 6 cm on)
+  /// m² a move must promise to be chosen before those that promise less (next()'s first pass)
+  double first_gain = 0.035;
   /// m: a centre is safe (a transit passes it) when its disc but for this rim is swept floor.
   double safe_rim = 0.03;
   int max_tries = 3;  ///< moves started from one cell in one heading
@@ -100,23 +102,42 @@ class OnlineBoustrophedon {
   /// IR light bumper sees 0.15 m beyond the bumper), so that the row after it runs along the
   /// obstacle.
   static constexpr double kSnapToWall = 0.1;
+  /// m: a row or a shift stops this short of where its disc would come within reach of a point
+  /// found ahead.
+  static constexpr double kStopShort = 0.003;
 
  private:
-  /// A row from `from` in `heading`, if it promises enough and was not tried too often.
-  std::optional<Move> row(const SweptMap& map, const geometry::Point2& from, Heading heading);
-  /// A shift from `from` towards `side` to the next row line (or as far as it can), if it and the
-  /// row after it promise enough.
-  std::optional<Move> shift(const SweptMap& map, const geometry::Point2& from, Heading side);
-  /// The nearest move over safe centres, with its transit.
-  std::optional<Move> backtrack(const SweptMap& map, const geometry::Point2& at);
-  /// While guessing walls: how far ahead of `from` (at most `max`) a straight wall crosses the way
-  /// in `heading`, guessed from the points found nearest to the way on each side, as far ahead of
-  /// `from` give or take kInLine; infinite without such points, or when not guessing.
+  /// next()'s tiers: moves that promise first_gain with walls guessed straight, min_gain so, and
+  /// min_gain without guessing.
+  static constexpr int kTiers = 3;
+  /// A row or a shift from `from` (its transit not yet known), what it promises with walls
+  /// guessed straight and without, and the map's cell (an index of backtrack()'s) it starts on.
+  struct Candidate {
+    Move move;
+    double guessed = 0, unguessed = 0;
+    int cell = -1;
+  };
+  /// The row (heading east or west) or shift (north or south) from `from`; none when it was
+  /// tried out there.
+  std::optional<Candidate> candidate(const SweptMap& map, const geometry::Point2& from,
+                                     Heading heading) const;
+  /// The tier `c` belongs to (kTiers: none).
+  int tier(const Candidate& c) const;
+  static double gainOf(const Candidate& c, int tier) { return tier < 2 ? c.guessed : c.unguessed; }
+  /// The nearest candidate of each tier over safe centres, with its transit, searching until one
+  /// of the first tier is found.
+  void backtrack(const SweptMap& map, const geometry::Point2& at,
+                 std::optional<Candidate> (&found)[kTiers]) const;
+  /// How far ahead of `from` (at most `max`) a straight wall crosses the way in `heading`,
+  /// guessed from the points found nearest to the way on each side (within wall_gap), as far
+  /// ahead of `from` give or take kInLine, when the line between them crosses no swept floor;
+  /// infinite without such points.
   double guessedWall(const SweptMap& map, const geometry::Point2& from, Heading heading,
                      double max) const;
-  /// Counts a try of `move`; returns it.
-  Move chosen(const SweptMap& map, Move move);
+  /// Counts a try of `move`, promising `gain`; returns it.
+  Move chosen(const SweptMap& map, Move move, double gain);
   bool triedOut(const SweptMap& map, const geometry::Point2& from, Heading heading) const;
+  static std::int64_t tryKey(const SweptMap& map, const geometry::Point2& from, Heading heading);
 
   BoustrophedonOptions options_;
   double line_y_;  ///< a row line's y (the start's)
@@ -124,7 +145,6 @@ class OnlineBoustrophedon {
   Heading row_heading_;                          ///< the last row's
   Heading side_ = Heading::kNorth;               ///< the side the rows go towards
   std::unordered_map<std::int64_t, int> tries_;  ///< by cell and heading
-  bool guess_walls_ = true;  ///< next()'s first pass: walls between points found are guessed
   int backtracks_ = 0;
 };
 

@@ -38,7 +38,8 @@ class SweptMap {
   SweptMap(const geometry::Point2& start, double radius, double clearance,
            double resolution = 0.025);
 
-  /// The robot's disc stands at `centre`: every cell whose centre lies in it is swept.
+  /// The robot's disc stands at `centre`: every cell whose centre lies in it is swept, and the
+  /// cell holding `centre` visited.
   void sweep(const geometry::Point2& centre);
   /// A point on an obstacle (an IR return, a bump): its cell is occupied and every centre within
   /// reach() of it blocked. A point within 5 mm of one already kept adds nothing.
@@ -58,6 +59,10 @@ class SweptMap {
   bool blocked(const Cell& c) const { return flags(c) & kBlocked; }
   /// Neither swept nor occupied.
   bool unknown(const Cell& c) const { return !(flags(c) & (kSwept | kOccupied)); }
+  /// The robot's centre has been in it: the robot can stand there (whatever it found since
+  /// within reach: it passed between two obstacles with less than the clearance to spare, or a
+  /// bump was placed a little off where it was).
+  bool visited(const Cell& c) const { return flags(c) & kVisited; }
 
   /// How far (m, at most `max`) the robot's centre can go from `from` along the unit vector
   /// `direction` before its disc comes within reach() of a point found on an obstacle: 0 when one
@@ -93,7 +98,7 @@ class SweptMap {
   geometry::OccupancyGrid grid() const;
 
  private:
-  static constexpr std::uint8_t kSwept = 1, kOccupied = 2, kBlocked = 4;
+  static constexpr std::uint8_t kSwept = 1, kOccupied = 2, kBlocked = 4, kVisited = 8;
   std::uint8_t flags(const Cell& c) const {
     const int i = c.i - i0_, j = c.j - j0_;
     if (i < 0 || j < 0 || i >= width_ || j >= height_) return 0;
