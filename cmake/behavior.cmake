@@ -93,6 +93,8 @@ target_link_libraries(roomba_coverage roomba_coverage_run)
 if(CATKIN_ENABLE_TESTING)
   # roomba_coverage --unknown in process: exploring and cleaning a world the robot does not know.
   roomba_rrt_gtest(explore_clean_test test/tools/explore_clean_test.cpp LINK roomba_coverage_run)
+  # The classic Roomba (bumper and IR light bumper, no lidar) cleaning a world it does not know.
+  roomba_rrt_gtest(bump_clean_test test/tools/bump_clean_test.cpp LINK roomba_coverage_run)
 endif()
 
 if(CATKIN_ENABLE_TESTING)

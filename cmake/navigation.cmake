@@ -68,6 +68,8 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/navigation/clean.test DEPENDENCIES nav_rostest)
   # A home it has never seen: roomba_mapper's /map, roomba_bt ~unknown explores, then cleans.
   add_rostest(test/navigation/clean_unknown.test DEPENDENCIES nav_rostest)
+  # The classic Roomba there: no lidar, roomba_bt ~unknown cleans by touch.
+  add_rostest(test/navigation/clean_by_touch.test DEPENDENCIES nav_rostest)
   # And navigation there: roomba_bt ~unknown with the navigation tree takes goals on that map.
   add_rostest(test/navigation/nav_unknown.test DEPENDENCIES nav_rostest)
   # With a stale map of the home (~known_map: its walls, not its furniture): goals, cleaning.

@@ -22,6 +22,7 @@
 #include "planner_ros.h"
 #include "reconfigure.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/bump_clean.h"
 #include "roomba_rrt/exploration/clean_known_map.h"
 #include "roomba_rrt/exploration/explore_clean.h"
 #include "roomba_rrt/exploration/navigate_unknown.h"
@@ -100,7 +101,12 @@ class NavBehavior final : public behavior::RoombaBehavior {
         listener_(buffer_),
         server_(nh_, "move_base", false),
         scans_(buffer_, settings_.global_frame, settings_.transform_timeout, "roomba_bt") {
-    if (settings_.unknown) {
+    if (settings_.unknown && settings_.cleaning && byTouch()) {
+      // No lidar: the robot's own short rangers (the IR light bumper's ir_bumper), by name.
+      for (const sensors::RangeSensorSpec& sensor : settings_.world.robot().sensors) {
+        touch_subs_.push_back(nh_.subscribe(sensor.name, 5, &NavBehavior::onScan, this));
+      }
+    } else if (settings_.unknown) {
       scan_sub_ = nh_.subscribe("scan", 5, &NavBehavior::onScan, this);
       if (settings_.known) {  // as map_server serves it: for rviz, beside the map being built
         known_map_pub_ = ros::NodeHandle("~").advertise<nav_msgs::OccupancyGrid>("known_map", 1,
@@ -178,6 +184,18 @@ class NavBehavior final : public behavior::RoombaBehavior {
       cmd = known_->tick(now, bumper_, pose, stamp);
       context_.state_name = known_->done() ? &kIdle : &known_->stateName();
       active = known_->activeTree();
+    } else if (settings_.cleaning && byTouch()) {
+      if (!touch_) startCleaningByTouch(pose);
+      scans_.drain(ros::Time::now());
+      cmd = touch_->tick(now, bumper_, pose);
+      context_.state_name = touch_->done() ? &kIdle : &touch_->stateName();
+      active = nullptr;
+      if (touch_->done() && !reported_) {
+        reported_ = true;
+        const double cell = touch_->map().resolution();
+        ROS_INFO("roomba_bt: cleaned by touch: %.1f m² swept, %d moves, done at %.0f s",
+                 touch_->map().sweptCells() * cell * cell, touch_->moves(), touch_->doneAt());
+      }
     } else if (settings_.cleaning) {
       if (!explore_) startExploring(pose);
       scans_.drain(ros::Time::now());  // a scan that came before its tf: into the map now
@@ -209,6 +227,19 @@ class NavBehavior final : public behavior::RoombaBehavior {
         settings_.trees);
     ROS_INFO("roomba_bt: exploring from (%.2f, %.2f) with the map built from %s", pose.x, pose.y,
              scan_sub_.getTopic().c_str());
+  }
+
+  /// ~unknown with a cleaning tree, no lidar (exploration::cleansByTouch) and no known map: the
+  /// classic Roomba's online boustrophedon from the robot's first pose.
+  bool byTouch() const {
+    return !settings_.known && exploration::cleansByTouch(settings_.world.robot());
+  }
+  void startCleaningByTouch(const robot::Pose2D& pose) {
+    world::RobotSpec robot = settings_.world.robot();
+    robot.initial_pose = pose;
+    touch_ = std::make_unique<exploration::BumpClean>(robot, params());
+    ROS_INFO("roomba_bt: no lidar: cleaning by touch from (%.2f, %.2f) with the bumper%s", pose.x,
+             pose.y, robot.sensors.empty() ? " alone" : " and the robot's short rangers");
   }
 
   /// ~unknown with a navigation tree: the map starts round the robot's first pose (from
@@ -258,16 +289,17 @@ class NavBehavior final : public behavior::RoombaBehavior {
 
   /// ~unknown: a scan into the map, with its frame's pose in the global frame at its stamp.
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-    if (!explore_ && !to_goal_ && !known_) return;  // no pose yet: nowhere to start the map
+    if (!explore_ && !to_goal_ && !known_ && !touch_) return;  // no pose yet: nowhere to start
     scans_.push(scan->header.frame_id, scan->header.stamp,
                 [this, scan](const geometry_msgs::Transform& transform) {
                   robot::Pose2D sensor;
                   std::string why = nodes::planarPose(transform, &sensor);
                   if (why.empty()) {
                     const mapping::ScanView view = nodes::scanView(*scan);
-                    why = explore_ ? explore_->addScan(sensor, view)
-                          : known_ ? known_->addScan(sensor, view)
-                                   : to_goal_->addScan(sensor, view);
+                    why = touch_     ? touch_->addScan(sensor, view)
+                          : explore_ ? explore_->addScan(sensor, view)
+                          : known_   ? known_->addScan(sensor, view)
+                                     : to_goal_->addScan(sensor, view);
                   }
                   if (!why.empty())
                     ROS_WARN_THROTTLE(5.0, "roomba_bt: scan skipped: %s", why.c_str());
@@ -510,6 +542,9 @@ class NavBehavior final : public behavior::RoombaBehavior {
   ros::Publisher known_map_pub_;  ///< ~known_map: the map given, latched
   /// ~unknown with a navigation tree: goals on the map it builds, from the first pose tf gives.
   std::unique_ptr<exploration::NavigateUnknown> to_goal_;
+  /// ~unknown with a cleaning tree and no lidar: cleaning by touch, from the first pose tf gives.
+  std::unique_ptr<exploration::BumpClean> touch_;
+  std::vector<ros::Subscriber> touch_subs_;  ///< its short rangers' scans
   ros::NodeHandle nh_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
@@ -657,6 +692,18 @@ std::unique_ptr<behavior::RoombaBehavior> makeNavBehavior(nodes::NodeParams& nod
         "scans on %s, the robot of %s, tree %s",
         s.known->file.c_str(), ros::NodeHandle().resolveName("scan").c_str(), world_file.c_str(),
         s.trees.clean.c_str());
+    return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
+  }
+  if (s.unknown && exploration::cleansByTouch(s.world.robot())) {
+    std::string topics;
+    for (const sensors::RangeSensorSpec& sensor : s.world.robot().sensors) {
+      topics += (topics.empty() ? "" : ", ") + ros::NodeHandle().resolveName(sensor.name);
+    }
+    ROS_INFO(
+        "roomba_bt: cleaning a home it has never seen by touch (~unknown, no sensor of the robot "
+        "of %s reaches %.0f m): the bumper%s%s, online boustrophedon",
+        world_file.c_str(), exploration::kLongRange, topics.empty() ? " alone" : " and ",
+        topics.c_str());
     return std::make_unique<NavBehavior>(params, seed, tree_file, std::move(s), output);
   }
   if (s.unknown) {

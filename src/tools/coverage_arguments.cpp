@@ -13,21 +13,29 @@ const char* const kUsage =
     "usage: roomba_coverage --behavior fsm|bt|coverage [--duration 600] [--seed 1] [--seeds N]\n"
     "                       [--world FILE] [--pose X,Y[,THETA]] [--crop X0,Y0,X1,Y1]\n"
     "                       [--config FILE] [--tree FILE] [--lag N] [--predict N]\n"
-    "                       [--csv traj.csv] [--png map.png] [--unknown [--known-map FILE]]\n"
+    "                       [--csv traj.csv] [--png map.png]\n"
+    "                       [--unknown [--known-map FILE] [--sensors S]]\n"
     "                       [--robots N[,N...]] [--plot coverage.png]\n"
     "       roomba_coverage --compare [--duration 600] [--seeds N] [--world FILE] [--pose ...]\n"
-    "                       [--crop ...] [--plot coverage.png] [--unknown [--known-map FILE]]\n"
+    "                       [--crop ...] [--plot coverage.png]\n"
+    "                       [--unknown [--known-map FILE] [--sensors S]]\n"
     "  --behavior  fsm (state machine), bt (behavior tree) or coverage (the cleaning tree,\n"
     "              config/roomba_coverage_tree.xml: planned rows; reports the coverage of the\n"
     "              reachable floor, the time to 90 / 95 / 99 % of it and the bumps)\n"
     "  --compare   fsm, bt and coverage side by side, on the reachable floor; --plot draws them\n"
     "  --unknown   with coverage: the robot does not know the world; it maps it with its lidar\n"
     "              (the world's sensors), explores to the nearest frontier until none is left,\n"
-    "              then cleans the map it built; with --compare a fourth column, unknown\n"
+    "              then cleans the map it built; with --compare a fourth column, unknown.\n"
+    "              A robot whose sensors reach less than 1 m (the IR light bumper) or that has\n"
+    "              none cleans by touch: boustrophedon rows into the unknown, cut short by the\n"
+    "              IR light bumper and the bumper, backtracking over the floor it swept\n"
     "  --known-map with --unknown: the map the robot is given (a map_server YAML or a world\n"
-    "              file, e.g. config/maps/apartment_unfurnished.yaml: its walls, not its\n"
+    "              file, e.g. config/maps/apartment_walls.yaml: its walls, not its\n"
     "              furniture): it plans its rows on it at once and plans the rest again when\n"
     "              its lidar shows them blocked; the column is known-map\n"
+    "  --sensors   with --unknown, the robot's range sensors instead of the world file's:\n"
+    "              lds (a 360° lidar), ir_bumper (the Roomba's IR light bumper, 0.15 m),\n"
+    "              lds,ir_bumper, or none (the bumper alone)\n"
     "  --duration  simulated seconds per run (default 600)\n"
     "  --seed      seed of the rotation angle (default 1); --seeds N runs seeds seed..seed+N-1\n"
     "  --world     empty (the lab's room, the default), furnished, apartment (a map), or a\n"
@@ -139,6 +147,20 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
       o.plot = value;
     } else if (flag == "--known-map") {
       o.known_map = value;
+    } else if (flag == "--sensors") {
+      o.sensors.emplace();
+      for (std::size_t begin = 0; value != "none" && begin <= value.size();) {
+        const std::size_t end = std::min(value.find(',', begin), value.size());
+        const std::string name = value.substr(begin, end - begin);
+        if (name != "lds" && name != "ir_bumper") {
+          throw std::invalid_argument(
+              "--sensors needs lds, ir_bumper, both (lds,ir_bumper) or "
+              "none, got '" +
+              value + "'");
+        }
+        o.sensors->push_back(name);
+        begin = end + 1;
+      }
     } else {
       throw std::invalid_argument("unknown option " + flag);
     }
@@ -160,6 +182,9 @@ CoverageArguments parseCoverageArguments(int argc, const char* const* argv) {
   if (!o.known_map.empty() && !o.unknown) {
     throw std::invalid_argument(
         "--known-map is the map a robot that does not know the world is given: add --unknown");
+  }
+  if (o.sensors && !o.unknown) {
+    throw std::invalid_argument("--sensors is what --unknown cleans with: add --unknown");
   }
   if (o.unknown && !o.tree.empty()) {
     throw std::invalid_argument(

@@ -2,6 +2,7 @@
 // what to write (CSV, picture, plot).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct CoverageArguments {
   /// --known-map: with --unknown, the map the robot is given (a map_server YAML or a world file,
   /// perhaps stale: clean_known_map.h; behaviour "known-map"); "" none.
   std::string known_map;
+  /// --sensors: the presets the robot carries instead of the world's sensors (lds, ir_bumper;
+  /// empty: none, the bumper alone); unset: the world's.
+  std::optional<std::vector<std::string>> sensors;
   bool help = false;  ///< -h or --help: print coverageUsage() and nothing else
 };
 

@@ -10,35 +10,40 @@
 #include "roomba_rrt/behavior/roomba_bt.h"
 #include "roomba_rrt/behavior/roomba_fsm.h"
 #include "roomba_rrt/coverage/coverage_leaves.h"
+#include "roomba_rrt/exploration/bump_clean.h"
 #include "roomba_rrt/exploration/clean_known_map.h"
 #include "roomba_rrt/exploration/explore_clean.h"
 #include "roomba_rrt/mapping/sensor_scan.h"
 #include "roomba_rrt/navigation/nav_bt.h"
 #include "roomba_rrt/sensors/scanner.h"
-#include "roomba_rrt/util/invalid_input.h"
 
 namespace roomba_rrt::tools {
 namespace {
 
 /// What drives the robot: the lab's FSM or BT (bumper in), the cleaning tree (bumper and pose
-/// in), or the cleaning of an unknown world (bumper, pose and the lidar's scans in).
+/// in), or the cleaning of an unknown world (bumper, pose and the lidar's scans in; without a
+/// lidar, the IR light bumper's: exploration::BumpClean).
 class Driver {
  public:
   Driver(const CoverageArguments& o, const behavior::RoombaParams& params, unsigned seed,
          const world::World& world, const Cleaning* cleaning) {
     if (o.behavior == "unknown" || o.behavior == "known-map") {
-      robot_ = world.robot();
-      if (robot_.sensors.empty()) {
-        throw util::InvalidInput("sensors",
-                                 "exploring an unknown world needs a range sensor on the "
-                                 "robot (a world file without `sensors:` has the lidar)");
-      }
       // The world's walls, furniture and map are never looked at: the robot and its start only
       // (and the map it is given).
+      robot_ = world.robot();
       if (o.behavior == "known-map") {
+        if (robot_.sensors.empty()) {
+          throw util::InvalidInput("sensors",
+                                   "cleaning with a known map needs a range sensor on the "
+                                   "robot (a world file without `sensors:` has the lidar)");
+        }
         known_ = std::make_unique<exploration::CleanKnownMap>(
             robot_, exploration::loadKnownMap(o.known_map), world.coverage_cell_size, params, seed,
             o.predictTicks() / params.rate, ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml");
+        return;
+      }
+      if (exploration::cleansByTouch(robot_)) {  // no lidar: bumper and IR light bumper
+        touch_ = std::make_unique<exploration::BumpClean>(robot_, params);
         return;
       }
       explore_ = std::make_unique<exploration::ExploreClean>(
@@ -59,7 +64,7 @@ class Driver {
         config, seed,
         o.tree.empty() ? std::string(ROOMBA_RRT_CONFIG_DIR "/roomba_coverage_tree.xml") : o.tree);
   }
-  bool sees() const { return explore_ != nullptr || known_ != nullptr; }
+  bool sees() const { return explore_ || known_ || touch_; }
   /// The trees are told the times as roomba_bt tells them: the tick's and the pose's.
   robot::Velocity tick(const robot::BumperState& bumper, const robot::Pose2D& pose, double now,
                        double pose_stamp, const std::vector<sensors::Scan>& scans,
@@ -70,8 +75,11 @@ class Driver {
         const sensors::RangeSensorSpec& spec = robot_.sensors[scan.sensor];
         const robot::Pose2D sensor = mapping::mountedPose(scan_pose, spec.mount);
         const mapping::ScanView view = mapping::scanView(spec, scan.ranges);
-        explore_ ? explore_->addScan(sensor, view) : known_->addScan(sensor, view);
+        explore_ ? explore_->addScan(sensor, view)
+        : known_ ? known_->addScan(sensor, view)
+                 : touch_->addScan(sensor, view);
       }
+      if (touch_) return touch_->tick(now, bumper, pose);
       return explore_ ? explore_->tick(now, bumper, pose, pose_stamp)
                       : known_->tick(now, bumper, pose, pose_stamp);
     }
@@ -80,22 +88,32 @@ class Driver {
     return tree_->tick(bumper, pose);
   }
   const std::string& stateName() const {
-    if (known_) return known_->stateName();
-    return explore_ ? explore_->stateName() : lab_ ? lab_->stateName() : tree_->stateName();
+    return known_     ? known_->stateName()
+           : touch_   ? touch_->stateName()
+           : explore_ ? explore_->stateName()
+           : lab_     ? lab_->stateName()
+                      : tree_->stateName();
   }
   behavior::RoombaState state() const {
-    if (known_) return known_->state();
-    return explore_ ? explore_->state() : lab_ ? lab_->state() : tree_->state();
+    return known_     ? known_->state()
+           : touch_   ? touch_->state()
+           : explore_ ? explore_->state()
+           : lab_     ? lab_->state()
+                      : tree_->state();
   }
   double exploredAt() const { return explore_ ? explore_->exploredAt() : -1; }
   int plans() const { return known_ ? known_->plans() : 0; }
+  /// By touch: simulated s when no move was left (negative: not yet, or not by touch).
+  double doneAt() const { return touch_ ? touch_->doneAt() : -1; }
+  bool byTouch() const { return touch_ != nullptr; }
 
  private:
   std::unique_ptr<exploration::CleanKnownMap> known_;
   std::unique_ptr<behavior::RoombaBehavior> lab_;
   std::unique_ptr<navigation::NavBt> tree_;
   std::unique_ptr<exploration::ExploreClean> explore_;
-  world::RobotSpec robot_;  ///< whose sensors explore_'s scans come from
+  std::unique_ptr<exploration::BumpClean> touch_;  ///< unknown, no lidar (cleansByTouch)
+  world::RobotSpec robot_;  ///< whose sensors explore_'s or touch_'s scans come from
 };
 
 /// Fraction of the reachable floor the robot has swept.
@@ -203,6 +221,8 @@ Run simulate(const CoverageArguments& o, const behavior::RoombaParams& params, u
   if (cleaning) run.reachable_final = reachableCoverage(simulator, *cleaning);
   run.explored_at = behavior.exploredAt() >= 0 ? behavior.exploredAt() : std::nan("");
   run.plans = behavior.plans();
+  run.by_touch = behavior.byTouch();
+  run.done_at = behavior.doneAt() >= 0 ? behavior.doneAt() : std::nan("");
   return run;
 }
 

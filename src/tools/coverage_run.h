@@ -31,7 +31,7 @@ bool finalIsCheckpoint(double duration, double step);
 /// Fractions of the reachable floor whose time a run reports (time to 90 / 95 / 99 %), and the
 /// multiples of the ideal time at which it reports the coverage.
 inline constexpr double kTargets[] = {0.90, 0.95, 0.99};
-inline constexpr double kIdealMultiples[] = {1.5, 2.0, 2.5};
+inline constexpr double kIdealMultiples[] = {1.5, 2.0, 2.5, 3.0};
 
 /// The FSM or the BT (the lab's tree, or --tree's) with the rotation angle's seed.
 std::unique_ptr<behavior::RoombaBehavior> makeBehavior(const CoverageArguments& o,
@@ -79,6 +79,10 @@ struct Run {
   double explored_at = 0;
   /// --known-map: plans made (1 + the times the rest was seen blocked); 0 otherwise.
   int plans = 0;
+  /// --unknown without a lidar (exploration::BumpClean): simulated s when no move was left and
+  /// the robot stood for good (NaN: not within the run).
+  bool by_touch = false;
+  double done_at = 0;
 };
 
 /// One run of one robot from the simulator's reset state; writes the CSV when `csv` is given and

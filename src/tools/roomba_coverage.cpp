@@ -25,6 +25,7 @@
 #include "coverage_run.h"
 #include "coverage_statistics.h"
 #include "progress_bar.h"
+#include "roomba_rrt/sensors/range_sensor.h"
 #include "roomba_rrt/sim/multi_robot_simulator.h"
 #include "roomba_rrt/sim/simulator.h"
 #include "roomba_rrt/util/statistics.h"
@@ -233,6 +234,8 @@ struct ReachableStatistics {
   std::vector<double> finals, bumps;
   std::vector<double> explored;  ///< unknown: when exploring ended (s)
   std::vector<double> plans;     ///< known-map: plans made per run
+  std::vector<double> done;      ///< unknown by touch: when no move was left (s)
+  bool by_touch = false;
   std::vector<std::vector<double>> curves;
 };
 
@@ -279,6 +282,8 @@ int runReachable(const CoverageArguments& options, const world::World& world,
       column.bumps.push_back(result.bumps);
       if (behavior == "unknown") column.explored.push_back(result.explored_at);
       if (behavior == "known-map") column.plans.push_back(result.plans);
+      if (result.by_touch) column.done.push_back(result.done_at);
+      column.by_touch = result.by_touch;
       column.curves.push_back(result.curve);
       progress.update(static_cast<int>(columns.size()) * o.seeds + i + 1);
     }
@@ -311,7 +316,11 @@ int runReachable(const CoverageArguments& options, const world::World& world,
   }
   std::printf("roomba_coverage: %s, %s, %.0f s of robot time per run, world %s\n", names.c_str(),
               seeds.c_str(), options.duration, worldLabel(options, world).c_str());
-  if (options.unknown && options.known_map.empty()) {
+  if (options.unknown && columns.back().by_touch) {
+    std::printf(
+        "  unknown: the robot starts with an empty map, its bumper and IR light bumper (no "
+        "lidar): online boustrophedon\n");
+  } else if (options.unknown && options.known_map.empty()) {
     std::printf(
         "  unknown: the robot starts with an empty map and its lidar, explores, then cleans\n");
   } else if (options.unknown) {
@@ -367,7 +376,11 @@ int runReachable(const CoverageArguments& options, const world::World& world,
     row(label, [t](const ReachableStatistics& s) { return secondsMeanStd(s.time_to[t]); });
   }
   row("bumps per run", [](const ReachableStatistics& s) { return countMeanStd(s.bumps); });
-  if (options.unknown && options.known_map.empty()) {
+  if (options.unknown && columns.back().by_touch) {
+    row("done at [s]", [](const ReachableStatistics& s) {
+      return s.done.empty() ? std::string("—") : secondsMeanStd(s.done);
+    });
+  } else if (options.unknown && options.known_map.empty()) {
     row("explored by [s]", [](const ReachableStatistics& s) {
       return s.explored.empty() ? std::string("—") : secondsMeanStd(s.explored);
     });
@@ -406,7 +419,15 @@ int run(int argc, char** argv) {
     std::fputs(coverageUsage(), stdout);
     return 0;
   }
-  const world::World world = loadToolWorld(o.world, o.pose, o.crop);
+  world::World world = loadToolWorld(o.world, o.pose, o.crop);
+  if (o.sensors) {  // presets on the robot in place of the world file's sensors
+    std::vector<sensors::RangeSensorSpec> specs;
+    for (const std::string& name : *o.sensors) {
+      specs.push_back(sensors::preset(name, world.robot().radius, "--sensors"));
+    }
+    sensors::validate(specs, "--sensors", world.robot().radius, world.step);
+    world.robot().sensors = specs;
+  }
   RoombaParams params = behavior::loadRoombaParams(o.config);
   params.rate = 1.0 / world.step;  // one behaviour tick per simulation step, as in the lab
   const std::string unknown = o.known_map.empty() ? "unknown" : "known-map";

@@ -560,6 +560,28 @@ TEST_F(CleanUnknown, explores_maps_and_cleans_90_percent_of_a_room_it_has_never_
       << client_->getState().getText();
 }
 
+class CleanByTouch : public Nav {};
+
+TEST_F(CleanByTouch, cleans_90_percent_of_a_room_it_has_never_seen_with_no_lidar) {
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  double coverage = 0;
+  ros::Subscriber coverage_sub = nh.subscribe<std_msgs::Float32>(
+      "/roomba_sim/coverage", 10, [&](const std_msgs::Float32::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        coverage = m->data;
+      });
+  // The furnished room's online boustrophedon is done in about 470 s of robot time.
+  ASSERT_TRUE(waitFor([&] { return robot_.state() == "Idle"; }, kCleanWallTimeout))
+      << "still " << robot_.state();
+  ros::Duration(0.5).sleep();  // the last coverage
+  std::lock_guard<std::mutex> lock(mutex);
+  std::printf("cleaning by touch: coverage %.1f %%, %d bumps\n", 100 * coverage, robot_.bumps());
+  EXPECT_GE(coverage, 0.90);
+  EXPECT_LE(robot_.bumps(), 20);
+  expectStandingStill(robot_);
+}
+
 class NavUnknown : public Nav {};
 
 TEST_F(NavUnknown, goals_across_a_room_it_has_never_seen_are_reached_without_a_bump) {

@@ -1,5 +1,6 @@
 // Cleaning a world the robot does not know (roomba_coverage --unknown), in process: the simulator,
 // the lidar, the mapper, exploring and cleaning (exploration/explore_clean.h), as a user runs it.
+// A robot without a lidar cleans by touch instead: bump_clean_test.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +8,6 @@
 
 #include "coverage_run.h"
 #include "roomba_rrt/behavior/roomba_params.h"
-#include "roomba_rrt/util/invalid_input.h"
 #include "roomba_rrt/world/world_file.h"
 
 namespace roomba_rrt::tools {
@@ -69,17 +69,6 @@ TEST(ExploreClean, finds_the_narrow_door_and_cleans_the_room_behind_it) {
   // Half the floor lies behind the door: without it no more than about 50 %.
   EXPECT_GE(out.run.reachable_final, 0.95);
   EXPECT_LE(out.run.bumps, 2);
-}
-
-TEST(ExploreClean, a_robot_without_a_range_sensor_is_refused_naming_the_field) {
-  world::World world = world::loadWorld(ROOMBA_RRT_CONFIG_DIR "/roomba_world_furnished.yaml");
-  world.robots.front().sensors.clear();
-  try {
-    cleanUnknown(world, 1);
-    FAIL() << "accepted a robot without sensors";
-  } catch (const util::InvalidInput& e) {
-    EXPECT_EQ(e.field(), "sensors");
-  }
 }
 
 }  // namespace
