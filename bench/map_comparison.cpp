@@ -11,7 +11,8 @@
 // region's extent (its bounding box's diagonal) apart. Both sides get the planning library's
 // CollisionChecker in `segments` mode: isFree for states, isSegmentFree (exact disc sweep against
 // every blocked cell's square) for motions, OMPL through a MotionValidator that calls it
-// (ompl_lab.h); the same range (20 cells), goal bias 0.05, goal tolerance 1e-3 and iteration cap.
+// (ompl_lab.h); the same range (20 cells), goal bias 0.05, goal tolerance 1e-3 and iteration cap;
+// ours draws from the fast stream, as the service does on a map (doc/planning.md).
 // RRT and RRT-Connect also face OMPL as a user sets it up: the same exact point check as its
 // validity checker and OMPL's DiscreteMotionValidator at a quarter cell (`ompl_user`).
 //   RRT, RRT-Connect   median CPU time per solve over pairs × runs, solved counts;
@@ -261,6 +262,7 @@ double routeLength(const rp::Problem& q, std::uint32_t seed, const RouteSpec& ro
   rp::PlannerOptions o;
   o.algorithm = route.algorithm;
   o.collision = rp::CollisionCheck::kSegments;
+  o.random_stream = rp::RandomStream::kFast;
   o.max_iterations = route.iterations;
   o.seed = seed;
   if (route.algorithm == rp::Algorithm::kRrtConnect) {
@@ -352,6 +354,7 @@ MapRows runMap(const std::string& yaml, const Config& cfg) {
 
   rp::PlannerOptions options;
   options.collision = rp::CollisionCheck::kSegments;
+  options.random_stream = rp::RandomStream::kFast;  // as the service plans on a map (scenario map)
   options.step = kStepCells * grid->resolution;
   options.goal_bias = kGoalBias;
   rows.step = options.step;

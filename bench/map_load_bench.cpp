@@ -197,6 +197,7 @@ PlanStats planAcross(const std::shared_ptr<const geometry::ClearanceMap>& map, i
   options.step = kStepCells * map->grid().resolution;
   options.goal_bias = 0.05;
   options.max_iterations = 2000000;
+  options.random_stream = planning::RandomStream::kFast;  // as the service plans on a map
   const auto pairs = roomba_rrt::bench::farApartPairs(*map, kRadius, plans);
   PlanStats stats;
   std::vector<double> ms;

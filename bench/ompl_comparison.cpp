@@ -175,12 +175,14 @@ struct RoomRow {
 constexpr double kUserCheckStep = 0.01;  // m
 
 /// The lab's options for the room: segments, step 0.2, bias 0.1, eps 1e-3, and `iterations`
-/// (the same limit for OMPL; enough that every pair is solved).
+/// (the same limit for OMPL; enough that every pair is solved); ours draws from the fast stream,
+/// as scenario `room` does.
 rp::PlannerOptions roomOptions(rp::Algorithm algorithm, int iterations = 20000) {
   rp::PlannerOptions options;
   options.algorithm = algorithm;
   options.collision = rp::CollisionCheck::kSegments;
   options.max_iterations = iterations;
+  options.random_stream = rp::RandomStream::kFast;  // as the service plans in the room
   return options;
 }
 

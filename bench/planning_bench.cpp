@@ -71,7 +71,7 @@ void BM_IterationOnLargeTree(benchmark::State& state, rp::NearestSearch nn) {
   for (int i = 0; i < tree.size(); ++i) nearest->add(tree.nodes[i], i);
   const rp::CollisionChecker checker(problem.obstacles, options.collision);
   const rp::FreeSpaceSampler sampler(problem.bounds, checker, options.max_rejection_tries);
-  rp::MatlabRandom random(7);
+  rp::PlanRandom random(7, rp::RandomStream::kMatlab);
   const rp::PlannerParts parts{random, sampler, *nearest, checker};
   for (auto _ : state) {
     const auto q_rand = rp::sampleTarget(problem, options, parts);

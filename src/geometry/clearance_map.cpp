@@ -53,18 +53,6 @@ ClearanceMap::Disc ClearanceMap::disc(double radius) const {
   return disc;
 }
 
-ClearanceMap::Cell ClearanceMap::classify(int i, int j, const Disc& disc) const {
-  const double d = squaredCellDistance(i, j);
-  if (d <= 0 || d < disc.blocked_below) return Cell::kBlocked;
-  return d > disc.free_above ? Cell::kFree : Cell::kNear;
-}
-
-bool ClearanceMap::insideExtent(const Point2& p, double radius) const {
-  const Rectangle e = grid_->extent();
-  return p.x - radius > e.min_x && p.x + radius < e.max_x && p.y - radius > e.min_y &&
-         p.y + radius < e.max_y;
-}
-
 template <class Hit>
 bool ClearanceMap::anySquare(int i0, int i1, int j0, int j1, Hit hit) const {
   i0 = std::max(i0, 0), j0 = std::max(j0, 0);
@@ -97,21 +85,6 @@ bool ClearanceMap::discFree(const Point2& p, const Disc& disc) const {
   });
 }
 
-bool ClearanceMap::clearAroundMidpoint(const Point2& a, const Point2& b, const Disc& disc) const {
-  // Every point of the segment is within half its length h of the midpoint m. With d the cells
-  // from m's cell's centre to the nearest blocked centre, every blocked square is farther than
-  // d − √2 cells from m (m is within √2/2 of its cell's centre, a square's points within √2/2 of
-  // its own), so the sweep is free when d − √2 > (h + radius) / resolution. Moved by a relative
-  // 1e-9 towards "sweep exactly", as disc(): rounding never certifies a step it should not.
-  const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-  // Inside the extent (both ends are), so inside the grid (clamped for rounding on its last edge).
-  const int i = std::min(grid_->column(m.x), grid_->width - 1);
-  const int j = std::min(grid_->row(m.y), grid_->height - 1);
-  const double d_sq = squaredCellDistance(i, j);
-  const double need = (0.5 * distance(a, b) + disc.radius) / grid_->resolution + std::sqrt(2.0);
-  return d_sq > need * need * (1 + 1e-9) + 1e-9;
-}
-
 bool ClearanceMap::sweepFree(const Point2& a, const Point2& b, const Disc& disc) const {
   // The extent is convex: both ends inside it keeps the whole segment inside.
   if (!insideExtent(a, disc.radius) || !insideExtent(b, disc.radius)) return false;
@@ -121,23 +94,11 @@ bool ClearanceMap::sweepFree(const Point2& a, const Point2& b, const Disc& disc)
   return clearAroundMidpoint(a, b, disc) || exactSweepFree(a, b, disc);
 }
 
-bool ClearanceMap::exactSweepFree(const Point2& a, const Point2& b, const Disc& disc) const {
+template <class Visit>
+bool ClearanceMap::forEachCellOnSegment(const Point2& a, const Point2& b, Visit visit) const {
   const OccupancyGrid& g = *grid_;
-  const Segment segment{a, b};
-  const int reach = disc.reach_cells;
-  // The window of squares looked at last, so a square is not tested twice for neighbour cells.
-  int last_i0 = 1, last_i1 = 0, last_j0 = 1, last_j1 = 0;
-  auto nearCell = [&](int i, int j) {
-    const int i0 = i - reach, i1 = i + reach, j0 = j - reach, j1 = j + reach;
-    const bool hit = anySquare(i0, i1, j0, j1, [&](int si, int sj) {
-      const bool seen = si >= last_i0 && si <= last_i1 && sj >= last_j0 && sj <= last_j1;
-      return !seen && segmentMeets(segment, g.square(si, sj), disc.radius);
-    });
-    last_i0 = i0, last_i1 = i1, last_j0 = j0, last_j1 = j1;
-    return hit;
-  };
-  // Walk the cells the segment passes through, column by column: in each column the rows between
-  // the segment's heights at the column's two sides.
+  // Column by column: in each column the rows between the segment's heights at the column's two
+  // sides.
   const double x_lo = std::min(a.x, b.x), x_hi = std::max(a.x, b.x);
   const int c0 = std::max(g.column(x_lo - kWalkSlack), 0);
   const int c1 = std::min(g.column(x_hi + kWalkSlack), g.width - 1);
@@ -155,18 +116,54 @@ bool ClearanceMap::exactSweepFree(const Point2& a, const Point2& b, const Disc& 
     const int r0 = std::max(g.row(y_lo - kWalkSlack), 0);
     const int r1 = std::min(g.row(y_hi + kWalkSlack), g.height - 1);
     for (int j = r0; j <= r1; ++j) {
-      switch (classify(i, j, disc)) {
-        case Cell::kFree:
-          break;
-        case Cell::kBlocked:
-          return false;
-        case Cell::kNear:
-          if (nearCell(i, j)) return false;
-          break;
-      }
+      if (!visit(i, j)) return false;
     }
   }
   return true;
+}
+
+bool ClearanceMap::exactSweepFree(const Point2& a, const Point2& b, const Disc& disc) const {
+  // 1. The cells the segment passes through, by the distance transform alone: a blocked cell ends
+  //    the sweep (a step through a wall meets the wall's own cells), and free cells need nothing
+  //    more. Most blocked steps end here, before any square is looked at. The cells in the band
+  //    are kept (the first kKept of them; beyond that the walk is made again).
+  constexpr int kKept = 64;
+  std::int32_t near_i[kKept], near_j[kKept];
+  int near = 0;
+  const bool clear = forEachCellOnSegment(a, b, [&](int i, int j) {
+    const Cell cell = classify(i, j, disc);
+    if (cell == Cell::kNear) {
+      if (near < kKept) near_i[near] = i, near_j[near] = j;
+      ++near;
+    }
+    return cell != Cell::kBlocked;
+  });
+  if (!clear) return false;
+  if (near == 0) return true;
+  // 2. The cells in the band along the walls: the segment against the blocked squares within the
+  //    radius of each, exactly. The window of squares looked at last is remembered, so a square is
+  //    not tested twice for neighbour cells.
+  const Segment segment{a, b};
+  const int reach = disc.reach_cells;
+  int last_i0 = 1, last_i1 = 0, last_j0 = 1, last_j1 = 0;
+  auto clearOfSquares = [&](int i, int j) {
+    const int i0 = i - reach, i1 = i + reach, j0 = j - reach, j1 = j + reach;
+    const bool hit = anySquare(i0, i1, j0, j1, [&](int si, int sj) {
+      const bool seen = si >= last_i0 && si <= last_i1 && sj >= last_j0 && sj <= last_j1;
+      return !seen && segmentMeets(segment, grid_->square(si, sj), disc.radius);
+    });
+    last_i0 = i0, last_i1 = i1, last_j0 = j0, last_j1 = j1;
+    return !hit;
+  };
+  if (near <= kKept) {
+    for (int k = 0; k < near; ++k) {
+      if (!clearOfSquares(near_i[k], near_j[k])) return false;
+    }
+    return true;
+  }
+  return forEachCellOnSegment(a, b, [&](int i, int j) {
+    return classify(i, j, disc) != Cell::kNear || clearOfSquares(i, j);
+  });
 }
 
 }  // namespace roomba_rrt::geometry

@@ -9,7 +9,7 @@
 
 namespace roomba_rrt::planning {
 
-PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRandom& random,
+PlanResult plan(const Problem& problem, const PlannerOptions& options, PlanRandom& random,
                 const std::function<void(const Tree&, int)>& on_progress, int progress_every,
                 const std::function<bool()>& stop_requested) {
   const auto started = std::chrono::steady_clock::now();
@@ -69,8 +69,15 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRan
 PlanResult plan(const Problem& problem, const PlannerOptions& options,
                 const std::function<void(const Tree&, int)>& on_progress, int progress_every,
                 const std::function<bool()>& stop_requested) {
-  MatlabRandom random(options.seed);
+  PlanRandom random(options.seed, options.random_stream);
   return plan(problem, options, random, on_progress, progress_every, stop_requested);
+}
+
+PlanResult plan(const Problem& problem, const PlannerOptions& options, MatlabRandom& random,
+                const std::function<void(const Tree&, int)>& on_progress, int progress_every,
+                const std::function<bool()>& stop_requested) {
+  PlanRandom continued(random);
+  return plan(problem, options, continued, on_progress, progress_every, stop_requested);
 }
 
 }  // namespace roomba_rrt::planning

@@ -20,6 +20,10 @@ constexpr std::array<std::pair<const char*, NearestSearch>, 2> kNearestSearches{
     {"index", NearestSearch::kIndex},
     {"brute_force", NearestSearch::kBruteForce},
 }};
+constexpr std::array<std::pair<const char*, RandomStream>, 2> kRandomStreams{{
+    {"matlab", RandomStream::kMatlab},
+    {"fast", RandomStream::kFast},
+}};
 
 template <typename Enum, std::size_t N>
 std::optional<Enum> parse(const std::array<std::pair<const char*, Enum>, N>& table,
@@ -49,8 +53,12 @@ std::optional<CollisionCheck> parseCollisionCheck(const std::string& name) {
 std::optional<NearestSearch> parseNearestSearch(const std::string& name) {
   return parse(kNearestSearches, name);
 }
+std::optional<RandomStream> parseRandomStream(const std::string& name) {
+  return parse(kRandomStreams, name);
+}
 std::string toString(Algorithm algorithm) { return name(kAlgorithms, algorithm); }
 std::string toString(CollisionCheck collision) { return name(kCollisionChecks, collision); }
 std::string toString(NearestSearch nearest) { return name(kNearestSearches, nearest); }
+std::string toString(RandomStream stream) { return name(kRandomStreams, stream); }
 
 }  // namespace roomba_rrt::planning

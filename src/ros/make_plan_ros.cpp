@@ -27,6 +27,7 @@ planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults) {
   o.step = kStep;
   o.max_iterations = std::min(kMaxIterations, defaults.max_iterations_cap);
   o.smooth = true;
+  o.random_stream = planning::RandomStream::kFast;  // a map: no MATLAB stream to match
   return o;
 }
 

@@ -17,7 +17,7 @@ namespace roomba_rrt::planner_node {
 /// How make_plan plans (the node's ~seed, ~goal_tolerance, ~max_planning_time and
 /// ~max_iterations_cap apply; the rest is fixed so a map plans well without a request saying
 /// how): RRT-Connect, every edge checked whole, steps of 0.5 m, up to 200 000 iterations, the
-/// path shortcut-smoothed (move_base's planners answer short paths).
+/// path shortcut-smoothed (move_base's planners answer short paths), drawn from the fast stream.
 planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults);
 
 /// A make_plan request as the library's input, or why it cannot be planned.

@@ -170,6 +170,19 @@ std::string resolveOptions(const PlanPath::Request& r, const NodeDefaults& defau
     }
     options->collision = *collision;
   }
+  // The lab's stream wherever the lab's MATLAB code could pose the same problem (its scenarios,
+  // explicit discs and bounds), so answers stay comparable with MATLAB's and with earlier
+  // versions; the fast one in the room and on maps, which the lab never had.
+  options->random_stream = r.scenario == "room" || r.scenario == "map"
+                               ? planning::RandomStream::kFast
+                               : planning::RandomStream::kMatlab;
+  if (!r.random_stream.empty()) {
+    const auto stream = planning::parseRandomStream(r.random_stream);
+    if (!stream) {
+      return "random_stream: unknown '" + r.random_stream + "' (expected matlab or fast)";
+    }
+    options->random_stream = *stream;
+  }
   return "";
 }
 

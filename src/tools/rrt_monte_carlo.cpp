@@ -62,6 +62,7 @@ void printJson(const std::vector<Job>& jobs, const rp::PlannerOptions& o, std::u
     std::cout << "  {\"scenario\": \"" << jobs[i].scenario << "\", \"runs\": " << s.runs
               << ", \"seed\": " << seed << ", \"algorithm\": \"" << rp::toString(o.algorithm)
               << "\", \"collision_check\": \"" << rp::toString(o.collision)
+              << "\", \"random_stream\": \"" << rp::toString(o.random_stream)
               << "\", \"success_pct\": " << jsonNumber(s.success_pct)
               << ", \"mean_length\": " << jsonNumber(s.mean_length)
               << ", \"std_length\": " << jsonNumber(s.std_length)
@@ -76,10 +77,10 @@ void printJson(const std::vector<Job>& jobs, const rp::PlannerOptions& o, std::u
 void printTable(const std::vector<Job>& jobs, const rp::PlannerOptions& o, int runs,
                 std::uint32_t seed) {
   std::printf(
-      "RRT Monte Carlo: %d runs per scenario, seed %u, algorithm %s, collision %s, "
+      "RRT Monte Carlo: %d runs per scenario, seed %u (%s stream), algorithm %s, collision %s, "
       "p = %g, step %g, max iterations %d\n",
-      runs, seed, rp::toString(o.algorithm).c_str(), rp::toString(o.collision).c_str(), o.goal_bias,
-      o.step, o.max_iterations);
+      runs, seed, rp::toString(o.random_stream).c_str(), rp::toString(o.algorithm).c_str(),
+      rp::toString(o.collision).c_str(), o.goal_bias, o.step, o.max_iterations);
   std::printf("%-9s %8s %12s %11s %11s %10s %9s\n", "scenario", "solved %", "mean length",
               "std length", "mean iters", "std iters", "seconds");
   for (const Job& job : jobs) {
@@ -113,7 +114,7 @@ int main(int argc, char** argv) {
     }
     if (args.tool.count("--world") || args.tool.count("--map")) {
       std::string name;
-      rp::Problem problem = tools::worldProblem(args.tool, &name);
+      rp::Problem problem = tools::worldProblem(args, &name);
       jobs.push_back({name, std::move(problem), {}});
     } else {
       const auto scenarios = rp::loadScenarios(args.scenario_file);

@@ -236,7 +236,7 @@ int main(int argc, char** argv) {
     if (args.tool.count("--width")) width = tools::parseIntFlag("--width", args.tool["--width"]);
     if (width < 300 || width > 8000) throw std::invalid_argument("--width: must be in [300, 8000]");
     if (args.tool.count("--world") || args.tool.count("--map")) {
-      problem = tools::worldProblem(args.tool, &args.scenario);
+      problem = tools::worldProblem(args, &args.scenario);
     } else {
       const auto scenarios = rp::loadScenarios(args.scenario_file);
       const auto found = scenarios.find(args.scenario);

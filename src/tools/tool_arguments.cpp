@@ -80,6 +80,11 @@ planning::Point2 parsePointFlag(const std::string& flag, const std::string& valu
           parseDoubleFlag(flag, value.substr(comma + 1))};
 }
 
+planning::Problem worldProblem(ToolArguments& args, std::string* name) {
+  if (!args.random_stream_given) args.options.random_stream = planning::RandomStream::kFast;
+  return worldProblem(args.tool, name);
+}
+
 planning::Problem worldProblem(std::map<std::string, std::string>& tool, std::string* name) {
   const bool map = tool.count("--map") > 0;
   if (map && tool.count("--world")) bad("--map", "give --world or --map, not both");
@@ -160,6 +165,9 @@ ToolArguments parseToolArguments(int argc, const char* const* argv,
       o.goal_tolerance = parseDoubleFlag(flag, value);
     } else if (flag == "--max-iterations") {
       o.max_iterations = parseIntFlag(flag, value);
+    } else if (flag == "--random-stream") {
+      o.random_stream = parseEnumFlag(flag, value, &planning::parseRandomStream);
+      args.random_stream_given = true;
     } else if (flag == "--seed") {
       const double seed = parseDoubleFlag(flag, value);
       if (seed < 0 || seed > UINT32_MAX || seed != std::floor(seed)) {
@@ -186,6 +194,8 @@ std::string commonFlagsHelp() {
          "  --max-iterations N       iterations per run (default 1000)\n"
          "  --goal-tolerance E       epsilon (default 1e-3)\n"
          "  --seed S                 MATLAB rng(S) seed (default 42)\n"
+         "  --random-stream R        matlab (MATLAB's rng(S)) or fast (xoshiro256+); default:\n"
+         "                           matlab for --scenario, fast for --world and --map\n"
          "  --smooth                 shortcut-smooth each path found\n";
 }
 

@@ -46,8 +46,14 @@ struct ToolArguments {
   std::string scenario_file;         ///< --scenarios FILE (default: defaultScenarioFile())
   planning::PlannerOptions options;  ///< --algorithm --collision --nearest --step --goal-bias
                                      ///< --max-iterations --goal-tolerance --seed --smooth
+                                     ///< --random-stream
   std::map<std::string, std::string> tool;  ///< the tool's own flags ("--runs" -> "200")
+  bool random_stream_given = false;         ///< --random-stream was on the command line
 };
+
+/// worldProblem() of args.tool; and the fast stream unless --random-stream chose one (a room or
+/// a map is no lab scenario: there is no MATLAB stream to match).
+planning::Problem worldProblem(ToolArguments& args, std::string* name);
 
 /// Parses `--flag value` pairs and the switches `--smooth` and the tool's `switches` (stored as
 /// "1"). `tool_flags` are the tool's own flags that take a value. Throws std::invalid_argument

@@ -89,6 +89,7 @@ PlanPath::Request makeRequest(FuzzedDataProvider& in) {
   r.seed = in.ConsumeIntegral<std::uint32_t>();
   r.algorithm = pickName(in, {"", "rrt", "rrt_connect", "rrt_star"});
   r.collision_check = pickName(in, {"", "points", "segments"});
+  r.random_stream = pickName(in, {"", "matlab", "fast"});
   r.smooth = in.ConsumeBool();
   return r;
 }
@@ -133,6 +134,7 @@ PlanPath::Request parseRequest(const std::string& text, bool* make_plan) {
     if (key == "seed") r.seed = v.as<std::uint32_t>();
     if (key == "algorithm") r.algorithm = v.as<std::string>();
     if (key == "collision_check") r.collision_check = v.as<std::string>();
+    if (key == "random_stream") r.random_stream = v.as<std::string>();
     if (key == "smooth") r.smooth = v.as<bool>();
   }
   return r;

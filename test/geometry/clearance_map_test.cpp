@@ -160,6 +160,41 @@ TEST(ClearanceMap, sweep_queries_agree_with_brute_force) {
   EXPECT_GT(blocked, 2000);
 }
 
+TEST(ClearanceMap, long_sweeps_along_a_wall_agree_with_brute_force) {
+  // Steps of 60 to 180 cells running beside a straight wall, about a radius from it: their cells
+  // lie in the band along the wall, more of them than the sweep keeps from its first walk.
+  auto grid = std::make_shared<OccupancyGrid>();
+  grid->width = 200;
+  grid->height = 40;
+  grid->resolution = 0.05;
+  grid->origin = {-0.3, 1.1};
+  grid->cells.assign(200 * 40, OccupancyGrid::kFree);
+  for (int i = 0; i < 200; ++i) grid->cells[10 * 200 + i] = OccupancyGrid::kOccupied;
+  grid->cells[10 * 200 + 150] = OccupancyGrid::kFree;     // a notch in the wall
+  grid->cells[11 * 200 + 70] = OccupancyGrid::kOccupied;  // a bump on it
+  const ClearanceMap map(grid);
+  const double wall_top = grid->origin.y + 11 * grid->resolution;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  int free = 0, blocked = 0;
+  for (double radius : {0.12, 0.17}) {
+    const ClearanceMap::Disc disc = map.disc(radius);
+    for (int n = 0; n < 300; ++n) {
+      const double length = 3 + 6 * u(rng);
+      const double x0 = grid->origin.x + 0.3 + u(rng) * (9.4 - length);
+      const Point2 a{x0, wall_top + radius + (u(rng) - 0.4) * 0.1};
+      const Point2 b{x0 + length, a.y + (u(rng) - 0.5) * 0.05};
+      const double d = bruteSegmentDistance(*grid, {a, b}, false);
+      if (std::abs(d - radius) < 1e-9) continue;
+      ASSERT_EQ(map.sweepFree(a, b, disc), d > radius)
+          << "radius " << radius << " from " << a.x << "," << a.y << " to " << b.x << "," << b.y;
+      (d > radius ? free : blocked)++;
+    }
+  }
+  EXPECT_GT(free, 100);
+  EXPECT_GT(blocked, 100);
+}
+
 TEST(ClearanceMap, a_disc_passes_a_gap_wider_than_it_and_not_a_narrower_one) {
   // A wall across the map with a gap three cells (0.3 m) wide.
   auto grid = std::make_shared<OccupancyGrid>(gridFrom({

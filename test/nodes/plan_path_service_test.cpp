@@ -60,6 +60,21 @@ TEST(PlanPathService, the_same_request_gives_the_same_path) {
   EXPECT_EQ(first.length, second.length);
 }
 
+TEST(PlanPathService, the_labs_scenarios_draw_from_matlabs_stream_unless_asked_otherwise) {
+  PlanPath::Request request = scenarioRequest("b");
+  request.seed = 3;
+  const PlanPath::Response by_default = callPlanPath(request);
+  request.random_stream = "matlab";
+  const PlanPath::Response matlab = callPlanPath(request);
+  request.random_stream = "fast";
+  const PlanPath::Response fast = callPlanPath(request);
+  ASSERT_TRUE(by_default.success && matlab.success) << by_default.message << matlab.message;
+  EXPECT_EQ(by_default.iterations, matlab.iterations);
+  EXPECT_EQ(by_default.length, matlab.length);
+  ASSERT_TRUE(fast.success) << fast.message;
+  EXPECT_NE(fast.length, matlab.length);  // another stream, another tree
+}
+
 TEST(PlanPathService, tree_markers_hold_two_points_per_edge_and_replace_the_previous_plan) {
   ASSERT_TRUE(callPlanPath(scenarioRequest("b")).success);  // three obstacles
   const PlanPath::Response response = callPlanPath(scenarioRequest("a"));
@@ -202,6 +217,7 @@ std::vector<BadRequest> badRequests() {
        "max_iterations"},
       {"unknown algorithm", [](R& r) { r.algorithm = "dijkstra"; }, "algorithm"},
       {"unknown collision mode", [](R& r) { r.collision_check = "boxes"; }, "collision_check"},
+      {"unknown random stream", [](R& r) { r.random_stream = "mt19937"; }, "random_stream"},
       {"unknown scenario", [](R& r) { r = scenarioRequest("z"); }, "scenario"},
       {"scenario with explicit geometry", [](R& r) { r.scenario = "a"; }, "scenario"},
   };

@@ -82,6 +82,19 @@ TEST(Room, the_issue_example_goes_around_the_bench_keeping_the_disc_clear) {
   EXPECT_NE(findMarker(*markers, "obstacles", 1), nullptr);  // the bin
 }
 
+TEST(Room, plans_from_the_fast_stream_unless_the_request_asks_for_matlabs) {
+  PlanPath::Request request = roomRequest(3.0, 4.55);
+  const PlanPath::Response by_default = callPlanPath(request);
+  request.random_stream = "fast";
+  const PlanPath::Response fast = callPlanPath(request);
+  request.random_stream = "matlab";
+  const PlanPath::Response matlab = callPlanPath(request);
+  ASSERT_TRUE(by_default.success && fast.success && matlab.success);
+  EXPECT_EQ(by_default.iterations, fast.iterations);
+  EXPECT_EQ(by_default.length, fast.length);
+  EXPECT_NE(matlab.length, fast.length);
+}
+
 TEST(Room, a_goal_inside_the_sofa_is_refused_naming_goal) {
   const PlanPath::Response response = callPlanPath(roomRequest(0.8, 0.3));
   EXPECT_FALSE(response.success);

@@ -4,6 +4,8 @@
 // without looking at a square.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -74,6 +76,10 @@ class ClearanceMap {
   bool clearAroundMidpoint(const Point2& a, const Point2& b, const Disc& disc) const;
   /// The exact sweep: the cells the segment passes through, and the squares near those in the band.
   bool exactSweepFree(const Point2& a, const Point2& b, const Disc& disc) const;
+  /// Calls visit(i, j) for every cell the segment a-b passes through (and any within kWalkSlack of
+  /// it), column by column, until it returns false; false if it did.
+  template <class Visit>
+  bool forEachCellOnSegment(const Point2& a, const Point2& b, Visit visit) const;
   /// Whether hit(i, j) holds for a blocked cell beside a free one among columns [i0, i1] × rows
   /// [j0, j1] (clipped to the grid).
   template <class Hit>
@@ -84,5 +90,35 @@ class ClearanceMap {
   std::vector<std::int32_t> distance_;
   FreeTiles free_tiles_;
 };
+
+// Inline: every query asks them, and calls within a shared library are not inlined otherwise.
+
+inline ClearanceMap::Cell ClearanceMap::classify(int i, int j, const Disc& disc) const {
+  const double d = squaredCellDistance(i, j);
+  if (d <= 0 || d < disc.blocked_below) return Cell::kBlocked;
+  return d > disc.free_above ? Cell::kFree : Cell::kNear;
+}
+
+inline bool ClearanceMap::insideExtent(const Point2& p, double radius) const {
+  const Rectangle e = grid_->extent();
+  return p.x - radius > e.min_x && p.x + radius < e.max_x && p.y - radius > e.min_y &&
+         p.y + radius < e.max_y;
+}
+
+inline bool ClearanceMap::clearAroundMidpoint(const Point2& a, const Point2& b,
+                                              const Disc& disc) const {
+  // Every point of the segment is within half its length h of the midpoint m. With d the cells
+  // from m's cell's centre to the nearest blocked centre, every blocked square is farther than
+  // d − √2 cells from m (m is within √2/2 of its cell's centre, a square's points within √2/2 of
+  // its own), so the sweep is free when d − √2 > (h + radius) / resolution. Moved by a relative
+  // 1e-9 towards "sweep exactly", as disc(): rounding never certifies a step it should not.
+  const Point2 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  // Inside the extent (both ends are), so inside the grid (clamped for rounding on its last edge).
+  const int i = std::min(grid_->column(m.x), grid_->width - 1);
+  const int j = std::min(grid_->row(m.y), grid_->height - 1);
+  const double d_sq = squaredCellDistance(i, j);
+  const double need = (0.5 * distance(a, b) + disc.radius) / grid_->resolution + std::sqrt(2.0);
+  return d_sq > need * need * (1 + 1e-9) + 1e-9;
+}
 
 }  // namespace roomba_rrt::geometry

@@ -5,7 +5,7 @@
 
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/geometry.h"
-#include "roomba_rrt/planning/lab/matlab_random.h"
+#include "roomba_rrt/planning/plan_random.h"
 
 namespace roomba_rrt::planning {
 
@@ -28,7 +28,10 @@ class FreeSpaceSampler {
     }
   }
 
-  std::optional<Point2> sample(MatlabRandom& random) const {
+  /// `Random`: PlanRandom, MatlabRandom or FastRandom (anything with uniform() and uniform(lo,
+  /// hi)).
+  template <typename Random>
+  std::optional<Point2> sample(Random& random) const {
     for (int attempt = 0; attempt < max_tries_; ++attempt) {
       if (tiles_) {
         // A tile may stick out of the bounds (a request's bounds smaller than the map).
@@ -44,14 +47,16 @@ class FreeSpaceSampler {
   int maxTries() const { return max_tries_; }
 
  private:
-  Point2 boundsPoint(MatlabRandom& random) const {
+  template <typename Random>
+  Point2 boundsPoint(Random& random) const {
     // The lab's order: x first, then y, each from its own rand().
     const double x = random.uniform(bounds_.x_min, bounds_.x_max);
     const double y = random.uniform(bounds_.y_min, bounds_.y_max);
     return {x, y};
   }
   /// A point of a random free tile: the tile, then x, then y within it.
-  Point2 tilePoint(MatlabRandom& random) const {
+  template <typename Random>
+  Point2 tilePoint(Random& random) const {
     const double t = random.uniform(), u = random.uniform(), v = random.uniform();
     return tiles_->point(t, u, v);
   }

@@ -24,6 +24,11 @@ enum class NearestSearch {
   kBruteForce,  ///< "brute_force": the lab's linear scan, kept as the reference.
 };
 
+enum class RandomStream {
+  kMatlab,  ///< "matlab": MATLAB's rng(seed) stream (MT19937), the lab's answers bit for bit.
+  kFast,    ///< "fast": xoshiro256+ (FastRandom), seeded in nanoseconds; not MATLAB's numbers.
+};
+
 /// The largest `max_iterations` the library accepts by default (a 10^6-iteration plan peaks at
 /// 41 MB resident, tree and index included). Callers may pass their own cap to validate().
 inline constexpr int kDefaultMaxIterationsCap = 5'000'000;
@@ -39,6 +44,9 @@ struct PlannerOptions {
   NearestSearch nearest = NearestSearch::kIndex;
   bool smooth = false;      ///< shortcut-smooth the path found (deterministic, seeded).
   std::uint32_t seed = 42;  ///< MATLAB rng(seed); 0 behaves as MATLAB's rng(0) (MT seed 5489).
+  /// The stream `seed` seeds (plan_random.h). The lab's by default; the service and the tools
+  /// choose kFast for rooms and maps, which MATLAB's lab never had (doc/planning.md).
+  RandomStream random_stream = RandomStream::kMatlab;
   int max_rejection_tries = 100000;  ///< draws of one free point before the space counts as full.
   int smoothing_tries = 200;         ///< random shortcut attempts when `smooth` is set.
   double max_planning_time = 0;      ///< wall-clock budget (s); 0 = none. See StopCondition.
@@ -47,8 +55,10 @@ struct PlannerOptions {
 std::optional<Algorithm> parseAlgorithm(const std::string& name);
 std::optional<CollisionCheck> parseCollisionCheck(const std::string& name);
 std::optional<NearestSearch> parseNearestSearch(const std::string& name);
+std::optional<RandomStream> parseRandomStream(const std::string& name);
 std::string toString(Algorithm algorithm);
 std::string toString(CollisionCheck collision);
 std::string toString(NearestSearch nearest);
+std::string toString(RandomStream stream);
 
 }  // namespace roomba_rrt::planning

@@ -12,7 +12,8 @@ namespace roomba_rrt::planning {
 MonteCarloStats runMonteCarlo(const Problem& problem, const PlannerOptions& options, int runs,
                               std::uint32_t seed, const std::function<void(int)>& on_run) {
   const auto started = std::chrono::steady_clock::now();
-  MatlabRandom random(seed);  // rng(seed) once; every run continues the same stream
+  // rng(seed) once (or the fast stream seeded once); every run continues the same stream.
+  PlanRandom random(seed, options.random_stream);
   std::vector<double> lengths;
   std::vector<double> iterations;
   for (int run = 0; run < runs; ++run) {

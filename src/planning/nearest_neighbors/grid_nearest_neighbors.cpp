@@ -198,7 +198,7 @@ void GridNearestNeighbors::resize(int target_cells) {
   for (const Entry& e : entries) insert(e);
 }
 
-void GridNearestNeighbors::insert(const Entry& e) {
+inline void GridNearestNeighbors::insert(const Entry& e) {
   const int cx = cellX(e.x), cy = cellY(e.y);  // the float copy decides the cell
   ++block_count_[blockOf(cx, cy)];
   Cell& cell = cells_[static_cast<std::size_t>(cy) * nx_ + cx];
@@ -274,11 +274,17 @@ Neighbor GridNearestNeighbors::searchNearest(const Point2& q) const {
   }
   // 2. Far from every point: rings of blocks, visiting only blocks that hold points. (Cells of
   //    step 1 may be visited again; the minimum stays the same.)
+  //    A block, and a cell of it, wholly beyond the candidates' radius is skipped too.
   auto visitBlock = [&](int x, int y) {
     if (block_count_[static_cast<std::size_t>(y) * bx_ + x] == 0) return;
-    for (int fy = y * kBlock; fy < std::min(ny_, (y + 1) * kBlock); ++fy) {
-      for (int fx = x * kBlock; fx < std::min(nx_, (x + 1) * kBlock); ++fx) {
-        forEachInCell(cell(fx, fy), consider);
+    const int fx0 = x * kBlock, fx1 = std::min(nx_, (x + 1) * kBlock) - 1;
+    const int fy0 = y * kBlock, fy1 = std::min(ny_, (y + 1) * kBlock) - 1;
+    if (rangeGapD2(q, fx0, fx1, fy0, fy1) > search.keep_d2) return;
+    for (int fy = fy0; fy <= fy1; ++fy) {
+      for (int fx = fx0; fx <= fx1; ++fx) {
+        const Cell& c = cell(fx, fy);
+        if (c.inline_entries[0].index < 0 || cellGapD2(q, fx, fy) > search.keep_d2) continue;
+        forEachInCell(c, consider);
       }
     }
   };
@@ -293,7 +299,7 @@ Neighbor GridNearestNeighbors::searchNearest(const Point2& q) const {
   return exactNearest(q, search);
 }
 
-Neighbor GridNearestNeighbors::exactNearest(const Point2& q, const Search& search) const {
+inline Neighbor GridNearestNeighbors::exactNearest(const Point2& q, const Search& search) const {
   // Among the candidates, the exact answer: the smallest squaredDistance(), then the lowest index.
   int best = -1;
   double best_d2 = 0;
@@ -323,21 +329,26 @@ Neighbor GridNearestNeighbors::exactNearest(const Point2& q, const Search& searc
   return {best, (*positions_)[best]};
 }
 
-double GridNearestNeighbors::cellGapD2(const Point2& q, int cx, int cy) const {
-  // The cell's extent; the outermost cells also hold anything beyond the bounds (cellX clamps).
+inline double GridNearestNeighbors::cellGapD2(const Point2& q, int cx, int cy) const {
+  return rangeGapD2(q, cx, cx, cy, cy);
+}
+
+inline double GridNearestNeighbors::rangeGapD2(const Point2& q, int cx0, int cx1, int cy0,
+                                               int cy1) const {
+  // The cells' extent; the outermost cells also hold anything beyond the bounds (cellX clamps).
   double gap_x = 0, gap_y = 0;
-  if (cx > 0) gap_x = std::max(gap_x, bounds_.x_min + cx * cell_w_ - q.x);
-  if (cx < nx_ - 1) gap_x = std::max(gap_x, q.x - (bounds_.x_min + (cx + 1) * cell_w_));
-  if (cy > 0) gap_y = std::max(gap_y, bounds_.y_min + cy * cell_h_ - q.y);
-  if (cy < ny_ - 1) gap_y = std::max(gap_y, q.y - (bounds_.y_min + (cy + 1) * cell_h_));
+  if (cx0 > 0) gap_x = std::max(gap_x, bounds_.x_min + cx0 * cell_w_ - q.x);
+  if (cx1 < nx_ - 1) gap_x = std::max(gap_x, q.x - (bounds_.x_min + (cx1 + 1) * cell_w_));
+  if (cy0 > 0) gap_y = std::max(gap_y, bounds_.y_min + cy0 * cell_h_ - q.y);
+  if (cy1 < ny_ - 1) gap_y = std::max(gap_y, q.y - (bounds_.y_min + (cy1 + 1) * cell_h_));
   gap_x = std::max(0.0, gap_x - kBorderSlack);
   gap_y = std::max(0.0, gap_y - kBorderSlack);
   return gap_x * gap_x + gap_y * gap_y;
 }
 
-bool GridNearestNeighbors::ringSearchDone(const Point2& q, int ux, int uy, int r, int units_x,
-                                          int units_y, double unit_w, double unit_h,
-                                          double best_d2) const {
+inline bool GridNearestNeighbors::ringSearchDone(const Point2& q, int ux, int uy, int r,
+                                                 int units_x, int units_y, double unit_w,
+                                                 double unit_h, double best_d2) const {
   const bool left = ux - r > 0, right = ux + r < units_x - 1;
   const bool down = uy - r > 0, up = uy + r < units_y - 1;
   if (!left && !right && !down && !up) return true;  // the whole grid has been visited

@@ -1,5 +1,6 @@
 #include "roomba_rrt/planning/planners/rrt_connect.h"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -64,8 +65,10 @@ std::vector<Point2> joinedPath(const Tree& start_tree, int in_start, const Tree&
 
 // Both trees in one: the goal tree's nodes follow the start tree's, parents shifted.
 Tree merge(const Tree& start_tree, const Tree& goal_tree) {
-  Tree merged = start_tree;
+  Tree merged;
   merged.reserve(start_tree.nodes.size() + goal_tree.nodes.size());
+  merged.nodes = start_tree.nodes;  // into the reserved arrays: one allocation each
+  merged.parent = start_tree.parent;
   const int offset = start_tree.size();
   for (int i = 0; i < goal_tree.size(); ++i) {
     const int p = goal_tree.parent[i];
@@ -83,6 +86,12 @@ PlanResult solveRrtConnect(const Problem& problem, const PlannerOptions& options
   GrowingTree goal_tree{{}, *goal_index};
   start_tree.plant(problem.start, problem.bounds);
   goal_tree.plant(problem.goal, problem.bounds);
+  // Room for the trees of a short plan, so they are not copied as they start to grow (a room's
+  // plan adds about 30 nodes); larger trees double as vectors do.
+  constexpr std::size_t kFirstCapacity = 256;
+  for (GrowingTree* t : {&start_tree, &goal_tree}) {
+    t->tree.reserve(std::min(nodeCapacity(options.max_iterations), kFirstCapacity));
+  }
   GrowingTree* active = &start_tree;
   GrowingTree* other = &goal_tree;
 

@@ -22,7 +22,8 @@ struct MonteCarloStats {
   double seconds = 0;  ///< wall-clock time of all runs
 };
 
-/// rng(seed) once, then `runs` plans in sequence from that stream (options.seed is ignored).
+/// rng(seed) once, then `runs` plans in sequence from that stream (options.seed is ignored;
+/// options.random_stream kFast: the fast stream seeded once instead).
 /// `on_run(done)` is called after each run (progress bars).
 MonteCarloStats runMonteCarlo(const Problem& problem, const PlannerOptions& options, int runs,
                               std::uint32_t seed, const std::function<void(int)>& on_run = {});

@@ -85,6 +85,8 @@ class GridNearestNeighbors final : public NearestNeighbors {
   /// Squared distance from q to the nearest point of cell (cx, cy), rounded down: no point stored
   /// in that cell is closer.
   double cellGapD2(const Point2& q, int cx, int cy) const;
+  /// The same for the cells [cx0, cx1] x [cy0, cy1].
+  double rangeGapD2(const Point2& q, int cx0, int cx1, int cy0, int cy1) const;
   /// Calls visit(x, y) for the units (cells or blocks) at Chebyshev distance r from (ux, uy).
   template <typename Visit>
   static void forEachOnRing(int ux, int uy, int r, int units_x, int units_y, Visit&& visit) {

@@ -8,8 +8,8 @@
 
 #include "roomba_rrt/planning/collision_checker.h"
 #include "roomba_rrt/planning/free_space_sampler.h"
-#include "roomba_rrt/planning/lab/matlab_random.h"
 #include "roomba_rrt/planning/nearest_neighbors/nearest_neighbors.h"
+#include "roomba_rrt/planning/plan_random.h"
 #include "roomba_rrt/planning/plan_result.h"
 #include "roomba_rrt/planning/planner_options.h"
 #include "roomba_rrt/planning/problem.h"
@@ -43,7 +43,7 @@ inline Point2 steer(const Point2& q_near, const Point2& q_rand, double step) {
 
 /// The collaborators every planner is handed, so each can be swapped without touching a loop.
 struct PlannerParts {
-  MatlabRandom& random;
+  PlanRandom& random;
   const FreeSpaceSampler& sampler;
   NearestNeighbors& nearest;
   const CollisionChecker& checker;
