@@ -1,0 +1,107 @@
+// A map's free cells as a graph for a disc robot, and a coarse graph of its regions on top, both
+// built once per map and radius: what planners/region_astar.h searches.
+//
+// The fine graph is the inflated grid ROS's grid planners search (navfn, global_planner, Smac
+// 2D): a cell centre is a node when the disc is free there (ClearanceMap::discFree, exact against
+// every blocked cell's square) and two of the 8 neighbouring centres are joined when the disc
+// sweeps freely between them (ClearanceMap::sweepFree). It is kept as one byte of 8 edge bits per
+// cell. A cell that lies wholly more than the radius + √2 cells from every blocked centre (the
+// distance transform says so in one look-up) is free everywhere, so are both halves of its edges
+// to another such cell: only the cells in a band along the inflated walls are swept.
+//
+// The regions are Sturtevant's sectors (Memory-Efficient Abstractions for Pathfinding, 2007, the
+// abstraction of Dragon Age's path planner): the map cut into blocks of B × B cells, each block's
+// free cells split into the parts its fine edges join inside it. Two regions of neighbouring
+// blocks (8-neighbourhood) are joined when a fine edge crosses from one to the other, so a path
+// of the fine graph exists exactly when one of regions does: a doorway one cell wide is a region
+// of its own, never lost at the coarse level. Each region has a point, the free centre of its
+// cells nearest their mean.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "roomba_rrt/geometry/clearance_map.h"
+#include "roomba_rrt/planning/geometry.h"
+
+namespace roomba_rrt::planning {
+
+class GridRegions {
+ public:
+  /// The 8 moves of the fine graph (column, row); move k and move k ^ 1 are opposite, moves 0–3
+  /// are along the axes.
+  static constexpr int kMoves[8][2] = {{1, 0}, {-1, 0},  {0, 1},  {0, -1},
+                                       {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
+  /// The block edge used unless asked otherwise (measured on the shared maps: see
+  /// doc/planning.md).
+  static constexpr int kDefaultBlock = 4;
+
+  /// The fine graph and the regions of `map` for a disc of `radius` (m, ≥ 0), in blocks of
+  /// `block` × `block` cells (2, 4, 8 or 16).
+  GridRegions(std::shared_ptr<const geometry::ClearanceMap> map, double radius,
+              int block = kDefaultBlock);
+
+  const geometry::ClearanceMap& map() const { return *map_; }
+  const std::shared_ptr<const geometry::ClearanceMap>& sharedMap() const { return map_; }
+  double radius() const { return disc_.radius; }
+  const geometry::ClearanceMap::Disc& disc() const { return disc_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int block() const { return block_; }
+  /// log2(block()).
+  int blockShift() const { return block_shift_; }
+
+  // --- The fine graph.
+  /// The cell holding p, or −1 outside the grid.
+  int cellOf(const Point2& p) const;
+  Point2 centre(int cell) const;
+  /// Bit k: the edge from `cell` along kMoves[k] is free (both centres free, the sweep free).
+  std::uint8_t edges(int cell) const { return edges_[cell]; }
+  /// The disc is free at the cell's centre (a node of the fine graph, maybe without edges).
+  bool nodeFree(int cell) const;
+
+  // --- The regions.
+  int blocksX() const { return blocks_x_; }
+  int blocksY() const { return blocks_y_; }
+  int blockOf(int cell) const { return blockAt(cell % width_, cell / width_); }
+  int blockAt(int i, int j) const { return (j >> block_shift_) * blocks_x_ + (i >> block_shift_); }
+  int regionCount() const { return static_cast<int>(region_block_.size()); }
+  int blockOfRegion(int region) const { return region_block_[region]; }
+  Point2 regionPoint(int region) const { return region_point_[region]; }
+  /// The regions joined to `region` are adjacency()[k] for k in [adjacencyBegin(region),
+  /// adjacencyBegin(region + 1)), at adjacencyCost()[k] (m: the distance between the points).
+  int adjacencyBegin(int region) const { return adjacency_start_[region]; }
+  const std::vector<int>& adjacency() const { return adjacency_; }
+  const std::vector<float>& adjacencyCost() const { return adjacency_cost_; }
+  /// The region of a cell whose centre is free and has an edge (−1 otherwise): its block is
+  /// labelled again, as when the regions were built.
+  int regionOf(int cell) const;
+
+  /// CPU seconds the constructor took (the fine graph, then the regions).
+  double buildSeconds() const { return build_seconds_; }
+  /// Bytes held beyond the map: the edge bytes and the regions.
+  std::size_t bytes() const;
+
+ private:
+  void buildEdges();
+  void buildRegions();
+  /// Labels the free cells of `block` that have an edge by the part of the block their edges
+  /// join them to, 0, 1, ... in the order of their first cell (row by row); 0xff for the others.
+  /// `labels` holds block² entries, row by row. Returns the number of parts; `all_joined`, when
+  /// given, tells whether every cell of the block has all 8 edges (open floor: one part).
+  int labelBlock(int block, std::uint8_t* labels, bool* all_joined = nullptr) const;
+
+  std::shared_ptr<const geometry::ClearanceMap> map_;
+  geometry::ClearanceMap::Disc disc_;
+  int width_, height_, block_, block_shift_, blocks_x_, blocks_y_;
+  std::vector<std::uint8_t> edges_;
+  std::vector<int> block_first_region_;  ///< per block (and one past the last): its first region
+  std::vector<int> region_block_;
+  std::vector<Point2> region_point_;
+  std::vector<int> adjacency_start_, adjacency_;
+  std::vector<float> adjacency_cost_;
+  double build_seconds_ = 0;
+};
+
+}  // namespace roomba_rrt::planning
