@@ -83,6 +83,13 @@ void GridRegions::buildEdges() {
       }
     }
   }
+  // A block is clear when all its cells are free at every point.
+  clear_.assign(static_cast<std::size_t>(blocks_x_) * blocks_y_, 1);
+  for (int j = 0; j < height_; ++j) {
+    for (int i = 0; i < width_; ++i) {
+      if (state[static_cast<std::size_t>(j) * width_ + i] != 2) clear_[blockAt(i, j)] = 0;
+    }
+  }
   // Each edge is looked at once, from the cell where its move has an even index, and set both
   // ways. Between two cells free at every point the segment lies in their two closed squares
   // (a diagonal one through their common corner): free without a sweep.
@@ -285,6 +292,10 @@ void GridRegions::buildRegions() {
   }
 }
 
+bool GridRegions::clearBetween(const Point2& a, const Point2& b) const {
+  return forEachBlockAlong(a, b, [this](int block) { return clear_[block] != 0; });
+}
+
 int GridRegions::regionOf(int cell) const {
   if (cell < 0 || edges_[cell] == 0) return -1;
   std::uint8_t labels[16 * 16];
@@ -295,7 +306,7 @@ int GridRegions::regionOf(int cell) const {
 }
 
 std::size_t GridRegions::bytes() const {
-  return edges_.size() + block_first_region_.size() * sizeof(int) +
+  return edges_.size() + clear_.size() + block_first_region_.size() * sizeof(int) +
          region_block_.size() * sizeof(int) + region_point_.size() * sizeof(Point2) +
          (adjacency_start_.size() + adjacency_.size()) * sizeof(int) +
          adjacency_cost_.size() * sizeof(float);

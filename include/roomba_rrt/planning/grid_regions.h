@@ -18,6 +18,8 @@
 // cells nearest their mean.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -77,6 +79,18 @@ class GridRegions {
   /// The region of a cell whose centre is free and has an edge (−1 otherwise): its block is
   /// labelled again, as when the regions were built.
   int regionOf(int cell) const;
+  /// Every cell of the block is free at every point of it (more than radius + √2 cells from every
+  /// blocked centre, radius + 1 cells inside the map's edge): open floor, one region.
+  bool blockClear(int block) const { return clear_[block] != 0; }
+  /// True when every block the segment a-b passes through (each within 1e-9 m of it) is clear:
+  /// then the disc sweeps freely along it, proven by a look-up per block, no sweep. False says
+  /// nothing (the exact sweep may still find it free).
+  bool clearBetween(const Point2& a, const Point2& b) const;
+  /// Calls visit(block) for every block the segment a-b passes through (each within 1e-9 m of
+  /// it), column by column of blocks, while it returns true; false when it returned false or the
+  /// segment leaves the grid.
+  template <class Visit>
+  bool forEachBlockAlong(const Point2& a, const Point2& b, Visit visit) const;
 
   /// CPU seconds the constructor took (the fine graph, then the regions).
   double buildSeconds() const { return build_seconds_; }
@@ -96,6 +110,7 @@ class GridRegions {
   geometry::ClearanceMap::Disc disc_;
   int width_, height_, block_, block_shift_, blocks_x_, blocks_y_;
   std::vector<std::uint8_t> edges_;
+  std::vector<std::uint8_t> clear_;      ///< per block: blockClear()
   std::vector<int> block_first_region_;  ///< per block (and one past the last): its first region
   std::vector<int> region_block_;
   std::vector<Point2> region_point_;
@@ -103,5 +118,46 @@ class GridRegions {
   std::vector<float> adjacency_cost_;
   double build_seconds_ = 0;
 };
+
+/// Calls visit(column, row) for every square of a grid (origin, square edge `size`, nx × ny
+/// squares) that the segment a-b passes through, each within 1e-9 m of it, column by column (the
+/// rows between the segment's heights at the column's two sides, as ClearanceMap's exact sweep
+/// walks cells), while it returns true; false when it returned false or the segment leaves the
+/// grid.
+template <class Visit>
+bool walkSquares(const Point2& origin, double size, int nx, int ny, const Point2& a,
+                 const Point2& b, Visit visit) {
+  constexpr double kSlack = 1e-9;  // m
+  const auto column = [&](double x) { return static_cast<int>(std::floor((x - origin.x) / size)); };
+  const auto row = [&](double y) { return static_cast<int>(std::floor((y - origin.y) / size)); };
+  const double x_lo = std::min(a.x, b.x), x_hi = std::max(a.x, b.x);
+  const int c0 = column(x_lo - kSlack), c1 = column(x_hi + kSlack);
+  if (c0 < 0 || c1 >= nx) return false;
+  const double slope = a.x == b.x ? 0 : (b.y - a.y) / (b.x - a.x);
+  for (int c = c0; c <= c1; ++c) {
+    double y_lo, y_hi;
+    if (a.x == b.x) {
+      y_lo = std::min(a.y, b.y), y_hi = std::max(a.y, b.y);
+    } else {
+      const double left = std::max(x_lo, origin.x + c * size);
+      const double right = std::min(x_hi, origin.x + (c + 1) * size);
+      const double y_left = a.y + (left - a.x) * slope, y_right = a.y + (right - a.x) * slope;
+      y_lo = std::min(y_left, y_right), y_hi = std::max(y_left, y_right);
+    }
+    const int r0 = row(y_lo - kSlack), r1 = row(y_hi + kSlack);
+    if (r0 < 0 || r1 >= ny) return false;
+    for (int r = r0; r <= r1; ++r) {
+      if (!visit(c, r)) return false;
+    }
+  }
+  return true;
+}
+
+template <class Visit>
+bool GridRegions::forEachBlockAlong(const Point2& a, const Point2& b, Visit visit) const {
+  const geometry::OccupancyGrid& g = map_->grid();
+  return walkSquares(g.origin, block_ * g.resolution, blocks_x_, blocks_y_, a, b,
+                     [&](int c, int r) { return visit(r * blocks_x_ + c); });
+}
 
 }  // namespace roomba_rrt::planning

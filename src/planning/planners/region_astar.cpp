@@ -22,6 +22,8 @@ constexpr int kEndpointReach = 2;
 /// How many blocks around each region of the way the cells are searched when the regions'
 /// points do not see each other.
 constexpr int kCorridorBlocks = 1;
+/// The longest straight line (in blocks) the search of the regions looks along.
+constexpr int kMaxLineBlocks = 8;
 /// The spacing (cells) of the points the final string pulling may cut corners at.
 constexpr double kFinalSpacing = 2;
 
@@ -60,8 +62,21 @@ int endpointCell(const GridRegions& r, const Point2& p) {
   return best;
 }
 
-/// A* over the regions from `from` to `to`: the regions of the path, or empty if none (or
-/// stopped).
+/// Whether region `a`'s point sees region `b`'s across clear blocks, looked at only when they
+/// are at most `max_line` apart (so that each look costs at most kMaxLineBlocks look-ups).
+bool seesInLine(const GridRegions& r, int a, int b, double max_line) {
+  const Point2 p = r.regionPoint(a), q = r.regionPoint(b);
+  return squaredDistance(p, q) <= max_line * max_line && r.clearBetween(p, q);
+}
+
+/// Lazy Theta* (Nash, Koenig and Tovey 2010) over the regions from `from` to `to`: as A* over
+/// them, but a region reached from another may take that one's parent as its own when the
+/// straight segment between their points crosses clear blocks only (GridRegions::clearBetween(),
+/// a look-up per block; checked lazily, when the region is taken from the queue), so that across
+/// open floor the costs are straight-line distances rather than sums of steps between
+/// neighbouring blocks (up to 8 % longer, by direction): which way round is chosen by lengths
+/// close to the final path's. Returns the regions whose points the path turns at (the first
+/// and last included), or empty if none (or stopped).
 std::vector<int> regionPath(const GridRegions& r, int from, int to, StopCondition* stop,
                             int& taken) {
   const int n = r.regionCount();
@@ -71,31 +86,52 @@ std::vector<int> regionPath(const GridRegions& r, int from, int to, StopConditio
   const Point2 goal = r.regionPoint(to);
   const std::vector<int>& next = r.adjacency();
   const std::vector<float>& cost = r.adjacencyCost();
+  const double max_line = kMaxLineBlocks * r.block() * r.map().grid().resolution;
   Queue open;
   g[from] = 0;
+  parent[from] = from;
   open.push({distance(r.regionPoint(from), goal), 0, from});
   while (!open.empty()) {
     const Entry top = open.top();
     open.pop();
-    if (closed[top.node]) continue;  // reached shorter since: a stale entry
-    closed[top.node] = 1;
-    const double at = g[top.node];
+    const int s = top.node;
+    if (closed[s]) continue;  // reached shorter since: a stale entry
+    closed[s] = 1;
     ++taken;
-    if (top.node == to) break;
     if (stop && (*stop)()) return {};
-    for (int k = r.adjacencyBegin(top.node); k < r.adjacencyBegin(top.node + 1); ++k) {
-      const double through = at + cost[k];
-      if (through < g[next[k]]) {
-        g[next[k]] = through;
-        parent[next[k]] = top.node;
-        open.push({through + distance(r.regionPoint(next[k]), goal), static_cast<float>(through),
-                   next[k]});
+    // The parent was assumed to see s: if it does not, the best closed neighbour instead.
+    if (parent[s] != s && !seesInLine(r, parent[s], s, max_line)) {
+      double best = kInf;
+      for (int k = r.adjacencyBegin(s); k < r.adjacencyBegin(s + 1); ++k) {
+        if (closed[next[k]] && g[next[k]] + cost[k] < best) {
+          best = g[next[k]] + cost[k];
+          parent[s] = next[k];
+        }
+      }
+      g[s] = best;
+    }
+    if (s == to) break;
+    const int via = parent[s];
+    const Point2 at = r.regionPoint(via);
+    for (int k = r.adjacencyBegin(s); k < r.adjacencyBegin(s + 1); ++k) {
+      const int t = next[k];
+      if (closed[t]) continue;
+      // Through s's parent in a straight line (checked when t is taken), or through s.
+      const Point2 p = r.regionPoint(t);
+      const double straight = g[via] + distance(at, p);
+      if (straight < g[t]) {
+        g[t] = straight;
+        parent[t] = via;
+        open.push({straight + distance(p, goal), static_cast<float>(straight), t});
       }
     }
   }
-  if (!(g[to] < kInf)) return {};
+  if (!closed[to]) return {};
   std::vector<int> path;
-  for (int region = to; region >= 0; region = parent[region]) path.push_back(region);
+  for (int region = to;; region = parent[region]) {
+    path.push_back(region);
+    if (region == from) break;
+  }
   std::reverse(path.begin(), path.end());
   return path;
 }
@@ -216,14 +252,23 @@ std::vector<int> cellPath(const GridRegions& r, const BlockSlots& corridor, int 
   return path;
 }
 
-/// The corridor of a region path: the blocks of its regions, each with its neighbours within
-/// kCorridorBlocks blocks.
+/// The corridor of a region path (the regions it turns at): the blocks of those regions and of
+/// the segments between their points, each with its neighbours within kCorridorBlocks blocks.
 BlockSlots corridorOf(const GridRegions& r, const std::vector<int>& coarse) {
+  std::vector<int> blocks;
+  for (std::size_t k = 0; k < coarse.size(); ++k) {
+    blocks.push_back(r.blockOfRegion(coarse[k]));
+    if (k + 1 < coarse.size()) {
+      r.forEachBlockAlong(r.regionPoint(coarse[k]), r.regionPoint(coarse[k + 1]), [&](int block) {
+        blocks.push_back(block);
+        return true;
+      });
+    }
+  }
   const int reach = kCorridorBlocks;
   BlockSlots corridor(r,
-                      static_cast<std::size_t>((2 * reach + 1) * (2 * reach + 1)) * coarse.size());
-  for (int region : coarse) {
-    const int blk = r.blockOfRegion(region);
+                      static_cast<std::size_t>((2 * reach + 1) * (2 * reach + 1)) * blocks.size());
+  for (int blk : blocks) {
     const int bi = blk % r.blocksX(), bj = blk / r.blocksX();
     for (int j = std::max(bj - reach, 0); j <= std::min(bj + reach, r.blocksY() - 1); ++j) {
       for (int i = std::max(bi - reach, 0); i <= std::min(bi + reach, r.blocksX() - 1); ++i) {

@@ -11,10 +11,15 @@
 // cells or fewer), and what makes it short is pulling it taut in the plane, not along cells:
 //
 //   1. The straight segment, when the disc sweeps freely along it, is the answer.
-//   2. A* over the regions, from the start's to the goal's (costs: the distance between the
-//      regions' points; heuristic: the distance to the goal's point).
-//   3. The start, the regions' points in order, the goal, pulled taut (pullPolyline(): from each
-//      kept point, the farthest later one the disc sweeps to, found by doubling and bisection).
+//   2. Lazy Theta* over the regions, from the start's to the goal's: A* (costs: the distance
+//      between the regions' points; heuristic: the distance to the goal's point), but a region
+//      may take its predecessor's parent as its own when the straight line between their points
+//      (at most 8 blocks long) crosses clear blocks only (GridRegions::clearBetween(): a look-up
+//      per block), so that across open floor the way round is chosen by straight-line lengths,
+//      not by steps between neighbouring blocks (up to 8 % longer, by direction).
+//   3. The start, the points of the regions the way turns at, the goal, pulled taut
+//      (pullPolyline(): from each kept point, the farthest later one the disc sweeps to, found by
+//      doubling and bisection).
 //   4. Only where a region's point does not see the next one (a doorway narrower than a block,
 //      clutter): A* over the fine graph's cells in the blocks of those regions and their 8
 //      neighbours (costs 1 and √2 cells, the octile distance as heuristic), whose path the
