@@ -51,7 +51,8 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/rrt_test.cpp test/planning/algorithms_test.cpp test/planning/validate_test.cpp
     test/planning/robustness_test.cpp test/planning/room_test.cpp
     test/planning/map_planning_test.cpp test/planning/densify_test.cpp
-    test/planning/free_space_sampler_test.cpp LINK roomba_world_planning)
+    test/planning/free_space_sampler_test.cpp test/planning/region_astar_test.cpp
+    LINK roomba_world_planning)
 endif()
 
 # planning_bench: time per solved query (a-d) and iterations/s on a 10^6-node tree.

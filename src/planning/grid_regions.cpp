@@ -1,8 +1,10 @@
 #include "roomba_rrt/planning/grid_regions.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <ctime>
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -310,6 +312,52 @@ std::size_t GridRegions::bytes() const {
          region_block_.size() * sizeof(int) + region_point_.size() * sizeof(Point2) +
          (adjacency_start_.size() + adjacency_.size()) * sizeof(int) +
          adjacency_cost_.size() * sizeof(float);
+}
+
+GridRegionsCache::GridRegionsCache(std::shared_ptr<const geometry::ClearanceMap> map)
+    : map_(std::move(map)) {}
+
+std::shared_ptr<const GridRegions> GridRegionsCache::get(double radius) const {
+  std::promise<std::shared_ptr<const GridRegions>> building;
+  std::shared_future<std::shared_ptr<const GridRegions>> regions;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const Entry& e : entries_) {
+      if (e.radius == radius) regions = e.regions;
+    }
+    if (regions.valid()) {
+      // Built, or being built by another thread: wait for it outside the lock.
+    } else {
+      // This thread builds them, outside the lock; others asking meanwhile wait on the future.
+      if (entries_.size() == kKept) entries_.erase(entries_.begin());
+      entries_.push_back({radius, building.get_future().share()});
+    }
+  }
+  if (regions.valid()) return regions.get();
+  try {
+    auto built = std::make_shared<const GridRegions>(map_, radius);
+    building.set_value(built);
+    return built;
+  } catch (...) {
+    // Those waiting get the same exception; the next to ask tries again.
+    building.set_exception(std::current_exception());
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                  [&](const Entry& e) { return e.radius == radius; }),
+                   entries_.end());
+    throw;
+  }
+}
+
+std::shared_ptr<const GridRegions> GridRegionsCache::ready(double radius) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const Entry& e : entries_) {
+    if (e.radius == radius &&
+        e.regions.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+      return e.regions.get();
+    }
+  }
+  return nullptr;
 }
 
 }  // namespace roomba_rrt::planning

@@ -21,7 +21,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "roomba_rrt/geometry/clearance_map.h"
@@ -117,6 +119,32 @@ class GridRegions {
   std::vector<int> adjacency_start_, adjacency_;
   std::vector<float> adjacency_cost_;
   double build_seconds_ = 0;
+};
+
+/// The GridRegions of one map for each radius asked of it, each built on first use and shared
+/// from then on, from any number of threads (a thread asking for regions being built waits for
+/// them). A map's planning problem carries one (mapProblem()), so that its regions are built once
+/// per map and radius, as a costmap is inflated once: not per plan. The last kKept radii are kept.
+class GridRegionsCache {
+ public:
+  static constexpr std::size_t kKept = 4;
+
+  explicit GridRegionsCache(std::shared_ptr<const geometry::ClearanceMap> map);
+
+  const std::shared_ptr<const geometry::ClearanceMap>& map() const { return map_; }
+  /// The regions for a disc of `radius` (m, finite, ≥ 0), built now if they are not yet.
+  std::shared_ptr<const GridRegions> get(double radius) const;
+  /// The regions for `radius` if they are built already, else nullptr (never waits).
+  std::shared_ptr<const GridRegions> ready(double radius) const;
+
+ private:
+  struct Entry {
+    double radius;
+    std::shared_future<std::shared_ptr<const GridRegions>> regions;
+  };
+  std::shared_ptr<const geometry::ClearanceMap> map_;
+  mutable std::mutex mutex_;
+  mutable std::vector<Entry> entries_;  ///< the newest last
 };
 
 /// Calls visit(column, row) for every square of a grid (origin, square edge `size`, nx × ny
