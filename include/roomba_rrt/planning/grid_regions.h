@@ -70,14 +70,16 @@ class GridRegions {
   int blocksY() const { return blocks_y_; }
   int blockOf(int cell) const { return blockAt(cell % width_, cell / width_); }
   int blockAt(int i, int j) const { return (j >> block_shift_) * blocks_x_ + (i >> block_shift_); }
-  int regionCount() const { return static_cast<int>(region_block_.size()); }
-  int blockOfRegion(int region) const { return region_block_[region]; }
-  Point2 regionPoint(int region) const { return region_point_[region]; }
+  int regionCount() const { return static_cast<int>(region_cell_.size()); }
+  /// The free cell centre of the region's cells nearest their mean: where it stands at the
+  /// coarse level.
+  int regionCell(int region) const { return region_cell_[region]; }
+  Point2 regionPoint(int region) const { return centre(region_cell_[region]); }
+  int blockOfRegion(int region) const { return blockOf(region_cell_[region]); }
   /// The regions joined to `region` are adjacency()[k] for k in [adjacencyBegin(region),
-  /// adjacencyBegin(region + 1)), at adjacencyCost()[k] (m: the distance between the points).
+  /// adjacencyBegin(region + 1)).
   int adjacencyBegin(int region) const { return adjacency_start_[region]; }
   const std::vector<int>& adjacency() const { return adjacency_; }
-  const std::vector<float>& adjacencyCost() const { return adjacency_cost_; }
   /// The region of a cell whose centre is free and has an edge (−1 otherwise): its block is
   /// labelled again, as when the regions were built.
   int regionOf(int cell) const;
@@ -114,10 +116,8 @@ class GridRegions {
   std::vector<std::uint8_t> edges_;
   std::vector<std::uint8_t> clear_;      ///< per block: blockClear()
   std::vector<int> block_first_region_;  ///< per block (and one past the last): its first region
-  std::vector<int> region_block_;
-  std::vector<Point2> region_point_;
+  std::vector<int> region_cell_;         ///< per region: regionCell()
   std::vector<int> adjacency_start_, adjacency_;
-  std::vector<float> adjacency_cost_;
   double build_seconds_ = 0;
 };
 

@@ -85,7 +85,6 @@ std::vector<int> regionPath(const GridRegions& r, int from, int to, StopConditio
   std::vector<char> closed(n, 0);
   const Point2 goal = r.regionPoint(to);
   const std::vector<int>& next = r.adjacency();
-  const std::vector<float>& cost = r.adjacencyCost();
   const double max_line = kMaxLineBlocks * r.block() * r.map().grid().resolution;
   Queue open;
   g[from] = 0;
@@ -102,11 +101,12 @@ std::vector<int> regionPath(const GridRegions& r, int from, int to, StopConditio
     // The parent was assumed to see s: if it does not, the best closed neighbour instead.
     if (parent[s] != s && !seesInLine(r, parent[s], s, max_line)) {
       double best = kInf;
+      const Point2 here = r.regionPoint(s);
       for (int k = r.adjacencyBegin(s); k < r.adjacencyBegin(s + 1); ++k) {
-        if (closed[next[k]] && g[next[k]] + cost[k] < best) {
-          best = g[next[k]] + cost[k];
-          parent[s] = next[k];
-        }
+        if (!closed[next[k]]) continue;
+        const double through =
+            g[next[k]] + static_cast<float>(distance(r.regionPoint(next[k]), here));
+        if (through < best) best = through, parent[s] = next[k];
       }
       g[s] = best;
     }
