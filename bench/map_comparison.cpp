@@ -241,12 +241,13 @@ Row starRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& sh
   return row;
 }
 
-/// A way of ours to a short path: region_astar (planners/region_astar.h) on the map's
-/// GridRegions (built once per map, timed apart as A*'s inflated grid is); make_plan's former
-/// planner (RRT-Connect, exact segments, 0.5 m steps, 200 000 iterations, 200 shortcut tries) or
-/// RRT* at the map rows' range for a fixed number of iterations, then, if `pull`, greedy string
-/// pulling over the path densified to 8 and then 2 cells (pullString(): each vertex joined to the
-/// farthest later one it sweeps freely to), every pulled edge checked by the exact sweep.
+/// A way of ours to a short path: region_astar (planners/region_astar.h, make_plan's planner) on
+/// the map's GridRegions (built once per map, timed apart as A*'s inflated grid is);
+/// rrt_connect as make_plan planned before (RRT-Connect, exact segments, 0.5 m steps, 200 000
+/// iterations, 200 shortcut tries) or RRT* at the map rows' range for a fixed number of
+/// iterations, then, if `pull`, greedy string pulling over the path densified to 8 and then 2
+/// cells (pullString(): each vertex joined to the farthest later one it sweeps freely to), every
+/// pulled edge checked by the exact sweep.
 struct RouteSpec {
   const char* name;
   rp::Algorithm algorithm;
@@ -256,8 +257,8 @@ struct RouteSpec {
 };
 constexpr RouteSpec kRoutes[] = {
     {"region_astar", rp::Algorithm::kRrtConnect, 0, false, true},
-    {"make_plan", rp::Algorithm::kRrtConnect, 200000, false},
-    {"make_plan+pull", rp::Algorithm::kRrtConnect, 200000, true},
+    {"rrt_connect", rp::Algorithm::kRrtConnect, 200000, false},
+    {"rrt_connect+pull", rp::Algorithm::kRrtConnect, 200000, true},
     {"rrt_star_10k+pull", rp::Algorithm::kRrtStar, 10000, true},
 };
 

@@ -31,6 +31,12 @@
 
 namespace roomba_rrt::planning {
 
+/// The largest map (cells) on which region_astar is make_plan's planner: its regions are built
+/// in about 35 ns a cell (under a second) and hold about 3.4 bytes a cell; on larger maps (the
+/// 10^8-cell benchmark map: 10 s, 0.6 GB, and plans across it of about a second) make_plan
+/// keeps RRT-Connect.
+inline constexpr std::size_t kRegionAStarMaxCells = 25'000'000;
+
 class GridRegions {
  public:
   /// The 8 moves of the fine graph (column, row); move k and move k ^ 1 are opposite, moves 0–3
