@@ -168,7 +168,8 @@ void GridRegions::buildRegions() {
   const int b = block_, b2 = block_ * block_, shift = block_shift_, mask = block_ - 1;
   const int blocks = blocks_x_ * blocks_y_;
   block_first_region_.assign(static_cast<std::size_t>(blocks) + 1, 0);
-  region_cell_.reserve(blocks);
+  region_point_.reserve(blocks);
+  region_block_.reserve(blocks);
   adjacency_start_.reserve(static_cast<std::size_t>(blocks) + 1);
   adjacency_.reserve(static_cast<std::size_t>(blocks) * 8);
   // Labels of three rows of blocks at a time (the row being joined and its neighbours), so the
@@ -192,7 +193,7 @@ void GridRegions::buildRegions() {
       bool all_joined = false;
       const int parts = labelBlock(blk, labels, &all_joined);
       open[static_cast<std::size_t>(by % 3) * blocks_x_ + bx] = all_joined;
-      const int first = static_cast<int>(region_cell_.size());
+      const int first = static_cast<int>(region_block_.size());
       block_first_region_[blk] = first;
       block_first_region_[blk + 1] = first + parts;
       int sx[256] = {}, sy[256] = {}, count[256] = {};
@@ -215,7 +216,8 @@ void GridRegions::buildRegions() {
           const long d = dx * dx + dy * dy;
           if (best < 0 || d < best_d) best = local, best_d = d;
         }
-        region_cell_.push_back((j0 + (best >> shift)) * width_ + i0 + (best & mask));
+        region_point_.push_back(centre((j0 + (best >> shift)) * width_ + i0 + (best & mask)));
+        region_block_.push_back(blk);
       }
     }
   };
@@ -304,7 +306,7 @@ int GridRegions::regionOf(int cell) const {
 
 std::size_t GridRegions::bytes() const {
   return edges_.size() + clear_.size() + block_first_region_.size() * sizeof(int) +
-         region_cell_.size() * sizeof(int) +
+         region_point_.size() * sizeof(Point2) + region_block_.size() * sizeof(int) +
          (adjacency_start_.size() + adjacency_.size()) * sizeof(int);
 }
 

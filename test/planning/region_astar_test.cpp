@@ -342,6 +342,15 @@ TEST(PathSmoothing, pulling_never_lengthens_keeps_the_ends_and_sweeps_every_edge
   sweeps = 0;
   pullString(path, sweep);
   EXPECT_LT(far * 3, sweeps);
+  // Cutting the corner of a path bent far from the box: shorter, ends kept, every edge free.
+  const std::vector<Point2> bent{{0, -5}, {-1, 3}, {5, 2}};
+  const std::vector<Point2> cut = cutCorners(bent, sweep, 2.0, 0.1);
+  EXPECT_EQ(cut.front().y, -5);
+  EXPECT_EQ(cut.back().x, 5);
+  EXPECT_LT(pathLength(cut), pathLength(bent) - 0.3);
+  for (std::size_t k = 1; k < cut.size(); ++k) {
+    EXPECT_FALSE(segmentMeets(Segment{cut[k - 1], cut[k]}, box, 0.0));
+  }
   // A polyline whose consecutive points do not see each other: pullPolyline says so.
   EXPECT_TRUE(pullPolyline(std::vector<Point2>{{0, 2}, {5, -5}, {12, 0}}, sweep).empty());
 }

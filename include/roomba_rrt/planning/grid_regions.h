@@ -76,12 +76,11 @@ class GridRegions {
   int blocksY() const { return blocks_y_; }
   int blockOf(int cell) const { return blockAt(cell % width_, cell / width_); }
   int blockAt(int i, int j) const { return (j >> block_shift_) * blocks_x_ + (i >> block_shift_); }
-  int regionCount() const { return static_cast<int>(region_cell_.size()); }
-  /// The free cell centre of the region's cells nearest their mean: where it stands at the
-  /// coarse level.
-  int regionCell(int region) const { return region_cell_[region]; }
-  Point2 regionPoint(int region) const { return centre(region_cell_[region]); }
-  int blockOfRegion(int region) const { return blockOf(region_cell_[region]); }
+  int regionCount() const { return static_cast<int>(region_block_.size()); }
+  /// Where the region stands at the coarse level: the free centre of its cells nearest their
+  /// mean.
+  const Point2& regionPoint(int region) const { return region_point_[region]; }
+  int blockOfRegion(int region) const { return region_block_[region]; }
   /// The regions joined to `region` are adjacency()[k] for k in [adjacencyBegin(region),
   /// adjacencyBegin(region + 1)).
   int adjacencyBegin(int region) const { return adjacency_start_[region]; }
@@ -122,7 +121,10 @@ class GridRegions {
   std::vector<std::uint8_t> edges_;
   std::vector<std::uint8_t> clear_;      ///< per block: blockClear()
   std::vector<int> block_first_region_;  ///< per block (and one past the last): its first region
-  std::vector<int> region_cell_;         ///< per region: regionCell()
+  // Per region (the search reads them for every region it reaches: kept, not derived from a
+  // cell index, which costs a division each).
+  std::vector<Point2> region_point_;
+  std::vector<int> region_block_;
   std::vector<int> adjacency_start_, adjacency_;
   double build_seconds_ = 0;
 };

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "roomba_rrt/planning/collision_checker.h"
+#include "roomba_rrt/planning/densify.h"
 #include "roomba_rrt/planning/geometry.h"
 
 namespace roomba_rrt::planning {
@@ -83,6 +84,37 @@ std::vector<Point2> pullStringFar(const std::vector<Point2>& path, Sweep sweep) 
 template <class Sweep>
 std::vector<Point2> pullPolyline(const std::vector<Point2>& path, Sweep sweep) {
   return detail::pullFar(path, sweep, true);
+}
+
+/// Cuts each corner of a taut path closer: for each interior vertex v (after the corners before
+/// it were cut), the parts of its two edges within `reach` of it (at most half of each edge),
+/// cut into pieces of at most `spacing`, are pulled with pullStringFar(), so that the path may
+/// turn between the points of its edges rather than at v only. Each cut sweeps segments about
+/// 2·reach long at most, near the corner, where pulling from the previous vertex would sweep
+/// the whole edge. The endpoints stay; the path never gets longer; every edge it adds is swept.
+template <class Sweep>
+std::vector<Point2> cutCorners(const std::vector<Point2>& path, Sweep sweep, double reach,
+                               double spacing) {
+  if (path.size() < 3) return path;
+  std::vector<Point2> out{path.front()};
+  const auto toward = [](const Point2& from, const Point2& to, double d) {
+    const double length = distance(from, to);
+    return length > 0 ? Point2{from.x + (to.x - from.x) * d / length,
+                               from.y + (to.y - from.y) * d / length}
+                      : from;
+  };
+  for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+    const Point2 u = out.back(), v = path[k], w = path[k + 1];
+    const Point2 a = toward(v, u, std::min(reach, 0.5 * distance(u, v)));
+    const Point2 b = toward(v, w, std::min(reach, 0.5 * distance(v, w)));
+    // a and b lie on the edges u-v and v-w, so u-a and b-w are parts of free edges.
+    const std::vector<Point2> cut = pullStringFar(densify({a, v, b}, spacing), sweep);
+    if (a.x != u.x || a.y != u.y) out.push_back(a);
+    out.insert(out.end(), cut.begin() + 1, cut.end() - 1);
+    if (b.x != w.x || b.y != w.y) out.push_back(b);
+  }
+  out.push_back(path.back());
+  return out;
 }
 
 }  // namespace roomba_rrt::planning

@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "roomba_rrt/planning/densify.h"
 #include "roomba_rrt/planning/path_smoothing.h"
 
 namespace roomba_rrt::planning {
@@ -24,8 +23,10 @@ constexpr int kEndpointReach = 2;
 constexpr int kCorridorBlocks = 1;
 /// The longest straight line (in blocks) the search of the regions looks along.
 constexpr int kMaxLineBlocks = 8;
-/// The spacing (cells) of the points the final string pulling may cut corners at.
-constexpr double kFinalSpacing = 2;
+/// How far from each corner (cells) the final pass cuts it, and the spacing (cells) of the
+/// points it may turn at there.
+constexpr double kCornerReach = 8;
+constexpr double kCornerSpacing = 2;
 
 /// A queue entry: the smallest f first, and of equal f the largest g (the deeper node).
 struct Entry {
@@ -65,7 +66,8 @@ int endpointCell(const GridRegions& r, const Point2& p) {
 /// Whether region `a`'s point sees region `b`'s across clear blocks, looked at only when they
 /// are at most `max_line` apart (so that each look costs at most kMaxLineBlocks look-ups).
 bool seesInLine(const GridRegions& r, int a, int b, double max_line) {
-  const Point2 p = r.regionPoint(a), q = r.regionPoint(b);
+  if (!r.blockClear(r.blockOfRegion(a)) || !r.blockClear(r.blockOfRegion(b))) return false;
+  const Point2 &p = r.regionPoint(a), &q = r.regionPoint(b);
   return squaredDistance(p, q) <= max_line * max_line && r.clearBetween(p, q);
 }
 
@@ -79,56 +81,59 @@ bool seesInLine(const GridRegions& r, int a, int b, double max_line) {
 /// and last included), or empty if none (or stopped).
 std::vector<int> regionPath(const GridRegions& r, int from, int to, StopCondition* stop,
                             int& taken) {
-  const int n = r.regionCount();
-  std::vector<double> g(n, kInf);
-  std::vector<int> parent(n, -1);
-  std::vector<char> closed(n, 0);
+  struct State {
+    double g = kInf;
+    int parent = -1;
+    bool closed = false;
+  };
+  std::vector<State> at(r.regionCount());
   const Point2 goal = r.regionPoint(to);
   const std::vector<int>& next = r.adjacency();
   const double max_line = kMaxLineBlocks * r.block() * r.map().grid().resolution;
   Queue open;
-  g[from] = 0;
-  parent[from] = from;
+  at[from].g = 0;
+  at[from].parent = from;
   open.push({distance(r.regionPoint(from), goal), 0, from});
   while (!open.empty()) {
-    const Entry top = open.top();
+    const int s = open.top().node;
     open.pop();
-    const int s = top.node;
-    if (closed[s]) continue;  // reached shorter since: a stale entry
-    closed[s] = 1;
+    State& here = at[s];
+    if (here.closed) continue;  // reached shorter since: a stale entry
+    here.closed = true;
     ++taken;
     if (stop && (*stop)()) return {};
     // The parent was assumed to see s: if it does not, the best closed neighbour instead.
-    if (parent[s] != s && !seesInLine(r, parent[s], s, max_line)) {
-      double best = kInf;
-      const Point2 here = r.regionPoint(s);
+    if (here.parent != s && !seesInLine(r, here.parent, s, max_line)) {
+      const Point2& p = r.regionPoint(s);
+      here.g = kInf;
       for (int k = r.adjacencyBegin(s); k < r.adjacencyBegin(s + 1); ++k) {
-        if (!closed[next[k]]) continue;
-        const double through =
-            g[next[k]] + static_cast<float>(distance(r.regionPoint(next[k]), here));
-        if (through < best) best = through, parent[s] = next[k];
+        const State& n = at[next[k]];
+        if (!n.closed) continue;
+        const double through = n.g + static_cast<float>(distance(r.regionPoint(next[k]), p));
+        if (through < here.g) here.g = through, here.parent = next[k];
       }
-      g[s] = best;
     }
     if (s == to) break;
-    const int via = parent[s];
-    const Point2 at = r.regionPoint(via);
+    const int via = here.parent;
+    const double via_g = at[via].g;
+    const Point2& from_point = r.regionPoint(via);
     for (int k = r.adjacencyBegin(s); k < r.adjacencyBegin(s + 1); ++k) {
       const int t = next[k];
-      if (closed[t]) continue;
-      // Through s's parent in a straight line (checked when t is taken), or through s.
-      const Point2 p = r.regionPoint(t);
-      const double straight = g[via] + distance(at, p);
-      if (straight < g[t]) {
-        g[t] = straight;
-        parent[t] = via;
+      State& there = at[t];
+      if (there.closed) continue;
+      // Through s's parent in a straight line (checked when t is taken).
+      const Point2& p = r.regionPoint(t);
+      const double straight = via_g + distance(from_point, p);
+      if (straight < there.g) {
+        there.g = straight;
+        there.parent = via;
         open.push({straight + distance(p, goal), static_cast<float>(straight), t});
       }
     }
   }
-  if (!closed[to]) return {};
+  if (!at[to].closed) return {};
   std::vector<int> path;
-  for (int region = to;; region = parent[region]) {
+  for (int region = to;; region = at[region].parent) {
     path.push_back(region);
     if (region == from) break;
   }
@@ -346,7 +351,8 @@ PlanResult solveRegionAStar(const GridRegions& regions, const Point2& start, con
     }
     path = pullStringFar(turningPoints(regions, cells, start, goal), sweep);
   }
-  path = pullStringFar(densify(path, kFinalSpacing * map.grid().resolution), sweep);
+  const double cell = map.grid().resolution;
+  path = pullStringFar(cutCorners(path, sweep, kCornerReach * cell, kCornerSpacing * cell), sweep);
   setPathFound(result, std::move(path));
   return result;
 }

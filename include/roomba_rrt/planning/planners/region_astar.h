@@ -24,8 +24,9 @@
 //      clutter): A* over the fine graph's cells in the blocks of those regions and their 8
 //      neighbours (costs 1 and √2 cells, the octile distance as heuristic), whose path the
 //      regions guarantee (joined regions are joined by fine edges), then pulled the same way.
-//   5. Once more, over the path cut into 2-cell pieces (pullStringFar()), so that corners are
-//      cut between the points, not only at them.
+//   5. Each corner cut closer (cutCorners(): the parts of its two edges within 8 cells of it, in
+//      2-cell pieces, pulled), then pulled once more, so that corners are cut between the
+//      points, not only at them.
 //
 // Every edge of the answer is swept exactly by ClearanceMap::sweepFree, or is an edge of the fine
 // graph (swept when it was built), so the path is as collision-free as the RRT planners'. By the
