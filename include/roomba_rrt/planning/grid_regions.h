@@ -32,9 +32,9 @@
 namespace roomba_rrt::planning {
 
 /// The largest map (cells) on which region_astar is make_plan's planner: its regions are built
-/// in about 35 ns a cell (under a second) and hold about 3.4 bytes a cell; on larger maps (the
-/// 10^8-cell benchmark map: 10 s, 0.6 GB, and plans across it of about a second) make_plan
-/// keeps RRT-Connect.
+/// in about 30–40 ns a cell (under a second) and hold 1.5 to 4.2 bytes a cell; on larger maps
+/// (the 10^8-cell benchmark map: 4 s and 0.4 GB, plans across it of 0.25–0.4 s, where
+/// RRT-Connect takes a few ms) make_plan keeps RRT-Connect.
 inline constexpr std::size_t kRegionAStarMaxCells = 25'000'000;
 
 class GridRegions {
