@@ -27,25 +27,12 @@
 #include <vector>
 
 #include "roomba_rrt/geometry/clearance_map.h"
+#include "roomba_rrt/planning/path_smoothing.h"
 
 namespace roomba_rrt::bench {
 
-/// Greedy string pulling: from the first vertex, each kept vertex is joined to the farthest later
-/// vertex that `sweep(kept, vertex)` finds free for every vertex up to it (consecutive vertices
-/// are taken to be joined already). The endpoints stay; by the triangle inequality the path never
-/// gets longer.
-template <class Sweep>
-std::vector<geometry::Point2> pullString(const std::vector<geometry::Point2>& path, Sweep sweep) {
-  if (path.empty()) return path;
-  std::vector<geometry::Point2> out{path.front()};
-  for (std::size_t i = 0; i + 1 < path.size();) {
-    std::size_t j = i + 1;
-    while (j + 1 < path.size() && sweep(path[i], path[j + 1])) ++j;
-    out.push_back(path[j]);
-    i = j;
-  }
-  return out;
-}
+/// Greedy string pulling (the planning library's, path_smoothing.h).
+using planning::pullString;
 
 class DiscLattice {
  public:

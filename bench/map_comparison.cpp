@@ -48,6 +48,7 @@
 #include "roomba_rrt/geometry/map_file.h"
 #include "roomba_rrt/planning/densify.h"
 #include "roomba_rrt/planning/lab/scenarios.h"
+#include "roomba_rrt/planning/planners/region_astar.h"
 
 namespace {
 
@@ -68,6 +69,7 @@ struct Config {
   double budget_s = 0.1;
   unsigned iterations = 200000;  // both sides' cap for RRT and RRT-Connect
   bool json = false;
+  bool verbose = false;    // --verbose: each pair's time and length / A*'s on stderr
   bool grid_only = false;  // --grid-only: RRT, RRT-Connect and the A* rows (no RRT*)
   bool star = true;        // --no-star: RRT and RRT-Connect only (no RRT*, A* or shortest paths)
 };
@@ -96,6 +98,7 @@ struct ShortRoute {
 /// The grid planner's rows (grid_astar.h): the peer itself, then our routes to a path as short.
 struct GridRows {
   double inflate_ms = 0;  // the peer's inflated grid (its edges), built once per map
+  double regions_ms = 0;  // region_astar's GridRegions, built once per map
   Side astar;             // median CPU time per query, length / shortest
   double median_expanded = 0;
   std::vector<ShortRoute> routes;
@@ -239,25 +242,34 @@ Row starRow(const std::vector<rp::Problem>& pairs, const std::vector<double>& sh
   return row;
 }
 
-/// A way of ours to a short path: make_plan's planner (src/ros/make_plan_ros.cpp: RRT-Connect,
-/// exact segments, 0.5 m steps, 200 000 iterations, 200 shortcut tries) or RRT* at the map rows'
-/// range for a fixed number of iterations, then, if `pull`, greedy string pulling over the path
-/// densified to 8 and then 2 cells (pullString(): each vertex joined to the farthest later one
-/// it sweeps freely to), every pulled edge checked by the exact sweep.
+/// A way of ours to a short path: region_astar (planners/region_astar.h, make_plan's planner) on
+/// the map's GridRegions (built once per map, timed apart as A*'s inflated grid is);
+/// rrt_connect as make_plan planned before (RRT-Connect, exact segments, 0.5 m steps, 200 000
+/// iterations, 200 shortcut tries) or RRT* at the map rows' range for a fixed number of
+/// iterations, then, if `pull`, greedy string pulling over the path densified to 8 and then 2
+/// cells (pullString(): each vertex joined to the farthest later one it sweeps freely to), every
+/// pulled edge checked by the exact sweep.
 struct RouteSpec {
   const char* name;
   rp::Algorithm algorithm;
   int iterations;
   bool pull;
+  bool corridor = false;  // region_astar.h on the map's GridRegions, built once per map
 };
 constexpr RouteSpec kRoutes[] = {
-    {"make_plan", rp::Algorithm::kRrtConnect, 200000, false},
-    {"make_plan+pull", rp::Algorithm::kRrtConnect, 200000, true},
+    {"region_astar", rp::Algorithm::kRrtConnect, 0, false, true},
+    {"rrt_connect", rp::Algorithm::kRrtConnect, 200000, false},
+    {"rrt_connect+pull", rp::Algorithm::kRrtConnect, 200000, true},
     {"rrt_star_10k+pull", rp::Algorithm::kRrtStar, 10000, true},
 };
 
 /// The length of the route's path on `q` (NaN: none found).
-double routeLength(const rp::Problem& q, std::uint32_t seed, const RouteSpec& route) {
+double routeLength(const rp::Problem& q, std::uint32_t seed, const RouteSpec& route,
+                   const rp::GridRegions& regions) {
+  if (route.corridor) {
+    const rp::PlanResult r = rp::solveRegionAStar(regions, q.start, q.goal);
+    return r.success ? r.length : std::nan("");
+  }
   const double cell = q.map->grid().resolution;
   rp::PlannerOptions o;
   o.algorithm = route.algorithm;
@@ -293,6 +305,10 @@ GridRows gridRows(const rp::Problem& base, const std::vector<rp::Problem>& pairs
   const double t0 = threadCpuSeconds();
   const GridAStar astar(*base.map, kRobotRadius);
   rows.inflate_ms = cpuSecondsSince(t0) * 1e3;
+  const rp::GridRegions regions(base.map, kRobotRadius);
+  rows.regions_ms = regions.buildSeconds() * 1e3;
+  std::cerr << "  regions: " << regions.regionCount() << " in " << rows.regions_ms << " ms, "
+            << regions.bytes() / 1e6 << " MB\n";
   const int n = static_cast<int>(pairs.size());
   std::vector<double> astar_length(n, std::nan(""));
   rows.astar = measureSide(cfg.warmup, n * cfg.runs, shortest, [&](int i) {
@@ -316,9 +332,14 @@ GridRows gridRows(const rp::Problem& base, const std::vector<rp::Problem>& pairs
     for (int i = 0; i < cfg.warmup + n * cfg.runs; ++i) {
       const int pair = i % n;
       const double t = threadCpuSeconds();
-      const double length = routeLength(pairs[pair], 42u + static_cast<std::uint32_t>(i), spec);
+      const double length =
+          routeLength(pairs[pair], 42u + static_cast<std::uint32_t>(i), spec, regions);
       const double s = cpuSecondsSince(t);
       if (i < cfg.warmup) continue;
+      if (cfg.verbose && i < cfg.warmup + n) {
+        std::cerr << "    " << spec.name << " pair " << pair << ": " << s * 1e6 << " us, "
+                  << length / astar_length[pair] << " x A*'s\n";
+      }
       seconds.push_back(s);
       ++route.runs;
       if (!std::isfinite(length) || !std::isfinite(astar_length[pair])) continue;
@@ -399,8 +420,8 @@ std::string gridJson(const GridRows& g) {
               ", \"median_us\": " + num(r.median_us, 2) +
               ", \"mean_length_over_astar\": " + num(r.mean_over_astar, 4) + "}";
   }
-  return "{\"inflate_ms\": " + num(g.inflate_ms, 2) + ", \"astar\": " + sideJson(g.astar) +
-         ", \"routes\": [" + routes + "]}";
+  return "{\"inflate_ms\": " + num(g.inflate_ms, 2) + ", \"regions_ms\": " + num(g.regions_ms, 2) +
+         ", \"astar\": " + sideJson(g.astar) + ", \"routes\": [" + routes + "]}";
 }
 
 std::string rowJson(const Row& r) {
@@ -491,6 +512,8 @@ Config parseArgs(int argc, char** argv) {
       cfg.json = true;
     } else if (args.is("--maps")) {
       cfg.maps_dir = args.value();
+    } else if (args.is("--verbose")) {
+      cfg.verbose = true;
     } else if (args.is("--grid-only")) {
       cfg.grid_only = true;
     } else if (args.is("--map")) {

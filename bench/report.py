@@ -313,15 +313,17 @@ def grid_rows(t, results):
         ratio = best["median_us"] / astar["median_us"] if astar["median_us"] else None
         others = "; ".join(f"{r['route']} {r['met']}/{r['runs']} in {fmt(r['median_us'])} µs"
                            for r in routes[1:])
+        names = ", ".join(r["route"] for r in g["routes"])
+        regions = (f"; region_astar's regions built once: {fmt(g['regions_ms'])} ms"
+                   if "regions_ms" in g else "")
         t.add(f"grid_{m['map']}_short",
-              f"A path no longer than A*'s, ours (best of the routes make_plan, make_plan+pull, "
-              f"rrt_star_10k+pull) vs 8-connected A*, {where}: median CPU time per query · "
-              f"paths no longer than A*'s",
+              f"A path no longer than A*'s, ours (best of the routes {names}) vs 8-connected A*, "
+              f"{where}: median CPU time per query · paths no longer than A*'s",
               best["median_us"], astar["median_us"], ratio, "≤ 0.5, every path",
               ratio is not None and ratio <= 0.5 and best["met"] == best["runs"],
               f"{best['route']}: {fmt(best['median_us'])} µs · {best['met']}/{best['runs']} no "
               f"longer than A*'s · length {best['mean_length_over_astar']:.3f} × A*'s "
-              f"(others: {others})", peer)
+              f"(others: {others}{regions})", peer)
 
 
 def map_load_rows(t, results):

@@ -5,6 +5,7 @@ add_library(rrt_planning
   # the planning query and what every planner shares (include/roomba_rrt/planning/)
   src/planning/densify.cpp
   src/planning/free_point_near.cpp
+  src/planning/grid_regions.cpp
   src/planning/path_smoothing.cpp
   src/planning/plan_result.cpp
   src/planning/planner.cpp
@@ -14,6 +15,7 @@ add_library(rrt_planning
   src/planning/tree.cpp
   src/planning/validate.cpp
   # the planners (planning/planners/)
+  src/planning/planners/region_astar.cpp
   src/planning/planners/rrt.cpp
   src/planning/planners/rrt_connect.cpp
   src/planning/planners/rrt_star.cpp
@@ -50,6 +52,7 @@ if(CATKIN_ENABLE_TESTING)
     test/planning/robustness_test.cpp test/planning/room_test.cpp
     test/planning/map_planning_test.cpp test/planning/densify_test.cpp
     test/planning/free_space_sampler_test.cpp test/planning/plan_random_test.cpp
+    test/planning/region_astar_test.cpp
     LINK roomba_world_planning)
 endif()
 

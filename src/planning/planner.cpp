@@ -2,7 +2,9 @@
 
 #include <chrono>
 
+#include "roomba_rrt/planning/grid_regions.h"
 #include "roomba_rrt/planning/path_smoothing.h"
+#include "roomba_rrt/planning/planners/region_astar.h"
 #include "roomba_rrt/planning/planners/rrt.h"
 #include "roomba_rrt/planning/planners/rrt_connect.h"
 #include "roomba_rrt/planning/planners/rrt_star.h"
@@ -29,6 +31,19 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, PlanRando
     return result;
   }
   StopCondition stop(options.max_planning_time, stop_requested);
+  if (options.algorithm == Algorithm::kRegionAStar) {
+    // The map's regions for the robot's margin: the problem's, built once per map, or for this
+    // plan alone when the problem carries none of this map.
+    const double margin = robotMargin(problem);
+    const std::shared_ptr<const GridRegions> regions =
+        problem.regions && problem.regions->map() == problem.map
+            ? problem.regions->get(margin)
+            : std::make_shared<const GridRegions>(problem.map, margin);
+    result = solveRegionAStar(*regions, problem.start, problem.goal, &stop);
+    result.planning_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+  }
   // A robot of some size plans in the grown world: obstacles grown by the margin (the checker),
   // walls moved in by it (the bounds the planners sample in). A point robot (the lab) plans in
   // the problem as given, without a copy.
@@ -55,6 +70,8 @@ PlanResult plan(const Problem& problem, const PlannerOptions& options, PlanRando
     case Algorithm::kRrtStar:
       result = solveRrtStar(world, options, parts, progress);
       break;
+    case Algorithm::kRegionAStar:
+      break;  // planned above
   }
   if (result.success && options.smooth) {
     result.path =

@@ -7,10 +7,11 @@ namespace roomba_rrt::planning {
 namespace {
 
 // One table per enum: the single place where names and values meet.
-constexpr std::array<std::pair<const char*, Algorithm>, 3> kAlgorithms{{
+constexpr std::array<std::pair<const char*, Algorithm>, 4> kAlgorithms{{
     {"rrt", Algorithm::kRrt},
     {"rrt_connect", Algorithm::kRrtConnect},
     {"rrt_star", Algorithm::kRrtStar},
+    {"region_astar", Algorithm::kRegionAStar},
 }};
 constexpr std::array<std::pair<const char*, CollisionCheck>, 2> kCollisionChecks{{
     {"points", CollisionCheck::kPoints},

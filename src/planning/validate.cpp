@@ -186,11 +186,33 @@ void validateOptions(const PlannerOptions& o, int max_iterations_cap) {
   if (o.smoothing_tries < 0) throw InvalidInput("smoothing_tries", "must be >= 0");
 }
 
+// region_astar searches a map's cells: a map, and nothing else in the way.
+void validateAlgorithm(const Problem& problem, const PlannerOptions& o) {
+  if (o.algorithm != Algorithm::kRegionAStar) return;
+  if (!problem.map) {
+    throw InvalidInput("algorithm",
+                       "region_astar plans on a map (scenario 'map', make_plan), "
+                       "and this problem has none; rrt, rrt_connect and rrt_star "
+                       "plan among circles and rectangles");
+  }
+  if (!problem.obstacles.empty()) {
+    throw InvalidInput("obstacles", "region_astar plans on the map's cells alone, got " +
+                                        std::to_string(problem.obstacles.size()) +
+                                        " circles (rrt_connect plans among them)");
+  }
+  if (!problem.rectangles.empty()) {
+    throw InvalidInput("rectangles", "region_astar plans on the map's cells alone, got " +
+                                         std::to_string(problem.rectangles.size()) +
+                                         " rectangles (rrt_connect plans among them)");
+  }
+}
+
 }  // namespace
 
 void validate(const Problem& problem, const PlannerOptions& options, int max_iterations_cap) {
   validateProblem(problem);
   validateOptions(options, max_iterations_cap);
+  validateAlgorithm(problem, options);
 }
 
 }  // namespace roomba_rrt::planning

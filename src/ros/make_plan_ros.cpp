@@ -6,6 +6,7 @@
 
 #include "message_parts.h"
 #include "roomba_rrt/planning/free_point_near.h"
+#include "roomba_rrt/planning/grid_regions.h"
 #include "roomba_rrt/planning/validate.h"
 #include "roomba_rrt/util/invalid_input.h"
 
@@ -14,15 +15,18 @@ namespace {
 
 constexpr double kStep = 0.5;            // m
 constexpr int kMaxIterations = 200'000;  // extension steps, unless ~max_iterations_cap is lower
-constexpr planning::Algorithm kAlgorithm = planning::Algorithm::kRrtConnect;
 
 }  // namespace
 
 using util::show;
 
-planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults) {
+planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults,
+                                         const planning::Problem& map) {
   planning::PlannerOptions o = defaults.options;
-  o.algorithm = kAlgorithm;
+  const bool regions =
+      map.map && static_cast<std::size_t>(map.map->grid().width) * map.map->grid().height <=
+                     planning::kRegionAStarMaxCells;
+  o.algorithm = regions ? planning::Algorithm::kRegionAStar : planning::Algorithm::kRrtConnect;
   o.collision = planning::CollisionCheck::kSegments;
   o.step = kStep;
   o.max_iterations = std::min(kMaxIterations, defaults.max_iterations_cap);
@@ -39,7 +43,7 @@ MakePlanQuery resolveMakePlan(const planning::Problem& map, const robot::Pose2D&
   query.problem.robot_radius = mapRobotRadius(defaults);
   query.problem.clearance = defaults.clearance;
   query.problem.start = {start.x, start.y};
-  query.options = makePlanOptions(defaults);
+  query.options = makePlanOptions(defaults, map);
   query.goal_yaw = goal.theta;
   if (!(tolerance >= 0) || !std::isfinite(tolerance)) {
     query.error = "tolerance: must be a finite number >= 0, got " + show(tolerance);

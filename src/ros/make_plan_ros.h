@@ -1,6 +1,6 @@
-// make_plan: move_base's global-planner service (nav_msgs/GetPlan) answered by RRT on the
-// planner's map. A ROS tool that asks move_base, navfn or global_planner for a plan can ask
-// rrt_planner the same way. ROS messages in and out; the planning itself is the library's.
+// make_plan: move_base's global-planner service (nav_msgs/GetPlan) answered on the planner's map. A
+// ROS tool that asks move_base, navfn or global_planner for a plan can ask rrt_planner the same
+// way. ROS messages in and out; the planning itself is the library's.
 #pragma once
 
 #include <string>
@@ -14,11 +14,15 @@
 
 namespace roomba_rrt::planner_node {
 
-/// How make_plan plans (the node's ~seed, ~goal_tolerance, ~max_planning_time and
-/// ~max_iterations_cap apply; the rest is fixed so a map plans well without a request saying
-/// how): RRT-Connect, every edge checked whole, steps of 0.5 m, up to 200 000 iterations, the
-/// path shortcut-smoothed (move_base's planners answer short paths), drawn from the fast stream.
-planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults);
+/// How make_plan plans on `map` (the node's ~max_planning_time applies; the rest is fixed so a
+/// map plans well without a request saying how): region_astar, a path as short as navfn's and
+/// global_planner's in a fraction of their time (doc/planning.md), on maps of up to
+/// planning::kRegionAStarMaxCells cells; on larger ones RRT-Connect (~seed, ~goal_tolerance,
+/// ~max_iterations_cap apply), every edge checked whole, steps of 0.5 m, up to 200 000
+/// iterations, the path shortcut-smoothed, drawn from
+/// the fast stream.
+planning::PlannerOptions makePlanOptions(const NodeDefaults& defaults,
+                                         const planning::Problem& map);
 
 /// A make_plan request as the library's input, or why it cannot be planned.
 struct MakePlanQuery {

@@ -159,7 +159,8 @@ std::string resolveOptions(const PlanPath::Request& r, const NodeDefaults& defau
   if (!r.algorithm.empty()) {
     const auto algorithm = planning::parseAlgorithm(r.algorithm);
     if (!algorithm) {
-      return "algorithm: unknown '" + r.algorithm + "' (expected rrt, rrt_connect or rrt_star)";
+      return "algorithm: unknown '" + r.algorithm +
+             "' (expected rrt, rrt_connect, rrt_star or region_astar)";
     }
     options->algorithm = *algorithm;
   }

@@ -26,6 +26,7 @@
 #include <roomba_rrt/PlanPath.h>
 #include <roomba_rrt/RrtPlannerConfig.h>
 #include <roomba_rrt/planning/densify.h>
+#include <roomba_rrt/planning/grid_regions.h>
 #include <roomba_rrt/planning/planner.h>
 #include <roomba_rrt/util/require.h>
 #include <roomba_rrt/world_planning/room_problem.h>
@@ -73,7 +74,12 @@ void validateDefaults(const NodeDefaults& d) {
   if (!(d.options.max_planning_time > 0)) {  // the upper end is validate()'s
     throw util::InvalidInput("max_planning_time", "must be > 0 s (every plan has a time limit)");
   }
-  planning::validate(problem, d.options, d.max_iterations_cap);
+  // region_astar plans on a map only: whether a request has one is checked per request.
+  planning::PlannerOptions options = d.options;
+  if (options.algorithm == planning::Algorithm::kRegionAStar) {
+    options.algorithm = planning::Algorithm::kRrt;
+  }
+  planning::validate(problem, options, d.max_iterations_cap);
 }
 
 // Seconds a plan may take unless ~max_planning_time says otherwise.
@@ -132,6 +138,7 @@ NodeDefaults loadDefaults(nodes::NodeParams& pnh) {
       planning::Problem map;
       map.bounds = d.room->bounds;
       map.map = d.allow_unknown ? planning::mapProblem(world.room.map, true).map : d.room->map;
+      map.regions = std::make_shared<const planning::GridRegionsCache>(map.map);
       d.world_map = std::make_shared<const planning::Problem>(std::move(map));
     }
   }
@@ -319,6 +326,16 @@ class RrtPlannerNode {
     const geometry::OccupancyGrid& g = problem->map->grid();
     ROS_INFO("rrt_planner: map %d x %d cells of %g m from %s, inflated in %.0f ms", g.width,
              g.height, g.resolution, map_sub_.getTopic().c_str(), seconds * 1e3);
+    // make_plan's regions (region_astar's, for ~robot_radius + ~clearance), built here rather
+    // than by its first request (which waits for them if it comes first).
+    const planning::PlannerOptions options = makePlanOptions(*defaults(), *problem);
+    if (options.algorithm == planning::Algorithm::kRegionAStar) {
+      const NodeDefaults& d = *defaults();
+      const std::shared_ptr<const planning::GridRegions> regions =
+          problem->regions->get(mapRobotRadius(d) + d.clearance);
+      ROS_INFO("rrt_planner: make_plan's regions of the map built in %.0f ms (%d regions)",
+               regions->buildSeconds() * 1e3, regions->regionCount());
+    }
   }
 
   /// The map plans use: the latest from ~map_topic, else ~world_file's, else nullptr.

@@ -376,7 +376,10 @@ class NavMap : public Nav {
       const roomba_rrt::geometry::Segment edge{{a.x, a.y}, {b.x, b.y}};
       EXPECT_FALSE(roomba_rrt::geometry::segmentMeetsBlocked(grid_, edge, kRoombaRadius))
           << "edge " << i << " (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ")";
-      ASSERT_LE(std::hypot(b.x - a.x, b.y - a.y), grid_.resolution + 1e-9)
+      // A cell as the planner has it: nav_msgs/OccupancyGrid's resolution is a float32
+      // (0.1 f = 0.1000000015 m), and an edge between cell centres is an exact number of them.
+      const double cell = static_cast<float>(grid_.resolution);
+      ASSERT_LE(std::hypot(b.x - a.x, b.y - a.y), cell + 1e-9)
           << "poses " << i - 1 << " and " << i << " are more than a cell apart";
     }
   }

@@ -12,6 +12,10 @@ enum class Algorithm {
   kRrt,         ///< "rrt": the lab's RRT (default).
   kRrtConnect,  ///< "rrt_connect": two trees (start and goal) that grow towards each other.
   kRrtStar,     ///< "rrt_star": RRT with best-parent choice and rewiring; uses all iterations.
+  /// "region_astar": on a map only, A* over its regions then string pulling
+  /// (planners/region_astar.h); deterministic, no tree; step, goal_bias, max_iterations, seed,
+  /// collision and smooth do not apply (every edge is swept exactly).
+  kRegionAStar,
 };
 
 enum class CollisionCheck {

@@ -10,6 +10,8 @@
 
 namespace roomba_rrt::planning {
 
+class GridRegionsCache;
+
 struct Problem {
   Point2 start;
   Point2 goal;
@@ -22,6 +24,10 @@ struct Problem {
   /// obstacles too, each cell's square exactly; nullptr: none. Built once per map and shared by
   /// every problem planned in it (mapProblem()).
   std::shared_ptr<const geometry::ClearanceMap> map;
+  /// The map's regions for region_astar (grid_regions.h), built on first use per radius and
+  /// shared by every problem planned in the map; set by mapProblem(). nullptr, or one of another
+  /// map: region_astar builds the regions for that one plan.
+  std::shared_ptr<const GridRegionsCache> regions;
 };
 
 /// How far the robot's centre must stay from obstacles and walls: robot_radius + clearance.

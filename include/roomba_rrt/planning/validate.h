@@ -16,8 +16,10 @@ namespace roomba_rrt::planning {
 /// min_x"); robot_radius or clearance NaN, negative, or too big for the bounds; start/goal outside
 /// the bounds shrunk by robot_radius + clearance or inside an obstacle grown by it; step <= 0;
 /// goal_bias outside [0, 1]; max_iterations < 1 or above `max_iterations_cap`; goal_tolerance < 0;
-/// max_rejection_tries < 1; smoothing_tries < 0; and the supported ranges of limits.h (coordinates,
-/// bounds extent, step, goal_tolerance, radius, obstacle count, max_planning_time).
+/// max_rejection_tries < 1; smoothing_tries < 0; the supported ranges of limits.h (coordinates,
+/// bounds extent, step, goal_tolerance, radius, obstacle count, max_planning_time); and for
+/// region_astar a map and no circles or rectangles ("algorithm: region_astar plans on a map ...",
+/// "obstacles: region_astar plans on the map's cells alone ...").
 void validate(const Problem& problem, const PlannerOptions& options,
               int max_iterations_cap = kDefaultMaxIterationsCap);
 
