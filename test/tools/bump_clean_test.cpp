@@ -53,8 +53,8 @@ Outcome cleanByTouch(const world::World& world, double duration = 0) {
   sim::Simulator simulator(world);
   Outcome out{simulate(o, params, 1, nullptr, false, simulator, &cleaning), cleaning.ideal_time};
   std::printf("  %.1f %% at 3x ideal (%.0f s), %.1f %% at the end, %d bumps, done at %.0f s\n",
-              out.run.at_ideal.size() > kAt3x ? 100 * out.run.at_ideal[kAt3x] : NAN, 3 * out.ideal_time,
-              100 * out.run.reachable_final, out.run.bumps, out.run.done_at);
+              out.run.at_ideal.size() > kAt3x ? 100 * out.run.at_ideal[kAt3x] : NAN,
+              3 * out.ideal_time, 100 * out.run.reachable_final, out.run.bumps, out.run.done_at);
   return out;
 }
 
