@@ -181,6 +181,26 @@ class Nav : public ::testing::Test {
     waitFor([&] { return client.getState().isDone(); }, kWallTimeout);
     return client.getState();
   }
+  /// Publishes a 2D Nav Goal as rviz does and waits (wall time) until the robot stands within
+  /// `tolerance` of it, at least a second of robot time after `start` (which it returns); true
+  /// when it did.
+  bool navGoal(double x, double y, double yaw, double tolerance, ros::Time* start) {
+    ros::NodeHandle nh;
+    ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/move_base_simple/goal", 1);
+    if (!waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) return false;
+    geometry_msgs::PoseStamped goal = goalAt(x, y, yaw).target_pose;
+    goal.header.stamp = ros::Time::now();
+    *start = ros::Time::now();
+    pub.publish(goal);
+    // Arrived: within tolerance and stopped (the follower turns to the heading, then stops).
+    return waitFor(
+        [&] {
+          const Robot::Sample s = robot_.latest();
+          return std::hypot(s.x - x, s.y - y) < tolerance && s.v == 0 && s.w == 0 &&
+                 (s.stamp - *start).toSec() > 1.0;
+        },
+        kWallTimeout);
+  }
 
   static std::unique_ptr<ros::AsyncSpinner> spinner_;
   Robot robot_;
@@ -189,21 +209,8 @@ class Nav : public ::testing::Test {
 std::unique_ptr<ros::AsyncSpinner> Nav::spinner_;
 
 TEST_F(Nav, nav_goal_behind_the_bench_is_reached_without_a_bump) {
-  ros::NodeHandle nh;
-  ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/move_base_simple/goal", 1);
-  ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
-  geometry_msgs::PoseStamped goal = goalAt(3.0, 4.55, M_PI).target_pose;
-  goal.header.stamp = ros::Time::now();
-  const ros::Time start = ros::Time::now();
-  pub.publish(goal);
-  // Arrived: within tolerance and stopped (the follower turns to the heading, then stops).
-  const bool arrived = waitFor(
-      [&] {
-        const Robot::Sample s = robot_.latest();
-        return std::hypot(s.x - 3.0, s.y - 4.55) < kXyTolerance + 0.01 && s.v == 0 && s.w == 0 &&
-               (s.stamp - start).toSec() > 1.0;
-      },
-      kWallTimeout);
+  ros::Time start;
+  const bool arrived = navGoal(3.0, 4.55, M_PI, kXyTolerance + 0.01, &start);
   const Robot::Sample s = robot_.latest();
   EXPECT_TRUE(arrived) << "the robot is at (" << s.x << ", " << s.y << ") after "
                        << (s.stamp - start).toSec() << " s of robot time";
@@ -623,20 +630,8 @@ TEST_F(NavKnownMap, goals_in_the_apartments_other_rooms_are_reached_through_its_
   EXPECT_EQ(known->info.width, 210u);  // config/maps/apartment_walls.pgm: 10.5 m x 7.5 m
   EXPECT_EQ(known->info.height, 150u);
   // A 2D Nav Goal in the bedroom, behind the living room's wall (through the door at x = 1.05).
-  ros::NodeHandle nh;
-  ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/move_base_simple/goal", 1);
-  ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
-  geometry_msgs::PoseStamped goal = goalAt(2.0, -2.0).target_pose;
-  goal.header.stamp = ros::Time::now();
-  const ros::Time start = ros::Time::now();
-  pub.publish(goal);
-  const bool arrived = waitFor(
-      [&] {
-        const Robot::Sample s = robot_.latest();
-        return std::hypot(s.x - 2.0, s.y + 2.0) < kXyTolerance + 0.1 + 0.01 && s.v == 0 &&
-               s.w == 0 && (s.stamp - start).toSec() > 1.0;
-      },
-      kWallTimeout);
+  ros::Time start;
+  const bool arrived = navGoal(2.0, -2.0, 0, kXyTolerance + 0.1 + 0.01, &start);
   EXPECT_TRUE(arrived) << "at " << robot_.latest().x << ", " << robot_.latest().y;
   // The kitchen, through the living room's other door, as an action goal.
   const SimpleClientGoalState state = run(*client_, goalAt(-3.5, 2.0));
