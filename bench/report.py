@@ -504,6 +504,8 @@ def unknown_clean_rows(t, results):
                         f"{f['at_2x']:.1f} / {f['at_2_5x']:.1f} % ({f['bumps']:.0f} bumps)")
     for e in d.get("errors", []):
         t.missing(f"unknown_clean_{e['world']}", what.format(e["label"]), e["error"], target)
+
+
 def stale_map_rows(t, results):
     """A stale map of the home (bench/stale_map.py): cleaning's time to 95 % with the map without
     its furniture against the known world's, and navigation's 200 goals with it."""
