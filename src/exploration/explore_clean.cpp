@@ -63,7 +63,10 @@ robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper
   }
   if (clean_) {
     clean_->observeTiming(time, pose_stamp);
-    return clean_->tick(bumper, pose);
+    const robot::Velocity cmd = clean_->tick(bumper, pose);
+    // The round is planned on the next tick (a second on a large map): the robot waits for it
+    // standing, as it does after a tree that is done, not driving on towards the next pass.
+    return cleaningTouchedUp() ? stop_ : cmd;
   }
   if (map_.mapper().scans() == 0)
     return stop_;  // nothing seen yet (over ROS the first scan may lag)
