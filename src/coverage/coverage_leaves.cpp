@@ -344,6 +344,11 @@ class PlanTouchUp final : public bt::LeafNode {
  public:
   static PortList providedPorts() {
     return {progressPort(), poseInput("where the robot is"),
+            inputPort<int>("edge_cleaning_from",
+                           "the first pass (1, 2, ...) with rows along the walls at the edge "
+                           "clearance; the passes before it leave what only they sweep",
+                           "1")
+                .range(1, 1000),
             errorOutput("why no touch-up can be planned")};
   }
   PlanTouchUp(const NodeSpec& spec, std::shared_ptr<LazyPlanner> planner)
@@ -351,6 +356,7 @@ class PlanTouchUp final : public bt::LeafNode {
         coverage_(spec.output<CoverageProgress>("coverage")),
         pose_(spec.input<robot::Pose2D>("pose")),
         error_(spec.output<std::string>("error")),
+        edge_cleaning_from_(spec.literal<int>("edge_cleaning_from")),
         planner_(std::move(planner)) {}
 
  private:
@@ -366,9 +372,9 @@ class PlanTouchUp final : public bt::LeafNode {
         progress.touch_ups >= CoverageProgress::kTouchUpPasses) {
       return Status::kSuccess;
     }
-    progress.plan =
-        planner_->get()->touchUp(progress.swept, {pose->x, pose->y},
-                                 CoverageProgress::kTouchUpSpotAreas[progress.touch_ups]);
+    progress.plan = planner_->get()->touchUp(
+        progress.swept, {pose->x, pose->y}, CoverageProgress::kTouchUpSpotAreas[progress.touch_ups],
+        progress.touch_ups + 1 >= edge_cleaning_from_);
     progress.leg = 0;
     ++progress.touch_ups;
     coverage_.commit();
@@ -378,6 +384,7 @@ class PlanTouchUp final : public bt::LeafNode {
   OutputPort<CoverageProgress> coverage_;
   InputPort<robot::Pose2D> pose_;
   OutputPort<std::string> error_;
+  const int edge_cleaning_from_;
   std::shared_ptr<LazyPlanner> planner_;
 };
 

@@ -12,18 +12,19 @@
 namespace roomba_rrt::coverage {
 
 CoveragePlan CoveragePlanner::touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
-                                      double min_spot_area) const {
-  return TouchUp(*this, swept, at, min_spot_area).plan();
+                                      double min_spot_area, bool edge_cleaning) const {
+  return TouchUp(*this, swept, at, min_spot_area, edge_cleaning).plan();
 }
 
 TouchUp::TouchUp(const CoveragePlanner& planner, const std::vector<std::uint8_t>& swept,
-                 const Point2& at, double min_spot_area)
+                 const Point2& at, double min_spot_area, bool edge_cleaning)
     : planner_(planner),
       space_(planner.freeSpace()),
       options_(planner.options()),
       swept_(swept),
       at_(at),
-      min_spot_area_(min_spot_area) {}
+      min_spot_area_(min_spot_area),
+      edge_cleaning_(edge_cleaning) {}
 
 CoveragePlan TouchUp::plan() {
   CoveragePlan plan;
@@ -36,7 +37,9 @@ CoveragePlan TouchUp::plan() {
   sweepStrips(options_.clearance);
   // What no row at the clearance reaches (the floor within the clearance of a wall, which the
   // rows and stops never sweep): edge cleaning, rows along the wall at the edge clearance.
-  if (options_.edge_clearance < options_.clearance) sweepStrips(options_.edge_clearance);
+  if (edge_cleaning_ && options_.edge_clearance < options_.clearance) {
+    sweepStrips(options_.edge_clearance);
+  }
   standAtSpots();
   tour(plan);
   return plan;

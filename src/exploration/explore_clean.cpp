@@ -57,12 +57,16 @@ robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper
   if (swept_at_.empty() || geometry::distance(swept_at_.back(), {pose.x, pose.y}) >= kSweptStep) {
     swept_at_.push_back({pose.x, pose.y});
   }
-  if (clean_ && clean_->idle() && rounds_ < kTouchUpRounds && !trees_.touch_up.empty()) {
+  if (clean_ && (clean_->idle() || cleaningTouchedUp()) && rounds_ < kTouchUpRounds &&
+      !trees_.touch_up.empty()) {
     startTouchUp(pose);
   }
   if (clean_) {
     clean_->observeTiming(time, pose_stamp);
-    return clean_->tick(bumper, pose);
+    const robot::Velocity cmd = clean_->tick(bumper, pose);
+    // The round is planned on the next tick (a second on a large map): the robot waits for it
+    // standing, as it does after a tree that is done, not driving on towards the next pass.
+    return cleaningTouchedUp() ? stop_ : cmd;
   }
   if (map_.mapper().scans() == 0)
     return stop_;  // nothing seen yet (over ROS the first scan may lag)
@@ -85,6 +89,14 @@ robot::Velocity ExploreClean::tick(double time, const robot::BumperState& bumper
   explore_.reset();
   nextGoal(time, pose, outcome == navigation::GoalOutcome::kSucceeded);
   return stop_;
+}
+
+bool ExploreClean::cleaningTouchedUp() const {
+  if (rounds_ > 0 || !clean_) return false;
+  // The tree plans its next pass on the tick its last one is driven to the end: one more pass
+  // planned than kCleanTouchUps means those are driven.
+  const coverage::CoverageProgress* progress = coverage::findProgress(clean_->tree().blackboard());
+  return progress && progress->touch_ups > kCleanTouchUps;
 }
 
 void ExploreClean::nextGoal(double time, const robot::Pose2D& pose, bool arrived) {

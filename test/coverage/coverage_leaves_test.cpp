@@ -385,6 +385,35 @@ TEST_F(EdgeTest, a_row_along_the_wall_is_driven_closer_than_the_rows_guard_allow
   EXPECT_LE(left, 6);  // the ramps' ends
 }
 
+TEST_F(EdgeTest, plan_touch_up_leaves_the_rows_along_the_wall_to_the_pass_edge_cleaning_is_from) {
+  // The touch-up tree on a built map (config/roomba_touch_up_tree.xml): the first pass goes for
+  // the spots, the second cleans along the walls too.
+  const auto& space = planner->freeSpace();
+  CoverageProgress touch_up;
+  touch_up.swept.assign(space.size(), 1);
+  for (int k = 0; k < space.size(); ++k) {
+    const Point2 p = space.point(k);
+    if (p.x > world.room.width - 0.01 && p.y > 0.3 && p.y < 1.2) touch_up.swept[k] = 0;
+  }
+  board->set<CoverageProgress>("coverage", touch_up);
+  board->set<robot::Pose2D>("pose", {1.0, 0.75, 0.0});
+  bt::Tree tree = build(
+      R"(<PlanTouchUp coverage="{coverage}" pose="{pose}" edge_cleaning_from="2" error="{error}"/>)");
+  auto along_wall = [&] {
+    const auto& legs = progress().plan.legs;
+    return std::count_if(legs.begin(), legs.end(), [](const Leg& leg) { return leg.along_wall; });
+  };
+  ASSERT_EQ(tree.tick(), bt::Status::kSuccess);
+  EXPECT_EQ(progress().touch_ups, 1);
+  EXPECT_EQ(along_wall(), 0);
+  CoverageProgress driven = progress();  // the first pass driven, the band still missed
+  driven.leg = driven.plan.legs.size();
+  board->set<CoverageProgress>("coverage", driven);
+  ASSERT_EQ(tree.tick(), bt::Status::kSuccess);
+  EXPECT_EQ(progress().touch_ups, 2);
+  EXPECT_EQ(along_wall(), 1);
+}
+
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
   plan();
   bt::Tree follow = build(kFollow);

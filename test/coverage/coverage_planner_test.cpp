@@ -941,6 +941,28 @@ TEST(CoveragePlanner, touch_up_cleans_along_a_wall_closer_than_the_clearance_kee
   EXPECT_LE(left, 6);
 }
 
+TEST(CoveragePlanner, a_pass_asked_for_no_edge_cleaning_leaves_the_band_to_a_later_pass) {
+  const OffLatticeWall room;
+  const CoveragePlanner planner(room.world);
+  int points = 0;
+  const std::vector<std::uint8_t> swept = room.band(planner, points);
+  const CoveragePlan first =
+      planner.touchUp(swept, {3.0, 2.0}, CoveragePlanner::kMinSpotArea, /*edge_cleaning=*/false);
+  EXPECT_TRUE(std::none_of(first.legs.begin(), first.legs.end(),
+                           [](const Leg& leg) { return leg.along_wall; }));
+  Driven driven{swept};
+  driven.drive(planner, first.legs);
+  EXPECT_EQ(std::count(driven.swept.begin(), driven.swept.end(), 0), points);
+  // The next pass, with edge cleaning, sweeps it as one row along the wall.
+  const CoveragePlan second = planner.touchUp(driven.swept, {3.0, 2.0});
+  expectSafe(room.world, second);
+  EXPECT_EQ(std::count_if(second.legs.begin(), second.legs.end(),
+                          [](const Leg& leg) { return leg.along_wall; }),
+            1);
+  driven.drive(planner, second.legs);
+  EXPECT_LE(std::count(driven.swept.begin(), driven.swept.end(), 0), 6);
+}
+
 TEST(CoveragePlanner, without_edge_cleaning_the_band_within_the_clearance_is_never_swept) {
   const OffLatticeWall room;
   CoverageOptions options;

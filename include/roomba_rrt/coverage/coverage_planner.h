@@ -147,9 +147,11 @@ class CoveragePlanner {
   /// point whose disc covers most of it, then a row of no length there (the robot passes or
   /// stops there, in any heading).
   /// No legs when nothing is missed. The areas are those of the reachable floor from `at`.
+  /// Without `edge_cleaning`, no rows along the walls at the edge clearance: what only they
+  /// would sweep is left for a later pass.
   /// The steps are TouchUp's (touch_up.h).
   CoveragePlan touchUp(const std::vector<std::uint8_t>& swept, const Point2& at,
-                       double min_spot_area = kMinSpotArea) const;
+                       double min_spot_area = kMinSpotArea, bool edge_cleaning = true) const;
 
   /// A spot of missed floor smaller than this (m²) is not worth going back for.
   static constexpr double kMinSpotArea = 0.004;

@@ -13,8 +13,9 @@
 //      against a wall or a piece of furniture;
 //   3. sweepStrips(): a row along each such strip, as close to it as stays free (stripRow()):
 //      first at the clearance; then, for what that leaves (edge cleaning), along the wall at the
-//      edge clearance, ramping in from the clearance and out to it again. Strips a short gap
-//      apart are one row; a strip no free row reaches whole is tried in halves;
+//      edge clearance, ramping in from the clearance and out to it again (unless the pass is
+//      planned without edge cleaning). Strips a short gap apart are one row; a strip no free row
+//      reaches whole is tried in halves;
 //   4. standAtSpots(): for each spot left, the drivable lattice point whose disc covers most of
 //      it, a row of no length there (the robot passes there, in any heading);
 //   5. tour(): all the visits in the order of touchUpTour() (tour.h: nearest first, then 2-opt),
@@ -35,7 +36,7 @@ namespace roomba_rrt::coverage {
 class TouchUp {
  public:
   TouchUp(const CoveragePlanner& planner, const std::vector<std::uint8_t>& swept, const Point2& at,
-          double min_spot_area);
+          double min_spot_area, bool edge_cleaning = true);
 
   /// The pass: its legs (transits and visits in tour order; none when nothing is missed) and the
   /// areas of the floor reachable from `at`.
@@ -76,7 +77,8 @@ class TouchUp {
   const std::vector<std::uint8_t>& swept_;
   const Point2 at_;
   const double min_spot_area_;
-  Mask missed_;              ///< reachable floor not swept (yet: each visit clears what it sweeps)
+  const bool edge_cleaning_;  ///< rows along the walls at the edge clearance (step 3)
+  Mask missed_;               ///< reachable floor not swept (yet: each visit clears what it sweeps)
   Mask drivable_;            ///< lattice points the robot can drive to from `at` with the clearance
   Mask uncovered_;           ///< missed floor that no drivable point's disc reaches
   std::vector<Leg> visits_;  ///< rows to drive, in either direction
