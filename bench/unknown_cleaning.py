@@ -105,8 +105,11 @@ def measure(binary, name, label, world, extra, maps):
                             "bumps": number(bumps.get(behavior))}
     result["unknown"]["explored_s"] = number(explored.get("unknown"))
     u = result["unknown"]
+    # 99 % by 2.5x from the time 99 % is first reached, not from the coverage printed at 2.5x:
+    # that is rounded to 0.1 % (98.95 % prints 99.0).
+    reached_99 = u["time_to_99_s"] is not None and u["time_to_99_s"] <= 2.5 * ideal
     result["met"] = bool(u["at_2x"] is not None and u["at_2x"] >= 95 and u["bumps"] <= 2 and
-                         (name in WAIVED_99 or (u["at_2_5x"] is not None and u["at_2_5x"] >= 99)))
+                         (name in WAIVED_99 or reached_99))
     return result
 
 
