@@ -349,6 +349,11 @@ class PlanTouchUp final : public bt::LeafNode {
                            "clearance; the passes before it leave what only they sweep",
                            "1")
                 .range(1, 1000),
+            inputPort<double>("min_spot_area",
+                              "the least spot the pass goes back for (m²); 0: the pass's own "
+                              "(the large spots first, then every spot of 40 cm² or more)",
+                              "0")
+                .range(0, 1),
             errorOutput("why no touch-up can be planned")};
   }
   PlanTouchUp(const NodeSpec& spec, std::shared_ptr<LazyPlanner> planner)
@@ -357,6 +362,7 @@ class PlanTouchUp final : public bt::LeafNode {
         pose_(spec.input<robot::Pose2D>("pose")),
         error_(spec.output<std::string>("error")),
         edge_cleaning_from_(spec.literal<int>("edge_cleaning_from")),
+        min_spot_area_(spec.literal<double>("min_spot_area")),
         planner_(std::move(planner)) {}
 
  private:
@@ -373,7 +379,9 @@ class PlanTouchUp final : public bt::LeafNode {
       return Status::kSuccess;
     }
     progress.plan = planner_->get()->touchUp(
-        progress.swept, {pose->x, pose->y}, CoverageProgress::kTouchUpSpotAreas[progress.touch_ups],
+        progress.swept, {pose->x, pose->y},
+        min_spot_area_ > 0 ? min_spot_area_
+                           : CoverageProgress::kTouchUpSpotAreas[progress.touch_ups],
         progress.touch_ups + 1 >= edge_cleaning_from_);
     progress.leg = 0;
     ++progress.touch_ups;
@@ -385,6 +393,7 @@ class PlanTouchUp final : public bt::LeafNode {
   InputPort<robot::Pose2D> pose_;
   OutputPort<std::string> error_;
   const int edge_cleaning_from_;
+  const double min_spot_area_;  ///< m²; 0: CoverageProgress::kTouchUpSpotAreas
   std::shared_ptr<LazyPlanner> planner_;
 };
 

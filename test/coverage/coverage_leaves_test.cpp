@@ -414,6 +414,34 @@ TEST_F(EdgeTest, plan_touch_up_leaves_the_rows_along_the_wall_to_the_pass_edge_c
   EXPECT_EQ(along_wall(), 1);
 }
 
+TEST_F(LeafTest, plan_touch_up_goes_for_spots_down_to_min_spot_area_in_its_first_pass) {
+  // The touch-up round on a built map (config/roomba_touch_up_tree.xml) goes for every spot of
+  // 40 cm² or more in its first pass; without min_spot_area the first pass leaves a spot of
+  // 80 cm² (under 120) to the second.
+  const auto& space = planner->freeSpace();
+  CoverageProgress missed;
+  missed.swept.assign(space.size(), 1);
+  int spot = 0;
+  for (int k = 0; k < space.size(); ++k) {
+    const Point2 p = space.point(k);
+    if (std::abs(p.x - 1.0) < 0.045 && std::abs(p.y - 0.75) < 0.045) missed.swept[k] = 0, ++spot;
+  }
+  ASSERT_GT(spot, 0);
+  board->set<robot::Pose2D>("pose", {0.5, 0.5, 0.0});
+  auto visits = [&](const std::string& attributes) {
+    board->set<CoverageProgress>("coverage", missed);
+    bt::Tree tree = build(R"(<PlanTouchUp coverage="{coverage}" pose="{pose}" )" + attributes +
+                          R"( error="{error}"/>)");
+    EXPECT_EQ(tree.tick(), bt::Status::kSuccess);
+    EXPECT_EQ(progress().touch_ups, 1);
+    const auto& legs = progress().plan.legs;
+    return std::count_if(legs.begin(), legs.end(),
+                         [](const Leg& leg) { return leg.kind == Leg::Kind::kRow; });
+  };
+  EXPECT_EQ(visits(""), 0);
+  EXPECT_EQ(visits(R"(min_spot_area="0.004")"), 1);
+}
+
 TEST_F(LeafTest, follow_coverage_fails_on_a_bump_and_keeps_the_leg_it_was_in) {
   plan();
   bt::Tree follow = build(kFollow);

@@ -85,7 +85,7 @@ const CoverageProgress* findProgress(const bt::Blackboard& board,
 ///   the clearance) and writes it as the plan to follow (`coverage.touch_ups` counts the passes:
 ///   CoverageProgress::kTouchUpSpotAreas, the large spots first; `edge_cleaning_from`, default 1:
 ///   the first pass with rows along the walls at the edge clearance, the earlier ones go for the
-///   spots only). SUCCESS, also without planning
+///   spots only; `min_spot_area` (m²), default 0: the pass's own). SUCCESS, also without planning
 ///   while the plan in hand is not driven or every pass is planned; FAILURE when there is no
 ///   progress or pose. The cleaning tree follows each PlanTouchUp with a FollowCoverage.
 /// - ResumeCoverage coverage="{coverage}" pose="{pose}" skip_after="3" error="{error}": the rest
