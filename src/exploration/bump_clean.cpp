@@ -164,7 +164,7 @@ void BumpClean::plan(double time, const robot::Pose2D& pose) {
     return;
   }
   path_.assign(move_->transit.begin(), move_->transit.end());
-  follower_.start(path_, {move_->start.x, move_->start.y, yaw(move_->heading)}, last_);
+  follower_.start(path_, {move_->start.x, move_->start.y, yawOf(*move_)}, last_);
   phase_ = Phase::kTransit;
 }
 
@@ -173,7 +173,7 @@ double BumpClean::ramp(double v) const {
 }
 
 robot::Velocity BumpClean::turn(double time, const robot::Pose2D& pose) {
-  const double error = robot::wrapAngle(yaw(move_->heading) - pose.theta);
+  const double error = robot::wrapAngle(yawOf(*move_) - pose.theta);
   if (std::abs(error) < kHeadingTolerance) {
     phase_ = Phase::kDrive;
     return {};
@@ -191,7 +191,7 @@ robot::Velocity BumpClean::turn(double time, const robot::Pose2D& pose) {
 
 robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
   const Move& move = *move_;
-  const geometry::Point2 u = unit(move.heading);
+  const geometry::Point2 u = way(move);
   const geometry::Point2 at{pose.x, pose.y};
   const double along = (at.x - move.start.x) * u.x + (at.y - move.start.y) * u.y;
   const double across = u.x * (at.y - move.start.y) - u.y * (at.x - move.start.x);
@@ -215,7 +215,7 @@ robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
     return {};
   }
   const double v = ramp(std::min(params_.forward_speed, std::sqrt(2 * options_.accel * left)));
-  const double heading = yaw(move.heading) - std::atan(kLineGain * across);
+  const double heading = yawOf(move) - std::atan(kLineGain * across);
   const double w = std::clamp(kHeadingGain * robot::wrapAngle(heading - pose.theta),
                               -options_.turn_speed, options_.turn_speed);
   return {v, w};
