@@ -54,7 +54,7 @@ struct BoustrophedonOptions {
   double lookahead = 0.3;   ///< m of a move over which the new floor it promises is counted
   double min_gain = 0.02;   ///< m² of new floor a move must promise (a 0.34 m disc, 6 cm on)
   /// m² a move must promise to be chosen before those that promise less (next()'s first pass)
-  double first_gain = 0.035;
+  double first_gain = 0.065;
   /// m: a centre is safe (a transit passes it) when its disc but for this rim is swept floor.
   double safe_rim = 0.03;
   int max_tries = 3;  ///< moves started from one cell in one heading
