@@ -26,6 +26,12 @@ constexpr double kRowMinGain = 0.004;
 /// s a back-off may take at most (pressed against something behind it too).
 constexpr double kBackUpTimeout = 1.0;
 
+/// The first kLeaveLength m of a transit from where the robot backed off from a bump, a carrot
+/// only kLeaveCarrot m along the path: it gets onto the path's first centres (those it has been
+/// on, the only way past what it bumped into) before going on, not arcing back into the spot.
+constexpr double kLeaveLength = 0.2;
+constexpr double kLeaveCarrot = 0.03;
+
 const std::string kNames[] = {"Transit", "Turn", "Row", "Shift", "BackUp", "Done"};
 
 navigation::FollowerParams followerParams(const behavior::RoombaParams& params,
@@ -126,12 +132,17 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
         if (geometry::distance(at, backup_from_) >= options_.backup ||
             time - move_since_ > kBackUpTimeout) {
           plan(time, pose);
+          leaving_ = true;
         } else {
           cmd = {-options_.backup_speed, 0};
         }
         break;
       case Phase::kTransit: {
         const navigation::FollowStatus status = follower_.step(pose, cmd);
+        if (leaving_ && status == navigation::FollowStatus::kFollowing &&
+            !follower_.turningToGoal() && follower_.progress() < kLeaveLength) {
+          cmd = follower_.retry(pose, kLeaveCarrot);
+        }
         if (status == navigation::FollowStatus::kArrived) {
           phase_ = Phase::kTurn;
         } else if (status != navigation::FollowStatus::kFollowing ||
@@ -154,6 +165,7 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
 }
 
 void BumpClean::plan(double time, const robot::Pose2D& pose) {
+  leaving_ = false;
   if (move_ && map_.sweptCells() == swept_before_) planner_.sweptNothing(map_, *move_);
   swept_before_ = map_.sweptCells();
   move_ = planner_.next(map_, {pose.x, pose.y});
