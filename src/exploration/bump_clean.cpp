@@ -26,12 +26,6 @@ constexpr double kRowMinGain = 0.004;
 /// s a back-off may take at most (pressed against something behind it too).
 constexpr double kBackUpTimeout = 1.0;
 
-/// The first kLeaveLength m of a transit from where the robot backed off from a bump, a carrot
-/// only kLeaveCarrot m along the path: it gets onto the path's first centres (those it has been
-/// on, the only way past what it bumped into) before going on, not arcing back into the spot.
-constexpr double kLeaveLength = 0.2;
-constexpr double kLeaveCarrot = 0.03;
-
 const std::string kNames[] = {"Transit", "Turn", "Row", "Shift", "BackUp", "Done"};
 
 navigation::FollowerParams followerParams(const behavior::RoombaParams& params,
@@ -43,11 +37,6 @@ navigation::FollowerParams followerParams(const behavior::RoombaParams& params,
   p.max_angular_accel = kTurnAccel;
   p.heading_gain = kTurnGain;
   p.xy_tolerance = 0.01;
-  // A carrot 0.15 m along the path (not the follower's 0.25 m): a transit starts where the robot
-  // backed off from what it bumped into, a few centimetres off its first centres, and a far
-  // carrot cuts the corner back into the same spot (the apartment from (3, 1.5): 30 bumps in
-  // 14 s, each back-off followed by the same arc).
-  p.lookahead = 0.15;
   // Turned in place until within 0.15 rad of the way to go: the transits start beside walls the
   // robot has not seen all of, and an arc started 0.45 rad off (the follower's default) swings
   // the disc 2 cm towards them.
@@ -132,17 +121,12 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
         if (geometry::distance(at, backup_from_) >= options_.backup ||
             time - move_since_ > kBackUpTimeout) {
           plan(time, pose);
-          leaving_ = true;
         } else {
           cmd = {-options_.backup_speed, 0};
         }
         break;
       case Phase::kTransit: {
         const navigation::FollowStatus status = follower_.step(pose, cmd);
-        if (leaving_ && status == navigation::FollowStatus::kFollowing &&
-            !follower_.turningToGoal() && follower_.progress() < kLeaveLength) {
-          cmd = follower_.retry(pose, kLeaveCarrot);
-        }
         if (status == navigation::FollowStatus::kArrived) {
           phase_ = Phase::kTurn;
         } else if (status != navigation::FollowStatus::kFollowing ||
@@ -165,7 +149,6 @@ robot::Velocity BumpClean::tick(double time, const robot::BumperState& bumper,
 }
 
 void BumpClean::plan(double time, const robot::Pose2D& pose) {
-  leaving_ = false;
   if (move_ && map_.sweptCells() == swept_before_) planner_.sweptNothing(map_, *move_);
   swept_before_ = map_.sweptCells();
   move_ = planner_.next(map_, {pose.x, pose.y});
@@ -181,7 +164,7 @@ void BumpClean::plan(double time, const robot::Pose2D& pose) {
     return;
   }
   path_.assign(move_->transit.begin(), move_->transit.end());
-  follower_.start(path_, {move_->start.x, move_->start.y, yawOf(*move_)}, last_);
+  follower_.start(path_, {move_->start.x, move_->start.y, yaw(move_->heading)}, last_);
   phase_ = Phase::kTransit;
 }
 
@@ -190,7 +173,7 @@ double BumpClean::ramp(double v) const {
 }
 
 robot::Velocity BumpClean::turn(double time, const robot::Pose2D& pose) {
-  const double error = robot::wrapAngle(yawOf(*move_) - pose.theta);
+  const double error = robot::wrapAngle(yaw(move_->heading) - pose.theta);
   if (std::abs(error) < kHeadingTolerance) {
     phase_ = Phase::kDrive;
     return {};
@@ -208,7 +191,7 @@ robot::Velocity BumpClean::turn(double time, const robot::Pose2D& pose) {
 
 robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
   const Move& move = *move_;
-  const geometry::Point2 u = way(move);
+  const geometry::Point2 u = unit(move.heading);
   const geometry::Point2 at{pose.x, pose.y};
   const double along = (at.x - move.start.x) * u.x + (at.y - move.start.y) * u.y;
   const double across = u.x * (at.y - move.start.y) - u.y * (at.x - move.start.x);
@@ -232,7 +215,7 @@ robot::Velocity BumpClean::drive(double time, const robot::Pose2D& pose) {
     return {};
   }
   const double v = ramp(std::min(params_.forward_speed, std::sqrt(2 * options_.accel * left)));
-  const double heading = yawOf(move) - std::atan(kLineGain * across);
+  const double heading = yaw(move.heading) - std::atan(kLineGain * across);
   const double w = std::clamp(kHeadingGain * robot::wrapAngle(heading - pose.theta),
                               -options_.turn_speed, options_.turn_speed);
   return {v, w};

@@ -23,15 +23,6 @@ constexpr double kLeaveRadius = 0.1;
 /// m: two points found this near the same distance ahead, one on each side of the way, are
 /// taken for one straight wall across it.
 constexpr double kInLine = 0.03;
-/// m: a row ended against a wall when the robot cannot go on this far.
-constexpr double kWallAhead = 0.04;
-/// m beyond reach of the robot's centre: the points found ahead that tell a wall's slant.
-constexpr double kWallNear = 0.1;
-/// m: those points span at least this much along the wall.
-constexpr double kWallSpan = 0.08;
-/// m kept beyond reach of the points found farthest out from the wall: a staircase wall (a map's
-/// pixels) juts out by more than the points seen so far.
-constexpr double kWallMargin = 0.01;
 
 bool alongRows(Heading h) { return h == Heading::kEast || h == Heading::kWest; }
 
@@ -93,15 +84,6 @@ const char* toString(Heading heading) {
   return "?";
 }
 
-geometry::Point2 way(const Move& move) {
-  return move.direction.x != 0 || move.direction.y != 0 ? move.direction : unit(move.heading);
-}
-
-double yawOf(const Move& move) {
-  const geometry::Point2 u = way(move);
-  return std::atan2(u.y, u.x);
-}
-
 OnlineBoustrophedon::OnlineBoustrophedon(const geometry::Point2& start, double start_yaw,
                                          const BoustrophedonOptions& options)
     : options_(options),
@@ -112,11 +94,7 @@ OnlineBoustrophedon::OnlineBoustrophedon(const geometry::Point2& start, double s
 
 double OnlineBoustrophedon::newFloor(const SweptMap& map, const geometry::Point2& from,
                                      Heading heading, double length) {
-  return newFloor(map, from, unit(heading), length);
-}
-
-double OnlineBoustrophedon::newFloor(const SweptMap& map, const geometry::Point2& from,
-                                     const geometry::Point2& u, double length) {
+  const geometry::Point2 u = unit(heading);
   const double l = map.freeLength(from, u, length);
   if (l <= 0) return 0;
   const geometry::Point2 to{from.x + l * u.x, from.y + l * u.y};
@@ -248,72 +226,6 @@ std::optional<OnlineBoustrophedon::Candidate> OnlineBoustrophedon::candidate(
   return c;
 }
 
-std::optional<OnlineBoustrophedon::Candidate> OnlineBoustrophedon::alongWall(
-    const SweptMap& map, const geometry::Point2& at, Heading side) const {
-  if (!options_.along_slanted_walls || triedOut(map, at, side)) return std::nullopt;
-  // The row ended against what it found, not in floor it had swept.
-  const geometry::Point2 r = unit(row_heading_);
-  if (map.freeLength(at, r, kWallAhead) >= kWallAhead) return std::nullopt;
-  // The points found ahead of the disc, and the line through them (their principal axis).
-  const double near = map.reach() + kWallNear;
-  std::vector<geometry::Point2> points;
-  map.forPointsNear({at.x - near, at.y - near}, {at.x + near, at.y + near},
-                    [&](const geometry::Point2& q) {
-                      if (geometry::squaredDistance(q, at) <= near * near &&
-                          (q.x - at.x) * r.x + (q.y - at.y) * r.y > 0) {
-                        points.push_back(q);
-                      }
-                    });
-  if (points.size() < 3) return std::nullopt;
-  geometry::Point2 mean{0, 0};
-  for (const geometry::Point2& q : points) mean = {mean.x + q.x, mean.y + q.y};
-  const double count = static_cast<double>(points.size());
-  mean = {mean.x / count, mean.y / count};
-  double sxx = 0, syy = 0, sxy = 0;
-  for (const geometry::Point2& q : points) {
-    sxx += (q.x - mean.x) * (q.x - mean.x);
-    syy += (q.y - mean.y) * (q.y - mean.y);
-    sxy += (q.x - mean.x) * (q.y - mean.y);
-  }
-  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
-  geometry::Point2 w{std::cos(angle), std::sin(angle)};
-  const geometry::Point2 s = unit(side);
-  if (w.x * s.x + w.y * s.y < 0) w = {-w.x, -w.y};
-  // A slanted wall: neither across the rows (a straight shift runs along that one) nor nearly
-  // along them (a shift along it would be long).
-  const double climb = w.x * s.x + w.y * s.y;
-  if (climb > std::cos(kPi / 12) || climb < std::cos(kPi / 3)) return std::nullopt;
-  double lo = 0, hi = 0, thick = 0;
-  geometry::Point2 n{-w.y, w.x};  // away from the wall, towards the robot
-  if ((at.x - mean.x) * n.x + (at.y - mean.y) * n.y < 0) n = {-n.x, -n.y};
-  for (const geometry::Point2& q : points) {
-    const double along = (q.x - mean.x) * w.x + (q.y - mean.y) * w.y;
-    lo = std::min(lo, along);
-    hi = std::max(hi, along);
-    thick = std::max(thick, (q.x - mean.x) * n.x + (q.y - mean.y) * n.y);
-  }
-  if (hi - lo < kWallSpan) return std::nullopt;  // too little of it seen to tell its slant
-  // Along a line that keeps reach (and a margin) from the points farthest out; the robot steers
-  // onto it from where it stands.
-  const double off = (at.x - mean.x) * n.x + (at.y - mean.y) * n.y;
-  const double shift = std::max(0.0, map.reach() + kStopShort + thick + kWallMargin - off);
-  Candidate c;
-  c.move.kind = Move::Kind::kShift;
-  c.move.heading = side;
-  c.move.direction = w;
-  c.move.start = {at.x + shift * n.x, at.y + shift * n.y};
-  const double wanted = std::abs(nextRowLine(c.move.start.y, side) - c.move.start.y) / climb;
-  c.move.length = wanted;
-  double length = std::min(map.freeLength(c.move.start, w, wanted), wanted);
-  length = length >= wanted ? wanted : length - kStopShort;
-  if (length < kLeastShift) return c;
-  const geometry::Point2 end{c.move.start.x + length * w.x, c.move.start.y + length * w.y};
-  c.unguessed = c.guessed = newFloor(map, c.move.start, w, length) +
-                            std::max(newFloor(map, end, Heading::kEast, options_.lookahead),
-                                     newFloor(map, end, Heading::kWest, options_.lookahead));
-  return c;
-}
-
 int OnlineBoustrophedon::tier(const Candidate& c) const {
   if (c.guessed >= options_.first_gain) return 0;
   if (c.guessed >= options_.min_gain) return 1;
@@ -339,13 +251,6 @@ std::optional<Move> OnlineBoustrophedon::next(const SweptMap& map, const geometr
   if (last_ && *last_ == Move::Kind::kRow) {
     shifts[0] = candidate(map, at, side_);
     shifts[1] = candidate(map, at, opposite(side_));
-    for (int k = 0; k < 2; ++k) {
-      std::optional<Candidate> along = alongWall(map, at, k == 0 ? side_ : opposite(side_));
-      if (along && along->guessed >= options_.min_gain &&
-          (!shifts[k] || along->guessed >= shifts[k]->guessed)) {
-        shifts[k] = std::move(along);
-      }
-    }
   }
   std::optional<Candidate> found[kTiers];
   bool searched = false;

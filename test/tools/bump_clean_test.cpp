@@ -118,7 +118,7 @@ TEST(BumpClean, never_plans_through_what_it_has_found) {
       const std::vector<geometry::Point2> points = map.points();
       if (move.transit.empty()) {
         // From where the robot stands (it may be pressed against what it found): away from it.
-        EXPECT_GT(map.freeLength(move.start, exploration::way(move), 1.0), 0.01)
+        EXPECT_GT(map.freeLength(move.start, exploration::unit(move.heading), 1.0), 0.01)
             << "move " << seen_moves << " drives into a point it found";
         continue;
       }

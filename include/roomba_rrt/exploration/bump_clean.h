@@ -107,7 +107,6 @@ class BumpClean {
   double move_since_ = 0;
   geometry::Point2 backup_from_;
   bool was_pressed_ = false;
-  bool leaving_ = false;  ///< the move's transit starts where the robot backed off from a bump
   bool started_ = false;
   robot::Velocity last_;
   int moves_ = 0;

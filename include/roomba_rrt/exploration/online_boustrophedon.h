@@ -12,11 +12,7 @@
 //   - a shift: straight along y (north or south) to the next row line (the lines lie a swath
 //     apart through the start; a swath on from a row off the lines), or as far as it can go
 //     before something it found is in the way, and on to what it finds just beyond the line
-//     (kSnapToWall): the row after it runs along that obstacle, sweeping the strip beside it;
-//     after a row that ended against a slanted wall (the points found ahead of it on a line
-//     15–60° off the shift's heading), along that wall to the next row line instead, so that
-//     neither is the shift cut short where the wall comes nearer nor a wedge left where it
-//     recedes.
+//     (kSnapToWall): the row after it runs along that obstacle, sweeping the strip beside it.
 // After a row the robot shifts to the side it sweeps towards (then the other); after a shift it
 // drives the row back the way the last row came (then the other way): boustrophedon. When
 // neither gives new floor (each move must promise `min_gain` of floor it has not swept within
@@ -54,17 +50,13 @@ struct BoustrophedonOptions {
   double lookahead = 0.3;   ///< m of a move over which the new floor it promises is counted
   double min_gain = 0.02;   ///< m² of new floor a move must promise (a 0.34 m disc, 6 cm on)
   /// m² a move must promise to be chosen before those that promise less (next()'s first pass)
-  double first_gain = 0.065;
+  double first_gain = 0.035;
   /// m: a centre is safe (a transit passes it) when its disc but for this rim is swept floor.
   double safe_rim = 0.03;
   int max_tries = 3;  ///< moves started from one cell in one heading
   /// m: points found on both sides of a move's way, at most this far from it and as far ahead,
   /// are guessed to be one straight wall across it (the move is left for last).
   double wall_gap = 1.0;
-  /// A row that ended against a slanted wall (the points found ahead of it on a line between
-  /// 15° and 60° off the shift's heading) shifts along that wall, not straight (a straight
-  /// shift is cut short where the wall comes nearer, or leaves a wedge where it recedes).
-  bool along_slanted_walls = true;
 };
 
 /// One move: from `start`, in `heading`, with the transit that gets the robot there.
@@ -78,15 +70,7 @@ struct Move {
   double gain = 0;  ///< m² of new floor it promises (a shift: with the row after it)
   /// From the robot to `start` over safe centres; empty when the robot starts where it stands.
   std::vector<geometry::Point2> transit;
-  /// A unit vector: a shift along a slanted wall drives this way (towards `heading`'s side);
-  /// zero: along `heading`.
-  geometry::Point2 direction{0, 0};
 };
-
-/// The unit vector a move drives along: its direction, else its heading's.
-geometry::Point2 way(const Move& move);
-/// rad in the map: the way's.
-double yawOf(const Move& move);
 
 class OnlineBoustrophedon {
  public:
@@ -108,9 +92,6 @@ class OnlineBoustrophedon {
   /// obstacle; the floor under the disc at `from` does not count.
   static double newFloor(const SweptMap& map, const geometry::Point2& from, Heading heading,
                          double length);
-  /// As above, along the unit vector `u`.
-  static double newFloor(const SweptMap& map, const geometry::Point2& from,
-                         const geometry::Point2& u, double length);
   /// The y of the first row line beyond `y` towards `side` (kNorth or kSouth) at least min_shift
   /// away.
   double nextRowLine(double y, Heading side) const;
@@ -140,10 +121,6 @@ class OnlineBoustrophedon {
   /// tried out there.
   std::optional<Candidate> candidate(const SweptMap& map, const geometry::Point2& from,
                                      Heading heading) const;
-  /// After a row that ended against a slanted wall, the shift towards `side` along it (to the
-  /// next row line); none when the points found ahead lie on no such line.
-  std::optional<Candidate> alongWall(const SweptMap& map, const geometry::Point2& at,
-                                     Heading side) const;
   /// The tier `c` belongs to (kTiers: none).
   int tier(const Candidate& c) const;
   static double gainOf(const Candidate& c, int tier) { return tier < 2 ? c.guessed : c.unguessed; }
